@@ -1,0 +1,96 @@
+# polyccd build. `make` = library + Python venv; `make test` = every test; `make bench`;
+# `make demo`. Run as root on a fresh Debian machine, missing system packages are
+# installed with apt-get (see deps).
+
+CXX      ?= g++
+CC       ?= gcc
+PYTHON   ?= python3
+BUILD    := build
+LIB      := lib/libpolyccd.so
+VENV     := .venv
+VPY      := $(VENV)/bin/python
+# -ffp-contract=off: no fused multiply-add may change a rounding the interval layer
+# relies on (see lib/arith/interval.h; tests/c/test_api.c checks it is not fused).
+CXXFLAGS ?= -O2 -g
+CXXFLAGS += -std=c++17 -fPIC -fvisibility=hidden -fvisibility-inlines-hidden \
+            -ffp-contract=off -frounding-math -Wall -Wextra -Wno-unused-parameter \
+            -Iinclude -Ilib -DPCCD_BUILDING
+LDLIBS   := -lgmpxx -lgmp
+SAN      ?=
+
+SRCS := $(sort $(wildcard lib/*/*.cpp))
+OBJS := $(patsubst lib/%.cpp,$(BUILD)/%.o,$(SRCS))
+DEPS := $(OBJS:.o=.d)
+
+APT_PKGS := libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev g++ make python3-venv python3-dev valgrind
+
+.PHONY: all deps lib venv test test-c test-py check-header check-symbols bench demo clean sanitize valgrind
+
+all: lib venv
+
+# Installs what is missing, only when run as root (CI, fresh machines).
+deps:
+	@missing=""; for p in $(APT_PKGS); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ]; then echo "installing:$$missing"; \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing >/dev/null; \
+	  else echo "missing system packages:$$missing (run as root or install them)"; exit 1; fi; fi
+
+lib: $(LIB)
+
+$(LIB): $(OBJS) lib/exports.map
+	$(CXX) -shared -Wl,--version-script=lib/exports.map -o $@ $(OBJS) $(LDLIBS) $(SAN)
+
+$(BUILD)/%.o: lib/%.cpp | deps
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) $(SAN) -MMD -MP -c $< -o $@
+
+-include $(DEPS)
+
+$(VENV)/.stamp: bindings/python/requirements.txt | deps
+	$(PYTHON) -m venv $(VENV)
+	$(VENV)/bin/pip install -q --upgrade pip
+	$(VENV)/bin/pip install -q -r bindings/python/requirements.txt
+	touch $@
+
+venv: $(VENV)/.stamp $(LIB)
+	cd bindings/python && ../../$(VPY) build_ffi.py
+	$(VENV)/bin/pip install -q --no-build-isolation --no-deps -e bindings/python
+
+# The C test program, linked against the shared library.
+$(BUILD)/test_api: tests/c/test_api.c include/polyccd.h $(LIB)
+	@mkdir -p $(BUILD)
+	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_api.c \
+	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
+
+check-header:
+	@echo '#include "polyccd.h"' > $(BUILD)/hdr.c
+	$(CC) -std=c99 -pedantic -Werror -Wall -Wextra -Iinclude -c $(BUILD)/hdr.c -o $(BUILD)/hdr.o
+	@echo "header compiles with -std=c99 -pedantic -Werror"
+
+check-symbols: $(LIB)
+	@bad=$$(nm -D --defined-only $(LIB) | awk '$$2 ~ /[TDBRW]/ {print $$3}' | grep -v '^pccd_' || true); \
+	if [ -n "$$bad" ]; then echo "exported symbols without pccd_ prefix:"; echo "$$bad"; exit 1; fi; \
+	echo "nm -D: only pccd_ symbols exported ($$(nm -D --defined-only $(LIB) | grep -c ' T pccd_') functions)"
+
+test-c: $(BUILD)/test_api check-header check-symbols
+	$(BUILD)/test_api
+
+test-py: all
+	POLYCCD_QUERY_DIR=$${POLYCCD_QUERY_DIR:-../shared/data/ccd-queries} $(VPY) -m pytest -q tests
+
+test: all test-c test-py
+
+# Memory checks: the C test and the corpus under valgrind (see tests/c/run_valgrind.sh).
+valgrind: $(BUILD)/test_api
+	bash tests/c/run_valgrind.sh
+
+bench: all
+	$(VENV)/bin/pip install -q -r tests/bench/requirements.txt
+	$(VPY) tests/bench/bench_queries.py
+
+demo: all
+	$(VENV)/bin/polyccd demo
+
+clean:
+	rm -rf $(BUILD) $(LIB) bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c

@@ -1,0 +1,190 @@
+/*
+ * polyccd.h -- exact continuous collision detection of moving primitives.
+ *
+ * The only public header of libpolyccd. Pure C99.
+ *
+ * Conventions (all entry points):
+ *  - Every function returns an int status: PCCD_OK (0) or a negative pccd_status.
+ *    After a negative status, pccd_last_error() describes what was wrong and where.
+ *  - "No contact" is a result, never a status.
+ *  - Doubles are taken as their exact binary values; non-finite doubles are rejected
+ *    with PCCD_EINVAL. Rationals travel as strings: an integer ("-3"), a decimal
+ *    ("0.1" is exactly 1/10, "2.5e-7"), or a fraction ("-7/3").
+ *  - Handles are created by pccd_X_new(&out, ...) and released by pccd_X_free(p);
+ *    pccd_X_free(NULL) does nothing. The library copies every input it keeps.
+ *  - Variable-size outputs use a caller buffer (buf, cap) plus *needed (bytes including
+ *    the terminating NUL); when cap is too small the call returns PCCD_ERANGE, writes
+ *    *needed and leaves buf untouched.
+ *  - No entry point changes the floating-point environment (rounding mode) it was
+ *    called with. No C++ exception ever crosses this interface.
+ *  - Distinct handles may be used from different threads at the same time; one handle
+ *    must not be used by two threads at once.
+ *
+ * Meaning of a contact (see shared/design/formats.md): closed time interval [0, 1],
+ * closed triangles, segments and balls; touching (distance exactly 0) is a contact.
+ */
+#ifndef POLYCCD_H
+#define POLYCCD_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(_WIN32)
+#define PCCD_API
+#else
+#define PCCD_API __attribute__((visibility("default")))
+#endif
+
+#define PCCD_VERSION_STRING "0.1.0"
+
+/* Status codes. Stable values, append-only. */
+typedef enum pccd_status {
+  PCCD_OK = 0,
+  PCCD_EINVAL = -1,   /* a bad argument: NULL, out of range, non-finite, unparsable text */
+  PCCD_ENOMEM = -2,   /* out of memory */
+  PCCD_ELIMIT = -3,   /* a documented size or degree limit was exceeded */
+  PCCD_ERANGE = -4,   /* an output buffer is too small; *needed tells the size */
+  PCCD_ESTATE = -5,   /* the handle is not in a state that allows the call */
+  PCCD_EINTERNAL = -6 /* an internal error: a bug, please report it with the inputs */
+} pccd_status;
+
+/* Kinds of primitive queries (and of the features reported in results).
+ * Point order of a query:
+ *   VERTEX_FACE   v, f0, f1, f2       (a point against a closed triangle)
+ *   EDGE_EDGE     a0, a1, b0, b1      (two closed segments)
+ *   VERTEX_EDGE   v, e0, e1           (a point against a closed segment)
+ *   VERTEX_VERTEX a, b                (two points)
+ *   SPHERE_SPHERE ca, cb  + radii     (two closed balls) */
+typedef enum pccd_kind {
+  PCCD_VERTEX_FACE = 0,
+  PCCD_EDGE_EDGE = 1,
+  PCCD_VERTEX_EDGE = 2,
+  PCCD_VERTEX_VERTEX = 3,
+  PCCD_SPHERE_SPHERE = 4
+} pccd_kind;
+
+/* Which stage of the engine decided a query (for statistics; see pccd_result_stage). */
+typedef enum pccd_stage {
+  PCCD_STAGE_NONE = 0,      /* no query solved into this result yet */
+  PCCD_STAGE_BOUNDS = 1,    /* conservative space-time bounds separated the primitives */
+  PCCD_STAGE_BERNSTEIN = 2, /* interval Bernstein enclosures excluded every contact */
+  PCCD_STAGE_INTERVAL = 3,  /* the full algorithm ran in certified interval arithmetic */
+  PCCD_STAGE_EXACT = 4      /* the full algorithm ran in exact rational arithmetic */
+} pccd_stage;
+
+/* Limits (PCCD_ELIMIT beyond them). */
+#define PCCD_MAX_TRAJ_DEGREE 64      /* degree of one coordinate polynomial of a point */
+#define PCCD_MAX_NUMBER_CHARS 100000 /* length of one number string */
+#define PCCD_MAX_EXPONENT 100000     /* |e| in a decimal "1e-30" style exponent */
+
+/* Version of the library as "major.minor.patch"; never NULL. */
+PCCD_API const char *pccd_version(void);
+
+/* The message of the last failed call on this thread; never NULL. Meaningful only
+ * right after a call returned a negative status. */
+PCCD_API const char *pccd_last_error(void);
+
+/* Number of points of a query of this kind (VERTEX_FACE 4, EDGE_EDGE 4, VERTEX_EDGE 3,
+ * VERTEX_VERTEX 2, SPHERE_SPHERE 2). Returns PCCD_EINVAL for an unknown kind. */
+PCCD_API int pccd_kind_points(pccd_kind kind, size_t *count);
+
+/* Options of a solve. Initialise with pccd_config_init, then change fields. */
+typedef struct pccd_config {
+  size_t struct_size;         /* set by pccd_config_init: sizeof(pccd_config) */
+  const char *time_tolerance; /* width of the first-contact enclosure: a positive
+                                 rational string; NULL means "1e-12". Copied. */
+  int want_time;              /* 1 (default): enclose the first contact time;
+                                 0: decide only whether there is a contact (the
+                                 reported enclosure is then some enclosure, maybe [0,1]) */
+  int want_exact;             /* 1 (default): when the first contact time is rational,
+                                 report it exactly (pccd_result_time_is_exact). Only
+                                 used when want_time is 1. */
+} pccd_config;
+
+/* Fills *cfg with the defaults. PCCD_EINVAL when cfg is NULL. */
+PCCD_API int pccd_config_init(pccd_config *cfg);
+
+/* A primitive query: the trajectories of the points of one pccd_kind (each coordinate a
+ * polynomial of t with rational coefficients, ascending powers), and radii for spheres.
+ * A new query has every point fixed at the origin and radii 0. */
+typedef struct pccd_query pccd_query;
+
+/* Creates a query of this kind. PCCD_EINVAL for an unknown kind or out == NULL. */
+PCCD_API int pccd_query_new(pccd_query **out, pccd_kind kind);
+PCCD_API void pccd_query_free(pccd_query *q);
+
+/* Sets coordinate `axis` (0 = x, 1 = y, 2 = z) of point `point` to the polynomial
+ * coeffs[0] + coeffs[1] t + ... + coeffs[n-1] t^(n-1). n == 0 means the zero polynomial.
+ * PCCD_EINVAL: index out of range, NULL coeffs with n > 0, non-finite double, or a
+ * string that is not a number (the message names the coefficient);
+ * PCCD_ELIMIT: degree above PCCD_MAX_TRAJ_DEGREE, or a number beyond the text limits.
+ * On error the query is unchanged. */
+PCCD_API int pccd_query_set_coord_d(pccd_query *q, size_t point, size_t axis,
+                                    const double *coeffs, size_t n);
+PCCD_API int pccd_query_set_coord_s(pccd_query *q, size_t point, size_t axis,
+                                    const char *const *coeffs, size_t n);
+
+/* Sets every point to move linearly from p_t0[3i..3i+2] (t = 0) to p_t1[3i..3i+2]
+ * (t = 1); each array holds pccd_kind_points(kind) * 3 doubles. */
+PCCD_API int pccd_query_set_linear_d(pccd_query *q, const double *p_t0, const double *p_t1);
+
+/* Sets the radius of ball `which` (0 or 1) of a SPHERE_SPHERE query. Radii must be > 0
+ * when the query is solved (PCCD_EINVAL from pccd_query_solve otherwise). */
+PCCD_API int pccd_query_set_radius_d(pccd_query *q, size_t which, double r);
+PCCD_API int pccd_query_set_radius_s(pccd_query *q, size_t which, const char *r);
+
+/* The result of a solve; reusable. */
+typedef struct pccd_result pccd_result;
+PCCD_API int pccd_result_new(pccd_result **out);
+PCCD_API void pccd_result_free(pccd_result *r);
+
+/* Decides exactly whether the primitives touch for some t in [0, 1] and, per cfg,
+ * encloses the first contact time. cfg == NULL means the defaults.
+ * On success *res holds the answer; on error *res is reset to "nothing solved".
+ * Degenerate inputs (coplanar or collinear motion for all t, grazing double roots,
+ * zero-length edges, collinear triangles, coincident points, contact at t = 0 or 1)
+ * are answered exactly by the closed-set contract; nothing is perturbed. */
+PCCD_API int pccd_query_solve(const pccd_query *q, const pccd_config *cfg, pccd_result *res);
+
+/* Shortcut for the common linear query without a query handle: equivalent to
+ * pccd_query_new + pccd_query_set_linear_d + pccd_query_solve. kind must not be
+ * SPHERE_SPHERE. */
+PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const double *p_t1,
+                                 const pccd_config *cfg, pccd_result *res);
+
+/* *collides = 1 when the primitives touch during [0, 1], else 0.
+ * PCCD_ESTATE when nothing was solved into res. */
+PCCD_API int pccd_result_collides(const pccd_result *res, int *collides);
+
+/* Which stage decided the query (pccd_stage). */
+PCCD_API int pccd_result_stage(const pccd_result *res, int *stage);
+
+/* The first contact time t*: lo <= t* <= hi, as "p/q" (or "p") strings.
+ * which: 0 = lo, 1 = hi, 2 = the exact value (only when pccd_result_time_is_exact).
+ * PCCD_ESTATE when there is no contact (or, for which = 2, no exact value). */
+PCCD_API int pccd_result_time(const pccd_result *res, int which, char *buf, size_t cap,
+                              size_t *needed);
+
+/* *exact = 1 when lo == hi == t* (the first contact time is known exactly). */
+PCCD_API int pccd_result_time_is_exact(const pccd_result *res, int *exact);
+
+/* A double near t* (the nearest double to the midpoint of the enclosure). */
+PCCD_API int pccd_result_time_approx(const pccd_result *res, double *t);
+
+/* The features that touch at the first contact time (within the enclosure). Each is a
+ * kind (VERTEX_FACE = the vertex inside the open face, EDGE_EDGE = the open edges
+ * cross, VERTEX_EDGE = the vertex inside the open edge, VERTEX_VERTEX = the points
+ * coincide, SPHERE_SPHERE) and the query point indices it involves, in the point order
+ * of that kind (unused trailing entries are set to (size_t)-1). */
+PCCD_API int pccd_result_feature_count(const pccd_result *res, size_t *count);
+PCCD_API int pccd_result_feature(const pccd_result *res, size_t i, int *kind,
+                                 size_t points[4]);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* POLYCCD_H */

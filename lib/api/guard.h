@@ -1,0 +1,50 @@
+// The only place where C++ exceptions become C status codes. Every extern "C" entry
+// point runs its body through guard(), so no exception crosses the C API.
+#pragma once
+#include <new>
+#include <string>
+
+#include "arith/errors.h"
+#include "polyccd.h"
+
+namespace pccd::api {
+
+// Sets the thread's last-error message ("function: what").
+void set_error(const char *fn, const std::string &what);
+const char *last_error_text();
+
+template <class F>
+int guard(const char *fn, F &&body) noexcept {
+  try {
+    return body();
+  } catch (const arith::Input_error &e) {
+    set_error(fn, e.what());
+    return PCCD_EINVAL;
+  } catch (const arith::Limit_error &e) {
+    set_error(fn, e.what());
+    return PCCD_ELIMIT;
+  } catch (const std::bad_alloc &) {
+    set_error(fn, "out of memory");
+    return PCCD_ENOMEM;
+  } catch (const arith::Internal_error &e) {
+    set_error(fn, std::string("internal error (please report with the inputs): ") + e.what());
+    return PCCD_EINTERNAL;
+  } catch (const arith::Uncertain &) {
+    set_error(fn, "internal error (please report with the inputs): an interval filter "
+                  "failure escaped its exact fallback");
+    return PCCD_EINTERNAL;
+  } catch (const std::exception &e) {
+    set_error(fn, std::string("internal error (please report with the inputs): ") + e.what());
+    return PCCD_EINTERNAL;
+  } catch (...) {
+    set_error(fn, "internal error (please report with the inputs): unknown exception");
+    return PCCD_EINTERNAL;
+  }
+}
+
+// Throws Input_error "<what> is NULL" when p is NULL.
+inline void require(const void *p, const char *what) {
+  if (!p) throw arith::Input_error(std::string(what) + " is NULL");
+}
+
+}  // namespace pccd::api

@@ -1,0 +1,148 @@
+// pccd_query_* and pccd_kind_points: building primitive queries.
+#include <string>
+
+#include "api/guard.h"
+#include "api/handles.h"
+
+using pccd::api::guard;
+using pccd::api::require;
+using pccd::arith::Input_error;
+using pccd::arith::Limit_error;
+using pccd::arith::Rational;
+using Poly_q = pccd::poly::Poly<Rational>;
+
+namespace pccd::api {
+
+size_t kind_points(int kind) {
+  switch (kind) {
+    case PCCD_VERTEX_FACE: case PCCD_EDGE_EDGE: return 4;
+    case PCCD_VERTEX_EDGE: return 3;
+    case PCCD_VERTEX_VERTEX: case PCCD_SPHERE_SPHERE: return 2;
+  }
+  throw Input_error("unknown kind " + std::to_string(kind) +
+                    " (expected 0 vertex-face .. 4 sphere-sphere)");
+}
+
+}  // namespace pccd::api
+
+namespace {
+
+std::string place(size_t point, size_t axis, size_t i) {
+  static const char *names = "xyz";
+  return "point " + std::to_string(point) + " " + std::string(1, names[axis < 3 ? axis : 0]) +
+         " coefficient " + std::to_string(i);
+}
+
+void check_index(const pccd_query *q, size_t point, size_t axis, size_t n) {
+  require(q, "query");
+  if (point >= q->points.size())
+    throw Input_error("point index " + std::to_string(point) + " out of range (this kind has " +
+                      std::to_string(q->points.size()) + " points)");
+  if (axis > 2) throw Input_error("axis " + std::to_string(axis) + " out of range (0, 1 or 2)");
+  if (n > PCCD_MAX_TRAJ_DEGREE + 1)
+    throw Limit_error("point " + std::to_string(point) + " axis " + std::to_string(axis) +
+                      ": degree " + std::to_string(n - 1) + " exceeds the limit of " +
+                      std::to_string(PCCD_MAX_TRAJ_DEGREE));
+}
+
+}  // namespace
+
+extern "C" {
+
+PCCD_API const char *pccd_version(void) { return PCCD_VERSION_STRING; }
+
+PCCD_API int pccd_kind_points(pccd_kind kind, size_t *count) {
+  return guard("pccd_kind_points", [&] {
+    require(count, "count");
+    *count = pccd::api::kind_points(kind);
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_query_new(pccd_query **out, pccd_kind kind) {
+  return guard("pccd_query_new", [&] {
+    require(out, "out");
+    *out = nullptr;
+    size_t n = pccd::api::kind_points(kind);
+    auto *q = new pccd_query;
+    q->kind = kind;
+    q->points.resize(n);
+    *out = q;
+    return PCCD_OK;
+  });
+}
+
+PCCD_API void pccd_query_free(pccd_query *q) { delete q; }
+
+PCCD_API int pccd_query_set_coord_d(pccd_query *q, size_t point, size_t axis,
+                                    const double *coeffs, size_t n) {
+  return guard("pccd_query_set_coord_d", [&] {
+    check_index(q, point, axis, n);
+    if (n > 0) require(coeffs, "coeffs");
+    std::vector<Rational> c;
+    for (size_t i = 0; i < n; ++i)
+      c.push_back(pccd::arith::rational_from_double(coeffs[i], place(point, axis, i)));
+    q->points[point][static_cast<int>(axis)] = Poly_q(std::move(c));
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_query_set_coord_s(pccd_query *q, size_t point, size_t axis,
+                                    const char *const *coeffs, size_t n) {
+  return guard("pccd_query_set_coord_s", [&] {
+    check_index(q, point, axis, n);
+    if (n > 0) require(coeffs, "coeffs");
+    std::vector<Rational> c;
+    for (size_t i = 0; i < n; ++i) {
+      if (!coeffs[i]) throw Input_error(place(point, axis, i) + " is NULL");
+      c.push_back(pccd::arith::parse_rational(coeffs[i], place(point, axis, i)));
+    }
+    q->points[point][static_cast<int>(axis)] = Poly_q(std::move(c));
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_query_set_linear_d(pccd_query *q, const double *p_t0, const double *p_t1) {
+  return guard("pccd_query_set_linear_d", [&] {
+    require(q, "query");
+    require(p_t0, "p_t0");
+    require(p_t1, "p_t1");
+    std::vector<pccd::motion::Point_traj<Rational>> pts(q->points.size());
+    for (size_t i = 0; i < pts.size(); ++i)
+      for (int a = 0; a < 3; ++a) {
+        std::string w0 = "p_t0[" + std::to_string(3 * i + a) + "]";
+        std::string w1 = "p_t1[" + std::to_string(3 * i + a) + "]";
+        Rational x0 = pccd::arith::rational_from_double(p_t0[3 * i + a], w0);
+        Rational x1 = pccd::arith::rational_from_double(p_t1[3 * i + a], w1);
+        pts[i][a] = Poly_q(std::vector<Rational>{x0, x1 - x0});
+      }
+    q->points = std::move(pts);
+    return PCCD_OK;
+  });
+}
+
+static int set_radius(pccd_query *q, size_t which, const Rational &r) {
+  if (q->kind != PCCD_SPHERE_SPHERE) throw Input_error("radii apply to sphere-sphere queries only");
+  if (which > 1) throw Input_error("radius index " + std::to_string(which) + " out of range (0 or 1)");
+  q->radius[which] = r;
+  return PCCD_OK;
+}
+
+PCCD_API int pccd_query_set_radius_d(pccd_query *q, size_t which, double r) {
+  return guard("pccd_query_set_radius_d", [&] {
+    require(q, "query");
+    return set_radius(q, which,
+                      pccd::arith::rational_from_double(r, "radius " + std::to_string(which)));
+  });
+}
+
+PCCD_API int pccd_query_set_radius_s(pccd_query *q, size_t which, const char *r) {
+  return guard("pccd_query_set_radius_s", [&] {
+    require(q, "query");
+    require(r, "r");
+    return set_radius(q, which,
+                      pccd::arith::parse_rational(r, "radius " + std::to_string(which)));
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,141 @@
+// Closed intervals of doubles with outward rounding, for certified filters.
+//
+// Contract: for every operation, the exact result of the operation applied to any
+// values inside the operands lies inside the returned interval.
+//
+// Where the certainty comes from: an IEEE-754 operation in ANY rounding mode returns
+// one of the two doubles that bracket the exact result (or +-inf / DBL_MAX on
+// overflow). Stepping one ulp outward with nextafter therefore yields a valid bound
+// whatever rounding mode the caller left active, so no mode switch is needed and the
+// FP environment is never touched. NaN (inf - inf) makes every sign query uncertain.
+//
+// Exact points stay exact: when the thread's rounding mode is round-to-nearest
+// (checked once per solve by Nearest_scope, default: not assumed), a sum or product
+// of two point intervals is checked with an error-free transformation (TwoSum, exact
+// for round-to-nearest without overflow [Knuth, TAOCP 4.2.2]; the FMA residual
+// a*b - p, exact when no underflow occurs [Boldo-Muller 2011], guarded by |p| >= 2^-960).
+// A zero error makes the result an exact point, so structural zeros (coplanar input,
+// t = 1/2 hitting a rational root) are certified without falling back to rationals;
+// a nonzero error gives a one-ulp interval on the side it points to.
+#pragma once
+#include <cmath>
+
+#include "arith/errors.h"
+
+namespace pccd::arith {
+
+struct Interval {
+  double lo = 0, hi = 0;
+  Interval() = default;
+  Interval(double x) : lo(x), hi(x) {}  // NOLINT: exact point (x must be finite)
+  Interval(double l, double h) : lo(l), hi(h) {}
+  bool is_point_zero() const { return lo == 0 && hi == 0; }
+};
+
+inline double round_down(double x) { return std::nextafter(x, -HUGE_VAL); }
+inline double round_up(double x) { return std::nextafter(x, HUGE_VAL); }
+
+// Whether this thread runs in round-to-nearest (set by Nearest_scope).
+inline thread_local bool tl_nearest = false;
+inline bool nearest_mode() { return tl_nearest; }
+
+// While alive, records whether the current rounding mode is round-to-nearest.
+// Does not change the mode.
+class Nearest_scope {
+ public:
+  Nearest_scope();
+  ~Nearest_scope();
+  Nearest_scope(const Nearest_scope &) = delete;
+  Nearest_scope &operator=(const Nearest_scope &) = delete;
+
+ private:
+  bool saved_;
+};
+
+// The point sum s = fl(a + b) with its exact rounding error (round-to-nearest only).
+inline Interval point_sum(double a, double b) {
+  double s = a + b;
+  if (nearest_mode() && std::isfinite(s)) {
+    double bb = s - a, aa = s - bb;  // TwoSum
+    double err = (a - aa) + (b - bb);
+    if (err == 0) return Interval(s);
+    return err > 0 ? Interval(s, round_up(s)) : Interval(round_down(s), s);
+  }
+  return {round_down(s), round_up(s)};
+}
+
+inline Interval operator+(const Interval &a, const Interval &b) {
+  if (a.is_point_zero()) return b;
+  if (b.is_point_zero()) return a;
+  if (a.lo == a.hi && b.lo == b.hi) return point_sum(a.lo, b.lo);
+  return {round_down(a.lo + b.lo), round_up(a.hi + b.hi)};
+}
+inline Interval operator-(const Interval &a) { return {-a.hi, -a.lo}; }
+inline Interval operator-(const Interval &a, const Interval &b) {
+  if (b.is_point_zero()) return a;
+  if (a.is_point_zero()) return -b;
+  if (a.lo == a.hi && b.lo == b.hi) return point_sum(a.lo, -b.lo);
+  return {round_down(a.lo - b.hi), round_up(a.hi - b.lo)};
+}
+inline Interval operator*(const Interval &a, const Interval &b) {
+  if (a.is_point_zero() || b.is_point_zero()) return Interval(0.0);
+  if (a.lo == a.hi && b.lo == b.hi && nearest_mode()) {
+    double p = a.lo * b.lo;
+    if (std::isfinite(p) && std::fabs(p) >= 0x1p-960) {
+      double err = std::fma(a.lo, b.lo, -p);  // exact residual a*b - p
+      if (err == 0) return Interval(p);
+      return err > 0 ? Interval(p, round_up(p)) : Interval(round_down(p), p);
+    }
+  }
+  double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
+  double lo = std::fmin(std::fmin(p1, p2), std::fmin(p3, p4));
+  double hi = std::fmax(std::fmax(p1, p2), std::fmax(p3, p4));
+  if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4))
+    return {-HUGE_VAL, HUGE_VAL};
+  return {round_down(lo), round_up(hi)};
+}
+// Division needs a divisor that certainly excludes zero; otherwise Uncertain.
+inline Interval operator/(const Interval &a, const Interval &b) {
+  if (!(b.lo > 0 || b.hi < 0)) throw Uncertain{};
+  if (a.is_point_zero()) return Interval(0.0);
+  if (a.lo == a.hi && b.lo == b.hi && nearest_mode()) {
+    double q = a.lo / b.lo;
+    if (std::isfinite(q) && std::fabs(q) >= 0x1p-960 && std::fabs(a.lo) >= 0x1p-900) {
+      // The residual q*b - a of a round-to-nearest quotient is a double, so the FMA
+      // computes it exactly; its sign over the divisor's tells the side of a/b.
+      double r = std::fma(q, b.lo, -a.lo);
+      if (r == 0) return Interval(q);
+      bool above = (r > 0) == (b.lo > 0);  // q > a/b
+      return above ? Interval(round_down(q), q) : Interval(q, round_up(q));
+    }
+  }
+  double q1 = a.lo / b.lo, q2 = a.lo / b.hi, q3 = a.hi / b.lo, q4 = a.hi / b.hi;
+  double lo = std::fmin(std::fmin(q1, q2), std::fmin(q3, q4));
+  double hi = std::fmax(std::fmax(q1, q2), std::fmax(q3, q4));
+  return {round_down(lo), round_up(hi)};
+}
+inline Interval &operator+=(Interval &a, const Interval &b) { return a = a + b; }
+inline Interval &operator-=(Interval &a, const Interval &b) { return a = a - b; }
+inline Interval &operator*=(Interval &a, const Interval &b) { return a = a * b; }
+
+// Sign if certain; throws Uncertain otherwise (the filter failed).
+inline int sign(const Interval &x) {
+  if (x.lo > 0) return 1;
+  if (x.hi < 0) return -1;
+  if (x.is_point_zero()) return 0;
+  throw Uncertain{};
+}
+// Non-throwing one-sided tests: true only when certain.
+inline bool certainly_positive(const Interval &x) { return x.lo > 0; }
+inline bool certainly_negative(const Interval &x) { return x.hi < 0; }
+inline bool certainly_nonneg(const Interval &x) { return x.lo >= 0; }
+inline bool certainly_nonpos(const Interval &x) { return x.hi <= 0; }
+// Exact zero test: true/false when certain, Uncertain otherwise.
+inline bool is_zero(const Interval &x) { return sign(x) == 0; }
+
+// Hull of two intervals.
+inline Interval hull(const Interval &a, const Interval &b) {
+  return {std::fmin(a.lo, b.lo), std::fmax(a.hi, b.hi)};
+}
+
+}  // namespace pccd::arith

@@ -1,0 +1,79 @@
+// Bernstein enclosures: the range of p over [a, b] lies in the convex hull of its
+// Bernstein coefficients on [a, b]. Used as conservative filters: a polynomial whose
+// coefficients all have one strict sign has no root on the CLOSED interval [a, b].
+#pragma once
+#include <vector>
+
+#include "poly/poly.h"
+
+namespace pccd::poly {
+
+// Bernstein coefficients of p (degree <= n, n >= deg p) on [a, b].
+// b_k = sum_{i <= k} C(k, i) / C(n, i) * q_i, where q(s) = p(a + (b - a) s).
+template <class NT>
+std::vector<NT> bernstein_coefficients(const Poly<NT> &p, const NT &a, const NT &b) {
+  Poly<NT> q = reparametrize(p, a, b);
+  const size_t n = q.c.empty() ? 0 : q.c.size() - 1;
+  std::vector<NT> out(n + 1, arith::from_int<NT>(0));
+  if (q.c.empty()) return out;
+  // Closed form: scale q_i by 1 / C(n, i), then sum with the weights C(k, i).
+  std::vector<NT> scaled(n + 1);
+  NT binom = arith::from_int<NT>(1);  // C(n, i)
+  for (size_t i = 0; i <= n; ++i) {
+    scaled[i] = q.c[i] / binom;
+    binom = binom * arith::from_int<NT>(static_cast<long>(n - i)) /
+            arith::from_int<NT>(static_cast<long>(i + 1));
+  }
+  for (size_t k = 0; k <= n; ++k) {
+    NT ck = arith::from_int<NT>(1);  // C(k, i)
+    NT sum = arith::from_int<NT>(0);
+    for (size_t i = 0; i <= k; ++i) {
+      sum = sum + ck * scaled[i];
+      ck = ck * arith::from_int<NT>(static_cast<long>(k - i)) /
+           arith::from_int<NT>(static_cast<long>(i + 1));
+    }
+    out[k] = sum;
+  }
+  return out;
+}
+
+// True only when p certainly has no root on [a, b] (all Bernstein coefficients of one
+// strict sign). Never throws Uncertain: an undecided filter answers false.
+template <class NT>
+bool certainly_no_root(const Poly<NT> &p, const NT &a, const NT &b) {
+  try {
+    if (p.c.empty()) return false;  // the zero polynomial vanishes everywhere
+    std::vector<NT> bc = bernstein_coefficients(p, a, b);
+    bool pos = true, neg = true;
+    for (const NT &x : bc) {
+      pos = pos && arith::certainly_positive(x);
+      neg = neg && arith::certainly_negative(x);
+    }
+    return pos || neg;
+  } catch (const arith::Uncertain &) {
+    return false;
+  }
+}
+
+// +1 when p > 0 on all of [a, b] certainly, -1 when p <= 0 on all of [a, b] certainly,
+// 0 when undecided.
+template <class NT>
+int certain_sign_on(const Poly<NT> &p, const NT &a, const NT &b) {
+  try {
+    if (p.c.empty()) return -1;  // identically zero: never > 0
+    std::vector<NT> bc = bernstein_coefficients(p, a, b);
+    bool pos = true, nonpos = true;
+    for (const NT &x : bc) {
+      pos = pos && arith::certainly_positive(x);
+      nonpos = nonpos && arith::certainly_nonpos(x);
+    }
+    return pos ? 1 : nonpos ? -1 : 0;
+  } catch (const arith::Uncertain &) {
+    return 0;
+  }
+}
+
+// An interval enclosing p over [0, 1] (hull of its Bernstein coefficients).
+Interval range_on_unit(const Poly<Interval> &p);
+
+}  // namespace pccd::poly

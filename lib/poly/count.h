@@ -1,0 +1,74 @@
+// Counting real roots of f on an open interval under strict sign conditions, by
+// sign determination over Tarski queries (lib/poly/hermite.h):
+//
+//   #{t in (a, b) : f(t) = 0, g_1(t) > 0, ..., g_l(t) > 0}
+//     = 2^-l' * sum over e in {1,2}^l' of TaQ(prod_i g_i^e_i mod f, f)
+//
+// with the condition g_0 > 0 for the open interval prepended (l' = l + 1). For one root,
+// sum_e prod_i sgn(g_i)^e_i = prod_i (sgn g_i + sgn g_i^2) is 2^l' when every g_i > 0
+// and 0 otherwise, which gives the identity. Roots are counted without multiplicity.
+//
+// Before the Tarski queries, exact-or-certified Bernstein tests on [a, b] drop
+// conditions that are positive on the whole interval and answer 0 at once when f has
+// no root there or some condition is <= 0 on all of it.
+#pragma once
+#include <vector>
+
+#include "poly/bernstein.h"
+#include "poly/hermite.h"
+
+namespace pccd::poly {
+
+template <class NT>
+long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT &a,
+                 const NT &b) {
+  if (f.degree() < 1) {
+    if (f.c.empty()) throw arith::Internal_error("count_roots: f is identically zero");
+    return 0;  // a nonzero constant has no root
+  }
+  // Count on s in (0, 1) with t = a + (b - a) s. Same roots; and with intervals the
+  // local polynomial keeps its relative precision on short intervals, where
+  // (t - a)(b - t) in the monomial basis of t would drown in rounding errors.
+  const NT zero = arith::from_int<NT>(0), one = arith::from_int<NT>(1);
+  Poly<NT> F = reparametrize(f, a, b);
+  if (certainly_no_root(F, zero, one)) return 0;
+  std::vector<Poly<NT>> active;
+  for (const Poly<NT> &g : conds) {
+    Poly<NT> G = reparametrize(g, a, b);
+    int s = certain_sign_on(G, zero, one);
+    if (s < 0) return 0;  // g <= 0 on all of [a, b]
+    if (s == 0) active.push_back(std::move(G));
+  }
+  // g_0 = s (1 - s)
+  active.insert(active.begin(), Poly<NT>(std::vector<NT>{zero, one, -one}));
+  arith::sign(F.lc());  // Uncertain unless the degree of f is certain
+  Hermite<NT> H(F);
+  std::vector<Poly<NT>> g1, g2;  // g_i mod F and g_i^2 mod F
+  for (const Poly<NT> &g : active) {
+    g1.push_back(rem(g, F));
+    g2.push_back(rem(g1.back() * g1.back(), F));
+  }
+  const size_t l = active.size();
+  long sum = 0;
+  for (size_t mask = 0; mask < (size_t(1) << l); ++mask) {
+    Poly<NT> prod = Poly<NT>::constant(one);
+    for (size_t i = 0; i < l && !prod.c.empty(); ++i)
+      prod = rem(prod * ((mask >> i & 1) ? g2[i] : g1[i]), F);
+    sum += H.taq(prod);
+  }
+  const long denom = long(1) << l;
+  if (sum < 0 || sum % denom != 0)
+    throw arith::Internal_error("count_roots: sign determination gave a non-integer count");
+  return sum / denom;
+}
+
+// True when t is a root of f (f may be identically zero) with every g_i(t) > 0.
+template <class NT>
+bool satisfies(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT &t) {
+  if (!f.c.empty() && !arith::is_zero(f.eval(t))) return false;
+  for (const Poly<NT> &g : conds)
+    if (arith::sign(g.eval(t)) <= 0) return false;
+  return true;
+}
+
+}  // namespace pccd::poly

@@ -1,0 +1,130 @@
+// Tarski queries by Hermite's method (paper, section 6):
+//   TaQ(g, f) = #{t real : f(t) = 0, g(t) > 0} - #{t real : f(t) = 0, g(t) < 0}
+// equals the signature of the Hermite matrix H = [Tr(g t^(i+j))]_{i,j<n} of the
+// quotient algebra Q[t]/(f), whose entries are h_k = sum_i g_i s_(k+i) with s_k the
+// Newton sums of f. Roots are counted without multiplicity.
+//
+// The signature is read off the leading principal minors D_1..D_n (Jacobi): with r the
+// index of the last nonzero minor (= rank of H; a Hankel matrix of a rational series
+// of degree r has D_r != 0 by Kronecker's theorem), signature = P - V over the sequence
+// 1, D_1, ..., D_r, where P and V count sign permanences and variations. Runs of zero
+// minors inside the sequence get signs by the Frobenius rule for Hankel matrices:
+// after D_h != 0, D_(h+1) = ... = D_(h+p) = 0, take sgn D_(h+j) = (-1)^(j(j-1)/2) sgn D_h.
+//
+// The paper's r - V(S) - V(H) formula is not used: it is wrong when g shares a root
+// with f. Sign conditions are assembled from TaQs in poly/count.h.
+#pragma once
+#include <vector>
+
+#include "arith/errors.h"
+#include "poly/poly.h"
+
+namespace pccd::poly {
+
+// Sign vector -> signature by Jacobi's count with the Frobenius rule.
+int hankel_signature(const std::vector<int> &minor_signs /* D_1..D_n */);
+
+// Leading principal minors D_1..D_n of a symmetric matrix (row-major n*n), by
+// fraction-free Bareiss elimination; after a zero pivot the remaining minors are
+// computed one by one with pivoting. Exact for Rational; an enclosure for Interval.
+template <class NT>
+NT determinant(std::vector<NT> m, size_t n) {
+  NT det = arith::from_int<NT>(1);
+  for (size_t k = 0; k < n; ++k) {
+    size_t piv = n;
+    bool all_zero = true;
+    for (size_t i = k; i < n; ++i) {
+      const NT &x = m[i * n + k];
+      if (arith::certainly_positive(x) || arith::certainly_negative(x)) {
+        piv = i;
+        break;
+      }
+      if (!Poly<NT>::exact_zero(x)) all_zero = false;
+    }
+    if (piv == n) {
+      if (all_zero) return arith::from_int<NT>(0);
+      throw arith::Uncertain{};
+    }
+    if (piv != k) {
+      for (size_t j = 0; j < n; ++j) std::swap(m[k * n + j], m[piv * n + j]);
+      det = -det;
+    }
+    det = det * m[k * n + k];
+    for (size_t i = k + 1; i < n; ++i) {
+      NT f = m[i * n + k] / m[k * n + k];
+      for (size_t j = k; j < n; ++j) m[i * n + j] = m[i * n + j] - f * m[k * n + j];
+    }
+  }
+  return det;
+}
+
+template <class NT>
+std::vector<int> leading_minor_signs(const std::vector<NT> &a, size_t n) {
+  std::vector<int> signs(n, 0);
+  std::vector<NT> m = a;
+  NT prev = arith::from_int<NT>(1);
+  size_t k = 0;
+  // Bareiss: after step k, m[i][j] (i, j > k) is the minor of rows 0..k,i x cols 0..k,j.
+  for (; k < n; ++k) {
+    signs[k] = arith::sign(m[k * n + k]);  // = sgn D_(k+1)
+    if (signs[k] == 0) break;
+    for (size_t i = k + 1; i < n; ++i)
+      for (size_t j = k + 1; j < n; ++j)
+        m[i * n + j] = (m[i * n + j] * m[k * n + k] - m[i * n + k] * m[k * n + j]) / prev;
+    prev = m[k * n + k];
+  }
+  for (size_t s = k + 1; s < n; ++s) {  // after a zero pivot: one determinant each
+    std::vector<NT> sub(( s + 1) * (s + 1));
+    for (size_t i = 0; i <= s; ++i)
+      for (size_t j = 0; j <= s; ++j) sub[i * (s + 1) + j] = a[i * n + j];
+    signs[s] = arith::sign(determinant(std::move(sub), s + 1));
+  }
+  return signs;
+}
+
+// Newton sums of f and the Hermite matrices built from them; one per f.
+template <class NT>
+class Hermite {
+ public:
+  // f must have a certainly nonzero leading coefficient and degree >= 1.
+  explicit Hermite(const Poly<NT> &f) : f_(f), n_(f.degree()) {
+    if (n_ < 1) throw arith::Internal_error("Hermite: degree of f below 1");
+    const NT &lc = f.lc();
+    std::vector<NT> e(n_ + 1);  // monic f = t^n + e_1 t^(n-1) + ... + e_n
+    for (int j = 1; j <= n_; ++j) e[j] = f.c[n_ - j] / lc;
+    const int kmax = 3 * n_ - 2;  // h_k for k <= 2n-2 uses s up to 2n-2 + (n-1)
+    s_.assign(kmax + 1, arith::from_int<NT>(0));
+    s_[0] = arith::from_int<NT>(n_);
+    for (int k = 1; k <= kmax; ++k) {  // Newton's identities
+      NT acc = arith::from_int<NT>(0);
+      for (int j = 1; j <= std::min(k - 1, n_); ++j) acc = acc + e[j] * s_[k - j];
+      if (k <= n_) acc = acc + arith::from_int<NT>(k) * e[k];
+      s_[k] = -acc;
+    }
+  }
+  const Poly<NT> &f() const { return f_; }
+  int degree() const { return n_; }
+
+  // TaQ(g, f) for g already reduced modulo f (degree < n).
+  int taq(const Poly<NT> &g) const {
+    if (g.degree() >= n_) throw arith::Internal_error("Hermite::taq: g not reduced mod f");
+    if (g.c.empty()) return 0;
+    std::vector<NT> h(2 * n_ - 1, arith::from_int<NT>(0));
+    for (int k = 0; k <= 2 * n_ - 2; ++k) {
+      NT acc = arith::from_int<NT>(0);
+      for (size_t i = 0; i < g.c.size(); ++i) acc = acc + g.c[i] * s_[k + i];
+      h[k] = acc;
+    }
+    std::vector<NT> m(static_cast<size_t>(n_) * n_);
+    for (int i = 0; i < n_; ++i)
+      for (int j = 0; j < n_; ++j) m[i * n_ + j] = h[i + j];
+    return hankel_signature(leading_minor_signs(m, n_));
+  }
+
+ private:
+  Poly<NT> f_;
+  int n_;
+  std::vector<NT> s_;
+};
+
+}  // namespace pccd::poly

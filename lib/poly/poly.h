@@ -1,0 +1,144 @@
+// Dense univariate polynomials over a number type NT (Rational or Interval),
+// coefficients in ascending powers: c[0] + c[1] t + ... .
+//
+// Trailing coefficients that are exactly zero are trimmed. With NT = Interval a
+// trailing coefficient that merely contains zero is kept (its degree is not certain);
+// operations that need a certain leading coefficient call sign() and so throw
+// Uncertain, which the filtered caller turns into an exact recomputation.
+#pragma once
+#include <utility>
+#include <vector>
+
+#include "arith/convert.h"
+#include "arith/interval.h"
+#include "arith/rational.h"
+
+namespace pccd::poly {
+
+using arith::Interval;
+using arith::Rational;
+
+template <class NT>
+struct Poly {
+  std::vector<NT> c;
+
+  Poly() = default;
+  explicit Poly(std::vector<NT> coeffs) : c(std::move(coeffs)) { trim(); }
+  static Poly constant(const NT &v) { return Poly(std::vector<NT>{v}); }
+  // t - a
+  static Poly linear_root(const NT &a) { return Poly(std::vector<NT>{-a, arith::from_int<NT>(1)}); }
+
+  // Removes trailing coefficients that are exactly zero (certainly zero for Interval).
+  void trim() {
+    while (!c.empty() && exact_zero(c.back())) c.pop_back();
+  }
+  // Degree; -1 for the zero polynomial.
+  int degree() const { return static_cast<int>(c.size()) - 1; }
+  // True when every coefficient is exactly zero. For Interval: throws Uncertain when
+  // no coefficient is certainly nonzero but some are not certainly zero.
+  bool is_zero() const {
+    bool certain = true;
+    for (const NT &x : c) {
+      if (arith::certainly_positive(x) || arith::certainly_negative(x)) return false;
+      if (!exact_zero(x)) certain = false;
+    }
+    if (!certain) throw arith::Uncertain{};
+    return true;
+  }
+  const NT &lc() const { return c.back(); }
+
+  NT eval(const NT &t) const {
+    NT r = arith::from_int<NT>(0);
+    for (size_t i = c.size(); i-- > 0;) r = r * t + c[i];
+    return r;
+  }
+
+  static bool exact_zero(const Rational &x) { return sgn(x) == 0; }
+  static bool exact_zero(const Interval &x) { return x.is_point_zero(); }
+};
+
+template <class NT>
+Poly<NT> operator+(const Poly<NT> &a, const Poly<NT> &b) {
+  std::vector<NT> r(std::max(a.c.size(), b.c.size()), arith::from_int<NT>(0));
+  for (size_t i = 0; i < a.c.size(); ++i) r[i] = a.c[i];
+  for (size_t i = 0; i < b.c.size(); ++i) r[i] = r[i] + b.c[i];
+  return Poly<NT>(std::move(r));
+}
+template <class NT>
+Poly<NT> operator-(const Poly<NT> &a) {
+  std::vector<NT> r(a.c.size());
+  for (size_t i = 0; i < a.c.size(); ++i) r[i] = -a.c[i];
+  return Poly<NT>(std::move(r));
+}
+template <class NT>
+Poly<NT> operator-(const Poly<NT> &a, const Poly<NT> &b) {
+  std::vector<NT> r(std::max(a.c.size(), b.c.size()), arith::from_int<NT>(0));
+  for (size_t i = 0; i < a.c.size(); ++i) r[i] = a.c[i];
+  for (size_t i = 0; i < b.c.size(); ++i) r[i] = r[i] - b.c[i];
+  return Poly<NT>(std::move(r));
+}
+template <class NT>
+Poly<NT> operator*(const Poly<NT> &a, const Poly<NT> &b) {
+  if (a.c.empty() || b.c.empty()) return Poly<NT>();
+  std::vector<NT> r(a.c.size() + b.c.size() - 1, arith::from_int<NT>(0));
+  for (size_t i = 0; i < a.c.size(); ++i)
+    for (size_t j = 0; j < b.c.size(); ++j) r[i + j] = r[i + j] + a.c[i] * b.c[j];
+  return Poly<NT>(std::move(r));
+}
+template <class NT>
+Poly<NT> operator*(const NT &s, const Poly<NT> &a) {
+  std::vector<NT> r(a.c.size());
+  for (size_t i = 0; i < a.c.size(); ++i) r[i] = s * a.c[i];
+  return Poly<NT>(std::move(r));
+}
+
+// Remainder of a modulo b (deg b >= 0, leading coefficient certainly nonzero).
+template <class NT>
+Poly<NT> rem(Poly<NT> a, const Poly<NT> &b) {
+  const int db = b.degree();
+  if (db < 0) throw arith::Internal_error("polynomial remainder by zero");
+  if (arith::sign(b.lc()) == 0) throw arith::Internal_error("untrimmed divisor");
+  while (a.degree() >= db) {
+    const int da = a.degree();
+    NT q = a.lc() / b.lc();
+    for (int i = 0; i <= db; ++i) a.c[da - db + i] = a.c[da - db + i] - q * b.c[i];
+    a.c.pop_back();  // the leading term cancels by construction
+    a.trim();
+  }
+  return a;
+}
+
+// p(a + (b - a) s) as a polynomial of s (Taylor shift then scaling).
+template <class NT>
+Poly<NT> reparametrize(const Poly<NT> &p, const NT &a, const NT &b) {
+  std::vector<NT> q = p.c;
+  const size_t n = q.size();
+  // Taylor shift by a: q(t + a), by repeated synthetic division (Horner scheme).
+  for (size_t i = 0; i + 1 < n; ++i)
+    for (size_t j = n - 1; j > i; --j) q[j - 1] = q[j - 1] + a * q[j];
+  NT w = b - a, scale = arith::from_int<NT>(1);
+  for (size_t k = 0; k < n; ++k) {
+    q[k] = q[k] * scale;
+    scale = scale * w;
+  }
+  return Poly<NT>(std::move(q));
+}
+
+template <class NT>
+Poly<NT> derivative(const Poly<NT> &p) {
+  if (p.c.size() <= 1) return Poly<NT>();
+  std::vector<NT> r(p.c.size() - 1);
+  for (size_t i = 1; i < p.c.size(); ++i) r[i - 1] = arith::from_int<NT>(static_cast<long>(i)) * p.c[i];
+  return Poly<NT>(std::move(r));
+}
+
+// Converts coefficients Rational -> NT.
+template <class NT>
+Poly<NT> convert(const Poly<Rational> &p) {
+  std::vector<NT> r;
+  r.reserve(p.c.size());
+  for (const Rational &x : p.c) r.push_back(arith::from_rational<NT>(x));
+  return Poly<NT>(std::move(r));
+}
+
+}  // namespace pccd::poly

@@ -1,0 +1,28 @@
+// Is the first contact time rational? (exact arithmetic only)
+//
+// Given exact systems and an enclosure lo < t* <= hi of their earliest contact,
+// decides whether t* is rational and returns it. For a system whose first contact in
+// (lo, hi) is a root r of f: let F be the primitive square-free integer part of f and
+// L = |lc(F)|. If r = p/q in lowest terms then q | L (rational root theorem), so L r
+// is an integer. Isolate r as the only root of F in an interval narrower than 1/L:
+// that interval holds at most one multiple of 1/L, the only rational candidate.
+#pragma once
+#include <optional>
+#include <vector>
+
+#include "poly/system.h"
+
+namespace pccd::poly {
+
+struct Rational_root_result {
+  bool exact = false;
+  Rational t;                 // t* when exact
+  std::vector<size_t> which;  // the systems whose contact set holds t* (when exact)
+};
+
+// active: the systems with a contact in (lo, hi]; none of them hits lo.
+Rational_root_result rational_first_contact(const std::vector<System<Rational>> &sys,
+                                            const std::vector<size_t> &active,
+                                            Rational lo, Rational hi);
+
+}  // namespace pccd::poly

@@ -1,0 +1,146 @@
+// Contact conditions of feature pairs as univariate systems (lib/poly/system.h).
+//
+// A query is decomposed into relatively open features so that every contact of the
+// closed primitives is a contact of exactly the listed systems:
+//   closed triangle = open face (when not degenerate) + 3 open edges + 3 vertices,
+//   closed segment  = open segment (when not degenerate) + 2 endpoints.
+// Vertex-face: v in open face | v in open edge (3) | v = vertex (3).
+// Edge-edge: open segments cross at one point (not parallel) | endpoint in the other
+//   open segment (4) | endpoints coincide (4). If closed segments meet and no
+//   endpoint lies on the other one, they cross properly (parallel overlapping
+//   segments always have an endpoint on the other).
+// Each "open" system has strict inequalities only, so when its polynomial f is
+// identically zero its contact set is open in [0, 1] and its first point is 0 or a
+// contact of a lower feature listed too (lib/poly/earliest.h relies on this).
+#pragma once
+#include <array>
+#include <vector>
+
+#include "motion/trajectory.h"
+#include "poly/bernstein.h"
+#include "poly/gcd.h"
+#include "poly/system.h"
+
+namespace pccd::pred {
+
+using motion::Point_traj;
+using poly::Poly;
+using poly::System;
+
+// Feature kinds share the values of pccd_kind.
+enum Feature_kind { VERTEX_FACE = 0, EDGE_EDGE = 1, VERTEX_EDGE = 2, VERTEX_VERTEX = 3, SPHERE_SPHERE = 4 };
+
+struct Feature {
+  int kind = 0;
+  std::array<int, 4> points{{-1, -1, -1, -1}};  // query point indices, kind's order
+};
+
+template <class NT>
+struct Feature_set {
+  std::vector<Feature> features;  // all feature pairs of the query, by tag
+  std::vector<System<NT>> systems;  // those not excluded; System::tag -> features
+};
+
+// The common zero set of several polynomials as one polynomial f and whether all are
+// identically zero. Exact: their gcd. Intervals: no certified gcd exists; when one
+// polynomial certainly has no root on [0, 1] the set is empty (returns false), and
+// otherwise the sum of squares (same real zeros) is used.
+inline bool common_zeros(const std::vector<Poly<arith::Rational>> &ps, Poly<arith::Rational> &f,
+                         bool &all_zero) {
+  f = Poly<arith::Rational>();
+  for (const auto &p : ps) f = poly::gcd(f, p);
+  all_zero = f.c.empty();
+  return all_zero || f.degree() >= 1;  // a nonzero constant gcd: no common zero at all
+}
+inline bool common_zeros(const std::vector<Poly<arith::Interval>> &ps, Poly<arith::Interval> &f,
+                         bool &all_zero) {
+  const arith::Interval zero(0.0), one(1.0);
+  for (const auto &p : ps)
+    if (poly::certainly_no_root(p, zero, one)) return false;
+  f = Poly<arith::Interval>();
+  for (const auto &p : ps) f = f + p * p;
+  all_zero = f.is_zero();  // Uncertain unless certain
+  return true;
+}
+
+template <class NT>
+void add_system(Feature_set<NT> &set, Feature feat, typename System<NT>::Kind kind,
+                Poly<NT> f, std::vector<Poly<NT>> g) {
+  System<NT> s;
+  s.kind = kind;
+  s.f = std::move(f);
+  s.g = std::move(g);
+  s.tag = static_cast<int>(set.features.size());
+  set.features.push_back(feat);
+  set.systems.push_back(std::move(s));
+}
+
+// The pair is listed even when excluded, so tags are the same for every number type.
+template <class NT>
+void skip_feature(Feature_set<NT> &set, Feature feat) { set.features.push_back(feat); }
+
+template <class NT>
+void add_vertex_vertex(Feature_set<NT> &set, const Point_traj<NT> &a, const Point_traj<NT> &b,
+                       int ia, int ib) {
+  using K = typename System<NT>::Kind;
+  Feature feat{VERTEX_VERTEX, {{ia, ib, -1, -1}}};
+  auto d = a - b;
+  Poly<NT> f;
+  bool all_zero = false;
+  if (!common_zeros(std::vector<Poly<NT>>{d[0], d[1], d[2]}, f, all_zero))
+    return skip_feature(set, feat);
+  add_system(set, feat, all_zero ? K::zero_f : K::roots, f, {});
+}
+
+// v inside the open segment (e0, e1): v - e0 parallel to e1 - e0, strictly between.
+template <class NT>
+void add_vertex_edge(Feature_set<NT> &set, const Point_traj<NT> &v, const Point_traj<NT> &e0,
+                     const Point_traj<NT> &e1, int iv, int i0, int i1) {
+  using K = typename System<NT>::Kind;
+  Feature feat{VERTEX_EDGE, {{iv, i0, i1, -1}}};
+  auto e = e1 - e0;
+  auto u = motion::cross(e, v - e0);
+  Poly<NT> f;
+  bool all_zero = false;
+  if (!common_zeros(std::vector<Poly<NT>>{u[0], u[1], u[2]}, f, all_zero))
+    return skip_feature(set, feat);
+  add_system(set, feat, all_zero ? K::zero_f : K::roots, f,
+             {motion::dot(v - e0, e), motion::dot(e1 - v, e)});
+}
+
+// v inside the open triangle (f0, f1, f2): coplanar, strictly left of each edge seen
+// along the normal n = (f1 - f0) x (f2 - f0) (n = 0 for a degenerate triangle makes
+// every condition fail, as it must).
+template <class NT>
+void add_vertex_face(Feature_set<NT> &set, const Point_traj<NT> &v,
+                     const std::array<const Point_traj<NT> *, 3> &fv, const std::array<int, 4> &idx) {
+  using K = typename System<NT>::Kind;
+  Feature feat{VERTEX_FACE, idx};
+  auto n = motion::cross(*fv[1] - *fv[0], *fv[2] - *fv[0]);
+  Poly<NT> f = motion::dot(n, v - *fv[0]);
+  std::vector<Poly<NT>> g;
+  for (int i = 0; i < 3; ++i)
+    g.push_back(motion::dot(n, motion::cross(*fv[(i + 1) % 3] - *fv[i], v - *fv[i])));
+  add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f, std::move(g));
+}
+
+// Open segments (a0, a1) and (b0, b1) cross at one point: coplanar, not parallel, b0
+// and b1 strictly on opposite sides of line a, a0 and a1 strictly on opposite sides
+// of line b (sides measured along n = (a1 - a0) x (b1 - b0)).
+template <class NT>
+void add_edge_edge(Feature_set<NT> &set, const Point_traj<NT> &a0, const Point_traj<NT> &a1,
+                   const Point_traj<NT> &b0, const Point_traj<NT> &b1) {
+  using K = typename System<NT>::Kind;
+  Feature feat{EDGE_EDGE, {{0, 1, 2, 3}}};
+  auto ea = a1 - a0, eb = b1 - b0;
+  Poly<NT> f = motion::dot(motion::cross(ea, b0 - a0), b1 - a0);
+  auto n = motion::cross(ea, eb);
+  Poly<NT> sb0 = motion::dot(n, motion::cross(ea, b0 - a0));
+  Poly<NT> sb1 = motion::dot(n, motion::cross(ea, b1 - a0));
+  Poly<NT> sa0 = motion::dot(n, motion::cross(eb, a0 - b0));
+  Poly<NT> sa1 = motion::dot(n, motion::cross(eb, a1 - b0));
+  add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f,
+             {-(sb0 * sb1), -(sa0 * sa1)});
+}
+
+}  // namespace pccd::pred

@@ -1,0 +1,72 @@
+#include <array>
+
+#include "pred/query_systems.h"
+
+namespace pccd::pred {
+
+using arith::Interval;
+
+namespace {
+
+// Which query points belong to the first primitive; the rest form the second.
+int first_side_points(int kind) {
+  switch (kind) {
+    case EDGE_EDGE: return 2;
+    default: return 1;
+  }
+}
+
+}  // namespace
+
+bool bounds_separate(const Query_data<Interval> &q) {
+  const int split = first_side_points(q.kind);
+  std::array<Interval, 3> box[2];
+  bool init[2] = {false, false};
+  for (size_t i = 0; i < q.p.size(); ++i) {
+    int side = static_cast<int>(i) < split ? 0 : 1;
+    for (int a = 0; a < 3; ++a) {
+      Interval r = poly::range_on_unit(q.p[i][a]);
+      box[side][a] = init[side] ? arith::hull(box[side][a], r) : r;
+    }
+    init[side] = true;
+  }
+  if (q.kind == SPHERE_SPHERE)
+    for (int side = 0; side < 2; ++side)
+      for (int a = 0; a < 3; ++a)
+        box[side][a] = {arith::round_down(box[side][a].lo - q.radius[side].hi),
+                        arith::round_up(box[side][a].hi + q.radius[side].hi)};
+  for (int a = 0; a < 3; ++a)
+    if (box[0][a].hi < box[1][a].lo || box[1][a].hi < box[0][a].lo) return true;
+  return false;
+}
+
+bool bernstein_excludes(const Query_data<Interval> &q) {
+  const Interval zero(0.0), one(1.0);
+  const auto &p = q.p;
+  auto rootless = [&](const Poly<Interval> &f) { return poly::certainly_no_root(f, zero, one); };
+  switch (q.kind) {
+    case VERTEX_FACE: {
+      auto n = motion::cross(p[2] - p[1], p[3] - p[1]);
+      return rootless(motion::dot(n, p[0] - p[1]));
+    }
+    case EDGE_EDGE:
+      return rootless(motion::dot(motion::cross(p[1] - p[0], p[2] - p[0]), p[3] - p[0]));
+    case VERTEX_EDGE: {
+      auto u = motion::cross(p[2] - p[1], p[0] - p[1]);
+      return rootless(u[0]) || rootless(u[1]) || rootless(u[2]);
+    }
+    case VERTEX_VERTEX: {
+      auto d = p[0] - p[1];
+      return rootless(d[0]) || rootless(d[1]) || rootless(d[2]);
+    }
+    case SPHERE_SPHERE: {
+      auto d = p[0] - p[1];
+      Interval r = q.radius[0] + q.radius[1];
+      Poly<Interval> f = motion::dot(d, d) - Poly<Interval>::constant(r * r);
+      return !f.c.empty() && poly::certain_sign_on(f, zero, one) > 0;
+    }
+  }
+  return false;
+}
+
+}  // namespace pccd::pred

@@ -1,0 +1,71 @@
+// The feature systems of each primitive query kind (see features.h for why the list
+// is complete), and the cheap exclusion tests that run before them.
+#pragma once
+#include <vector>
+
+#include "pred/features.h"
+
+namespace pccd::pred {
+
+// The primitive query: kind, point trajectories, ball radii (SPHERE_SPHERE only).
+template <class NT>
+struct Query_data {
+  int kind = 0;
+  std::vector<Point_traj<NT>> p;
+  NT radius[2];
+};
+
+template <class NT>
+Feature_set<NT> build_systems(const Query_data<NT> &q) {
+  using K = typename System<NT>::Kind;
+  Feature_set<NT> s;
+  const auto &p = q.p;
+  switch (q.kind) {
+    case VERTEX_FACE:
+      add_vertex_face(s, p[0], {{&p[1], &p[2], &p[3]}}, {{0, 1, 2, 3}});
+      for (int i = 0; i < 3; ++i) add_vertex_edge(s, p[0], p[1 + i], p[1 + (i + 1) % 3], 0, 1 + i, 1 + (i + 1) % 3);
+      for (int i = 1; i <= 3; ++i) add_vertex_vertex(s, p[0], p[i], 0, i);
+      break;
+    case EDGE_EDGE:
+      add_edge_edge(s, p[0], p[1], p[2], p[3]);
+      add_vertex_edge(s, p[0], p[2], p[3], 0, 2, 3);
+      add_vertex_edge(s, p[1], p[2], p[3], 1, 2, 3);
+      add_vertex_edge(s, p[2], p[0], p[1], 2, 0, 1);
+      add_vertex_edge(s, p[3], p[0], p[1], 3, 0, 1);
+      for (int i = 0; i < 2; ++i)
+        for (int j = 2; j < 4; ++j) add_vertex_vertex(s, p[i], p[j], i, j);
+      break;
+    case VERTEX_EDGE:
+      add_vertex_edge(s, p[0], p[1], p[2], 0, 1, 2);
+      add_vertex_vertex(s, p[0], p[1], 0, 1);
+      add_vertex_vertex(s, p[0], p[2], 0, 2);
+      break;
+    case VERTEX_VERTEX:
+      add_vertex_vertex(s, p[0], p[1], 0, 1);
+      break;
+    case SPHERE_SPHERE: {
+      // Closed balls meet iff |ca - cb|^2 - (ra + rb)^2 <= 0.
+      auto d = p[0] - p[1];
+      NT r = q.radius[0] + q.radius[1];
+      Poly<NT> f = motion::dot(d, d) - Poly<NT>::constant(r * r);
+      add_system(s, Feature{SPHERE_SPHERE, {{0, 1, -1, -1}}}, K::sublevel, f, {});
+      break;
+    }
+    default:
+      throw arith::Internal_error("build_systems: unknown kind");
+  }
+  return s;
+}
+
+// Conservative space-time bounds: the box of each point over t in [0, 1] (hull of the
+// Bernstein coefficients of its coordinates); segments and triangles lie in the hull
+// of their vertices, balls within radius of their centres. True when the two sides'
+// boxes are certainly disjoint, so no contact is possible.
+bool bounds_separate(const Query_data<arith::Interval> &q);
+
+// True when the polynomial every contact must be a root of certainly has no root on
+// [0, 1] (orientation determinant, cross product or coordinate difference components,
+// distance polynomial of balls).
+bool bernstein_excludes(const Query_data<arith::Interval> &q);
+
+}  // namespace pccd::pred

@@ -1,0 +1,93 @@
+#include "pred/solve.h"
+
+#include "poly/earliest.h"
+#include "poly/rational_root.h"
+#include "polyccd.h"
+
+namespace pccd::pred {
+
+using arith::Interval;
+using arith::Rational;
+
+namespace {
+
+Rational to_rational(const Rational &x) { return x; }
+Rational to_rational(const Interval &x) {
+  if (x.lo != x.hi) throw arith::Internal_error("search time is not a point");
+  Rational r;
+  mpq_set_d(r.get_mpq_t(), x.lo);
+  return r;
+}
+
+template <class NT>
+void fill(Contact_result &out, const Feature_set<NT> &set, const poly::Search_result<NT> &r) {
+  out.collides = r.found;
+  if (!r.found) return;
+  out.lo = to_rational(r.lo);
+  out.hi = to_rational(r.hi);
+  out.exact = r.exact;
+  for (size_t i : r.which) out.features.push_back(set.features[set.systems[i].tag]);
+}
+
+template <class NT>
+poly::Search_result<NT> search(const Feature_set<NT> &set, const Solve_options &opt) {
+  poly::Search_options so;
+  so.tol = opt.tol;
+  so.want_time = opt.want_time;
+  return poly::earliest_contact(set.systems, so);
+}
+
+}  // namespace
+
+Contact_result solve(const Query_data<Interval> &iq,
+                     const std::function<Query_data<Rational>()> &exact_points,
+                     const Solve_options &opt) {
+  Contact_result out;
+  const arith::Nearest_scope nearest;  // lets intervals certify exact operations
+  if (bounds_separate(iq)) {
+    out.stage = PCCD_STAGE_BOUNDS;
+    return out;
+  }
+  if (bernstein_excludes(iq)) {
+    out.stage = PCCD_STAGE_BERNSTEIN;
+    return out;
+  }
+  bool decided = false;
+  try {
+    Feature_set<Interval> set = build_systems(iq);
+    poly::Search_result<Interval> r = search(set, opt);
+    fill(out, set, r);
+    out.stage = PCCD_STAGE_INTERVAL;
+    decided = true;
+  } catch (const arith::Uncertain &) {
+    out = Contact_result();
+  }
+  if (decided && !(out.collides && opt.want_time && opt.want_exact && !out.exact)) return out;
+
+  Feature_set<Rational> set = build_systems(exact_points());
+  if (!decided) {
+    poly::Search_result<Rational> r = search(set, opt);
+    fill(out, set, r);
+    out.stage = PCCD_STAGE_EXACT;
+    if (!(out.collides && opt.want_time && opt.want_exact && !out.exact)) return out;
+    // Continue below with the exact enclosure.
+  }
+  // Is the first contact time rational? Only the systems touching in (lo, hi] matter;
+  // features are identified by tag, which is the same for both number types.
+  std::vector<size_t> active;
+  for (size_t i = 0; i < set.systems.size(); ++i)
+    for (const Feature &f : out.features)
+      if (set.features[set.systems[i].tag].kind == f.kind &&
+          set.features[set.systems[i].tag].points == f.points)
+        active.push_back(i);
+  poly::Rational_root_result rr = poly::rational_first_contact(set.systems, active, out.lo, out.hi);
+  if (rr.exact) {
+    out.exact = true;
+    out.lo = out.hi = rr.t;
+    out.features.clear();
+    for (size_t i : rr.which) out.features.push_back(set.features[set.systems[i].tag]);
+  }
+  return out;
+}
+
+}  // namespace pccd::pred

@@ -1,0 +1,35 @@
+// The staged, exact primitive contact solver.
+//
+// Stages, cheapest first (pccd_stage): space-time bounds; Bernstein enclosure of the
+// polynomial every contact is a root of; the whole algorithm in certified interval
+// arithmetic; the whole algorithm in exact rationals. A stage either decides with
+// certainty or hands over to the next (arith::Uncertain), so every answer is exact.
+#pragma once
+#include <functional>
+#include <vector>
+
+#include "pred/query_systems.h"
+
+namespace pccd::pred {
+
+struct Solve_options {
+  arith::Rational tol = arith::Rational(1, 1000000000000);  // 1e-12
+  bool want_time = true;
+  bool want_exact = true;
+};
+
+struct Contact_result {
+  bool collides = false;
+  arith::Rational lo, hi;  // lo <= t* <= hi when collides
+  bool exact = false;      // lo == hi == t*
+  std::vector<Feature> features;
+  int stage = 0;           // pccd_stage
+};
+
+// exact_points builds the exact trajectories on demand (only when the interval stages
+// cannot decide); interval.p must enclose them coefficient by coefficient.
+Contact_result solve(const Query_data<arith::Interval> &interval,
+                     const std::function<Query_data<arith::Rational>()> &exact_points,
+                     const Solve_options &opt);
+
+}  // namespace pccd::pred
