@@ -63,6 +63,10 @@ $(BUILD)/test_api: tests/c/test_api.c include/polyccd.h $(LIB)
 	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_api.c \
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
 
+# Internal probe of lib/poly for tests/test_hermite.py (links the objects directly).
+$(BUILD)/poly_probe: tests/cpp/poly_probe.cpp $(OBJS)
+	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/poly_probe.cpp $(OBJS) $(LDLIBS)
+
 check-header:
 	@echo '#include "polyccd.h"' > $(BUILD)/hdr.c
 	$(CC) -std=c99 -pedantic -Werror -Wall -Wextra -Iinclude -c $(BUILD)/hdr.c -o $(BUILD)/hdr.o
@@ -76,7 +80,7 @@ check-symbols: $(LIB)
 test-c: $(BUILD)/test_api check-header check-symbols
 	$(BUILD)/test_api
 
-test-py: all
+test-py: all $(BUILD)/poly_probe
 	POLYCCD_QUERY_DIR=$${POLYCCD_QUERY_DIR:-../shared/data/ccd-queries} $(VPY) -m pytest -q tests
 
 test: all test-c test-py
