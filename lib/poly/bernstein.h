@@ -73,6 +73,30 @@ int certain_sign_on(const Poly<NT> &p, const NT &a, const NT &b) {
   }
 }
 
+// Descartes' rule of signs in the Bernstein basis: the number of roots of p in the
+// open (0, 1), counted with multiplicity, is at most the number V of sign variations
+// of its Bernstein coefficients on [0, 1] and has V's parity; so V = 0 means no root
+// and V = 1 exactly one (simple) root. Returns V, or -1 when it is not certain (an
+// end coefficient that is zero or of uncertain sign, an uncertain inner one).
+template <class NT>
+int bernstein_variations(const Poly<NT> &p) {
+  try {
+    if (p.c.empty()) return -1;
+    std::vector<NT> bc = bernstein_coefficients(p, arith::from_int<NT>(0), arith::from_int<NT>(1));
+    if (arith::sign(bc.front()) == 0 || arith::sign(bc.back()) == 0) return -1;
+    int v = 0, last = 0;
+    for (const NT &x : bc) {
+      int s = arith::sign(x);  // Uncertain -> -1 below
+      if (s == 0) continue;
+      if (last != 0 && s != last) ++v;
+      last = s;
+    }
+    return v;
+  } catch (const arith::Uncertain &) {
+    return -1;
+  }
+}
+
 // An interval enclosing p over [0, 1] (hull of its Bernstein coefficients).
 Interval range_on_unit(const Poly<Interval> &p);
 

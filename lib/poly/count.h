@@ -10,12 +10,15 @@
 //
 // Before the Tarski queries, exact-or-certified Bernstein tests on [a, b] drop
 // conditions that are positive on the whole interval and answer 0 at once when f has
-// no root there or some condition is <= 0 on all of it.
+// no root there or some condition is <= 0 on all of it; Descartes' rule answers when
+// f has 0 or exactly 1 root in (a, b) and no condition is left.
 #pragma once
+#include <type_traits>
 #include <vector>
 
 #include "poly/bernstein.h"
 #include "poly/hermite.h"
+#include "poly/integer.h"
 
 namespace pccd::poly {
 
@@ -29,31 +32,45 @@ long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT
   // Count on s in (0, 1) with t = a + (b - a) s. Same roots; and with intervals the
   // local polynomial keeps its relative precision on short intervals, where
   // (t - a)(b - t) in the monomial basis of t would drown in rounding errors.
+  constexpr bool exact = std::is_same<NT, Rational>::value;
   const NT zero = arith::from_int<NT>(0), one = arith::from_int<NT>(1);
   Poly<NT> F = reparametrize(f, a, b);
+  if constexpr (exact) F = primitive_monic_sign(F);  // same roots, integers, lc > 0
   if (certainly_no_root(F, zero, one)) return 0;
   std::vector<Poly<NT>> active;
   for (const Poly<NT> &g : conds) {
     Poly<NT> G = reparametrize(g, a, b);
+    if constexpr (exact) G = primitive_positive(G);  // same signs, integers
     int s = certain_sign_on(G, zero, one);
     if (s < 0) return 0;  // g <= 0 on all of [a, b]
     if (s == 0) active.push_back(std::move(G));
   }
+  // Descartes filter: with 0 or 1 root of F in (0, 1) and every condition certainly
+  // positive there, the count needs no Tarski query (and none would be well
+  // conditioned with intervals when F has roots far outside the short interval).
+  const int v = bernstein_variations(F);
+  if (v == 0) return 0;
+  if (v == 1 && active.empty()) return 1;
   // g_0 = s (1 - s)
   active.insert(active.begin(), Poly<NT>(std::vector<NT>{zero, one, -one}));
   arith::sign(F.lc());  // Uncertain unless the degree of f is certain
   Hermite<NT> H(F);
   std::vector<Poly<NT>> g1, g2;  // g_i mod F and g_i^2 mod F
+  // Reduction modulo F; the exact path uses positive multiples (pseudo-remainders),
+  // which keep every TaQ unchanged and every coefficient an integer.
+  auto reduce = [&](const Poly<NT> &p) {
+    if constexpr (exact) return prem_positive(p, F); else return rem(p, F);
+  };
   for (const Poly<NT> &g : active) {
-    g1.push_back(rem(g, F));
-    g2.push_back(rem(g1.back() * g1.back(), F));
+    g1.push_back(reduce(g));
+    g2.push_back(reduce(g1.back() * g1.back()));
   }
   const size_t l = active.size();
   long sum = 0;
   for (size_t mask = 0; mask < (size_t(1) << l); ++mask) {
     Poly<NT> prod = Poly<NT>::constant(one);
     for (size_t i = 0; i < l && !prod.c.empty(); ++i)
-      prod = rem(prod * ((mask >> i & 1) ? g2[i] : g1[i]), F);
+      prod = reduce(prod * ((mask >> i & 1) ? g2[i] : g1[i]));
     sum += H.taq(prod);
   }
   const long denom = long(1) << l;

@@ -24,3 +24,97 @@ int hankel_signature(const std::vector<int> &d) {
 }
 
 }  // namespace pccd::poly
+
+namespace pccd::poly {
+
+using arith::Integer;
+
+Hermite<Rational>::Hermite(const Poly<Rational> &f) : n_(f.degree()) {
+  if (n_ < 1) throw arith::Internal_error("Hermite: degree of f below 1");
+  for (const Rational &x : f.c) {
+    if (x.get_den() != 1) throw arith::Internal_error("Hermite: f is not an integer polynomial");
+    c_.push_back(x.get_num());
+  }
+  if (sgn(c_.back()) <= 0) throw arith::Internal_error("Hermite: lc(f) must be positive");
+  const int kmax = 3 * n_ - 2;
+  lc_pow_.assign(kmax + 2, Integer(1));
+  for (int k = 1; k < kmax + 2; ++k) lc_pow_[k] = lc_pow_[k - 1] * c_.back();
+  S_.assign(kmax + 1, Integer(0));
+  S_[0] = n_;
+  for (int k = 1; k <= kmax; ++k) {
+    Integer acc = 0;
+    for (int j = 1; j <= std::min(k - 1, n_); ++j) acc += c_[n_ - j] * lc_pow_[j - 1] * S_[k - j];
+    if (k <= n_) acc += k * c_[n_ - k] * lc_pow_[k - 1];
+    S_[k] = -acc;
+  }
+}
+
+int Hermite<Rational>::taq(const Poly<Rational> &g) const {
+  if (g.degree() >= n_) throw arith::Internal_error("Hermite::taq: g not reduced mod f");
+  if (g.c.empty()) return 0;
+  const int m = g.degree();
+  std::vector<Integer> gi;
+  for (const Rational &x : g.c) {
+    if (x.get_den() != 1) throw arith::Internal_error("Hermite::taq: g is not an integer polynomial");
+    gi.push_back(x.get_num());
+  }
+  std::vector<Integer> h(2 * n_ - 1);
+  for (int k = 0; k <= 2 * n_ - 2; ++k) {
+    Integer acc = 0;
+    for (int i = 0; i <= m; ++i) acc += gi[i] * S_[k + i] * lc_pow_[m - i];
+    h[k] = acc;
+  }
+  std::vector<Integer> mat(static_cast<size_t>(n_) * n_);
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < n_; ++j) mat[i * n_ + j] = h[i + j];
+  return hankel_signature(leading_minor_signs_integer(mat, n_));
+}
+
+// Fraction-free determinant with row pivoting (Bareiss); exact divisions.
+static Integer integer_determinant(std::vector<Integer> m, size_t n) {
+  Integer prev = 1;
+  int sign = 1;
+  for (size_t k = 0; k < n; ++k) {
+    size_t piv = k;
+    while (piv < n && sgn(m[piv * n + k]) == 0) ++piv;
+    if (piv == n) return 0;
+    if (piv != k) {
+      for (size_t j = 0; j < n; ++j) std::swap(m[k * n + j], m[piv * n + j]);
+      sign = -sign;
+    }
+    for (size_t i = k + 1; i < n; ++i) {
+      for (size_t j = k + 1; j < n; ++j) {
+        Integer t = m[i * n + j] * m[k * n + k] - m[i * n + k] * m[k * n + j];
+        mpz_divexact(m[i * n + j].get_mpz_t(), t.get_mpz_t(), prev.get_mpz_t());
+      }
+    }
+    prev = m[k * n + k];
+  }
+  return sign * m[(n - 1) * n + (n - 1)];
+}
+
+std::vector<int> leading_minor_signs_integer(const std::vector<Integer> &a, size_t n) {
+  std::vector<int> signs(n, 0);
+  std::vector<Integer> m = a;
+  Integer prev = 1;
+  size_t k = 0;
+  for (; k < n; ++k) {
+    signs[k] = sgn(m[k * n + k]);
+    if (signs[k] == 0) break;
+    for (size_t i = k + 1; i < n; ++i)
+      for (size_t j = k + 1; j < n; ++j) {
+        Integer t = m[i * n + j] * m[k * n + k] - m[i * n + k] * m[k * n + j];
+        mpz_divexact(m[i * n + j].get_mpz_t(), t.get_mpz_t(), prev.get_mpz_t());
+      }
+    prev = m[k * n + k];
+  }
+  for (size_t s = k + 1; s < n; ++s) {
+    std::vector<Integer> sub((s + 1) * (s + 1));
+    for (size_t i = 0; i <= s; ++i)
+      for (size_t j = 0; j <= s; ++j) sub[i * (s + 1) + j] = a[i * n + j];
+    signs[s] = sgn(integer_determinant(std::move(sub), s + 1));
+  }
+  return signs;
+}
+
+}  // namespace pccd::poly

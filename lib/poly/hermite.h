@@ -127,4 +127,27 @@ class Hermite {
   std::vector<NT> s_;
 };
 
+// The exact specialization works in integers: f primitive with lc > 0, g integer.
+// With S_k = lc^k s_k (integers by Newton's identities multiplied through) the matrix
+// M_ij = lc^(i+j+m) h_(i+j) = lc^m (D H D)_ij, D = diag(lc^i), is congruent to H up
+// to the positive factor lc^m, so it has the same signature (Sylvester's law of
+// inertia) and leading minors of the same signs; its Bareiss elimination divides
+// exactly in the integers.
+template <>
+class Hermite<Rational> {
+ public:
+  explicit Hermite(const Poly<Rational> &f);
+  int degree() const { return n_; }
+  int taq(const Poly<Rational> &g) const;
+
+ private:
+  int n_;
+  std::vector<arith::Integer> c_;       // coefficients of f
+  std::vector<arith::Integer> lc_pow_;  // lc^0 .. lc^(3n)
+  std::vector<arith::Integer> S_;       // lc^k s_k
+};
+
+// Signs of the leading principal minors of an integer symmetric matrix.
+std::vector<int> leading_minor_signs_integer(const std::vector<arith::Integer> &a, size_t n);
+
 }  // namespace pccd::poly

@@ -56,8 +56,11 @@ int main() {
     }
     int taq = 0;
     if (f.degree() >= 1) {
-      poly::Hermite<Rational> H(f);
-      taq = H.taq(g.empty() ? poly::Poly<Rational>::constant(1) : poly::rem(g[0], f));
+      // The exact Hermite works on integer normal forms (same TaQ): see hermite.h.
+      poly::Poly<Rational> F = poly::primitive_monic_sign(f);
+      poly::Hermite<Rational> H(F);
+      taq = H.taq(g.empty() ? poly::Poly<Rational>::constant(1)
+                            : poly::prem_positive(poly::primitive_positive(g[0]), F));
     }
     std::cout << exact << " " << inter << " " << taq << "\n";
   }
