@@ -1,0 +1,78 @@
+/* cffi declarations of include/polyccd.h: the part of the C API the bindings use.
+ * No preprocessor here. build_ffi.py compiles the generated module against the real
+ * header with -Werror, so a function, struct field or constant that drifted from
+ * include/polyccd.h fails the build. Enum and #define values are `...`: cffi takes
+ * them from the compiler, never from this file. Keep in sync with the header. */
+
+typedef enum pccd_status {
+  PCCD_OK = ...,
+  PCCD_EINVAL = ...,
+  PCCD_ENOMEM = ...,
+  PCCD_ELIMIT = ...,
+  PCCD_ERANGE = ...,
+  PCCD_ESTATE = ...,
+  PCCD_EINTERNAL = ...
+} pccd_status;
+
+typedef enum pccd_kind {
+  PCCD_VERTEX_FACE = ...,
+  PCCD_EDGE_EDGE = ...,
+  PCCD_VERTEX_EDGE = ...,
+  PCCD_VERTEX_VERTEX = ...,
+  PCCD_SPHERE_SPHERE = ...
+} pccd_kind;
+
+typedef enum pccd_stage {
+  PCCD_STAGE_NONE = ...,
+  PCCD_STAGE_BOUNDS = ...,
+  PCCD_STAGE_BERNSTEIN = ...,
+  PCCD_STAGE_INTERVAL = ...,
+  PCCD_STAGE_EXACT = ...
+} pccd_stage;
+
+#define PCCD_MAX_TRAJ_DEGREE ...
+#define PCCD_MAX_NUMBER_CHARS ...
+#define PCCD_MAX_EXPONENT ...
+
+static char *const PCCD_VERSION_STRING;
+
+const char *pccd_version(void);
+const char *pccd_last_error(void);
+int pccd_kind_points(pccd_kind kind, size_t *count);
+
+typedef struct pccd_config {
+  size_t struct_size;
+  const char *time_tolerance;
+  int want_time;
+  int want_exact;
+} pccd_config;
+
+int pccd_config_init(pccd_config *cfg);
+
+typedef struct pccd_query pccd_query;
+int pccd_query_new(pccd_query **out, pccd_kind kind);
+void pccd_query_free(pccd_query *q);
+int pccd_query_set_coord_d(pccd_query *q, size_t point, size_t axis,
+                           const double *coeffs, size_t n);
+int pccd_query_set_coord_s(pccd_query *q, size_t point, size_t axis,
+                           const char *const *coeffs, size_t n);
+int pccd_query_set_linear_d(pccd_query *q, const double *p_t0, const double *p_t1);
+int pccd_query_set_radius_d(pccd_query *q, size_t which, double r);
+int pccd_query_set_radius_s(pccd_query *q, size_t which, const char *r);
+
+typedef struct pccd_result pccd_result;
+int pccd_result_new(pccd_result **out);
+void pccd_result_free(pccd_result *r);
+
+int pccd_query_solve(const pccd_query *q, const pccd_config *cfg, pccd_result *res);
+int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const double *p_t1,
+                        const pccd_config *cfg, pccd_result *res);
+
+int pccd_result_collides(const pccd_result *res, int *collides);
+int pccd_result_stage(const pccd_result *res, int *stage);
+int pccd_result_time(const pccd_result *res, int which, char *buf, size_t cap,
+                     size_t *needed);
+int pccd_result_time_is_exact(const pccd_result *res, int *exact);
+int pccd_result_time_approx(const pccd_result *res, double *t);
+int pccd_result_feature_count(const pccd_result *res, size_t *count);
+int pccd_result_feature(const pccd_result *res, size_t i, int *kind, size_t points[4]);

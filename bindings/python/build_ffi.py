@@ -1,0 +1,33 @@
+"""Builds the cffi extension polyccd/_pccd (API mode) in place, against lib/libpolyccd.so.
+
+Run from bindings/python (make venv does): python build_ffi.py
+
+The declarations come from bindings/pccd_cdef.h. The generated C file includes the real
+include/polyccd.h and is compiled with -Werror, so a function whose cdef type drifted
+from the header fails the build; enum values and the pccd_config layout are checked by
+cffi when the module is loaded (polyccd/__init__.py imports it).
+"""
+from pathlib import Path
+
+from cffi import FFI
+
+HERE = Path(__file__).absolute().parent
+REPO = HERE.parent.parent
+
+ffibuilder = FFI()
+ffibuilder.cdef((HERE.parent / "pccd_cdef.h").read_text())
+ffibuilder.set_source(
+    "polyccd._pccd",
+    '#include "polyccd.h"',
+    include_dirs=[str(REPO / "include")],
+    library_dirs=[str(REPO / "lib")],
+    libraries=["polyccd"],
+    # polyccd/_pccd*.so finds the library at <repo>/lib without LD_LIBRARY_PATH.
+    extra_link_args=["-Wl,-rpath,$ORIGIN/../../../lib"],
+    extra_compile_args=["-Werror"],
+)
+
+if __name__ == "__main__":
+    ffibuilder.compile(tmpdir=str(HERE), verbose=False)
+    # Keep only polyccd/_pccd.c and the extension (what `make clean` removes).
+    (HERE / "polyccd" / "_pccd.o").unlink(missing_ok=True)

@@ -1,0 +1,32 @@
+"""polyccd: exact continuous collision detection of moving primitives.
+
+Python bindings of libpolyccd (see docs/python-api.md). Every answer comes from the C
+library; this package converts inputs exactly and raises clear errors.
+"""
+__version__ = "0.1.0"
+
+try:
+    from ._pccd import ffi as _ffi, lib as _lib
+except ImportError as _e:  # pragma: no cover - depends on the build
+    raise ImportError("polyccd: the C extension polyccd._pccd is missing or cannot load "
+                      f"libpolyccd ({_e}); run `make venv` at the repository root") from _e
+
+
+def _check_version():
+    """The loaded library, the header it was built with and this package must agree."""
+    loaded = _ffi.string(_lib.pccd_version()).decode()
+    header = _ffi.string(_lib.PCCD_VERSION_STRING).decode()
+    if not loaded == header == __version__:
+        raise ImportError(f"polyccd {__version__}: the loaded libpolyccd is {loaded} and "
+                          f"the extension was built with polyccd.h {header}; rebuild with "
+                          "`make venv`")
+
+
+_check_version()
+
+from ._errors import Error, InputError, InternalError, LimitError  # noqa: E402
+from ._results import KINDS, ContactTime, Feature, Result  # noqa: E402
+from ._solve import collides_linear, solve, solve_linear  # noqa: E402
+
+__all__ = ["__version__", "KINDS", "solve", "solve_linear", "collides_linear", "Result",
+           "ContactTime", "Feature", "Error", "InputError", "LimitError", "InternalError"]

@@ -1,0 +1,6 @@
+"""python -m polyccd: the polyccd command line."""
+import sys
+
+from .cli import main
+
+sys.exit(main())

@@ -1,0 +1,89 @@
+"""Corpus cases: solve a case file and compare the answer with its `expect` block
+(shared/design/formats.md, EXPECT)."""
+import glob
+from fractions import Fraction
+from pathlib import Path
+
+from ._errors import Error, InputError
+from ._json import read_query
+from ._numbers import exact_fraction, ratio_text
+from ._solve import solve_query
+
+DEFAULT_TOLERANCE = "1e-12"
+
+
+def files_under(paths, pattern):
+    """The files matching pattern under each path (a file is taken as it is), sorted
+    per path. A path that does not exist but is a glob pattern (`data/**/*.csv`, from a
+    shell without globstar or quoted) is expanded here. InputError when nothing is there."""
+    found = []
+    for p in map(Path, paths):
+        if p.is_dir():
+            found.extend(sorted(q for q in p.rglob(pattern) if q.is_file()))
+        elif p.exists():
+            found.append(p)
+        elif glob.has_magic(str(p)) and glob.glob(str(p), recursive=True):
+            found.extend(files_under(sorted(glob.glob(str(p), recursive=True)), pattern))
+        else:
+            raise InputError(f"{p}: no such file or directory")
+    return found
+
+
+def solve_case(case):
+    """The Result of a validated QueryCase (its time tolerance applies)."""
+    return solve_query(case.kind, case.points, case.radii,
+                       case.time_tolerance or DEFAULT_TOLERANCE, True, True,
+                       tolerance_place="options.time_tolerance")
+
+
+def _text(x):
+    return ratio_text(x.numerator, x.denominator)
+
+
+def _shown(first):
+    if first.exact is not None:
+        return f"exactly {_text(first.exact)}"
+    return f"[{_text(first.lo)}, {_text(first.hi)}] (not exact)"
+
+
+def compare(expect, result, tolerance):
+    """Reasons why result does not meet expect (empty when it passes)."""
+    if result.collides != expect.collides:
+        return [f"collides: expected {str(expect.collides).lower()}, "
+                f"got {str(result.collides).lower()}"]
+    want, got = expect.first_contact, result.first_contact
+    if want is None or got is None:
+        return []
+    if isinstance(want, Fraction):
+        if got.exact != want:
+            return [f"first_contact: expected exactly {_text(want)}, got {_shown(got)}"]
+        return []
+    lo, hi = want
+    reasons = []
+    if got.exact is not None and not lo < got.exact < hi:
+        reasons.append(f"first_contact: expected in ({_text(lo)}, {_text(hi)}), "
+                       f"got {_shown(got)}")
+    elif got.hi < lo or got.lo > hi:
+        reasons.append(f"first_contact: the reported {_shown(got)} does not intersect "
+                       f"the expected [{_text(lo)}, {_text(hi)}]")
+    if got.hi - got.lo > tolerance:
+        reasons.append(f"first_contact: the reported enclosure is {float(got.hi - got.lo):.3g}"
+                       f" wide, wider than the time tolerance {_text(tolerance)}")
+    return reasons
+
+
+def check_case(path):
+    """Reasons why the case file at path fails (empty when it passes). A file that
+    cannot be read, parsed or solved fails with its error message."""
+    try:
+        case = read_query(path)
+        if case.expect is None:
+            return ["no expect block (a corpus case needs expect.collides)"]
+        tolerance = exact_fraction(case.time_tolerance or DEFAULT_TOLERANCE,
+                                   "options.time_tolerance")
+        result = solve_case(case)
+    except InputError as e:
+        return [str(e)]
+    except (Error, MemoryError) as e:  # a bug or no memory: this case fails, others go on
+        return [f"{type(e).__name__}: {e}"]
+    return compare(case.expect, result, tolerance)

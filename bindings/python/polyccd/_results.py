@@ -1,0 +1,103 @@
+"""Result types of a solve, read from a pccd_result handle."""
+from dataclasses import dataclass
+from fractions import Fraction
+from typing import Optional, Tuple
+
+from ._errors import InternalError, check
+from ._numbers import fraction_from_text, ratio_text
+from ._pccd import ffi, lib
+
+KINDS = ("vertex-face", "edge-edge", "vertex-edge", "vertex-vertex", "sphere-sphere")
+STAGES = {lib.PCCD_STAGE_BOUNDS: "bounds", lib.PCCD_STAGE_BERNSTEIN: "bernstein",
+          lib.PCCD_STAGE_INTERVAL: "interval", lib.PCCD_STAGE_EXACT: "exact"}
+_UNUSED = 2 ** (8 * ffi.sizeof("size_t")) - 1  # (size_t)-1: an unused feature point entry
+
+
+@dataclass(frozen=True)
+class ContactTime:
+    """The first contact time t*: lo <= t* <= hi; exact is t* when it is rational."""
+    lo: Fraction
+    hi: Fraction
+    exact: Optional[Fraction]
+    approx: float
+
+
+@dataclass(frozen=True)
+class Feature:
+    """Touching features: a kind of KINDS and the query point indices, in its order."""
+    kind: str
+    points: Tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class Result:
+    """Whether the primitives touch during [0, 1], when first, and how."""
+    collides: bool
+    first_contact: Optional[ContactTime]
+    features: Tuple[Feature, ...]
+    stage: str
+
+
+def _time_text(res, which, buf):
+    needed = ffi.new("size_t *")
+    rc = lib.pccd_result_time(res, which, buf, len(buf), needed)
+    if rc == lib.PCCD_ERANGE:
+        buf = ffi.new("char[]", needed[0])
+        rc = lib.pccd_result_time(res, which, buf, len(buf), needed)
+    check(rc)
+    return ffi.string(buf).decode("ascii")
+
+
+def _contact_time(res):
+    buf = ffi.new("char[]", 256)
+    lo = fraction_from_text(_time_text(res, 0, buf))
+    hi = fraction_from_text(_time_text(res, 1, buf))
+    flag = ffi.new("int *")
+    check(lib.pccd_result_time_is_exact(res, flag))
+    exact = fraction_from_text(_time_text(res, 2, buf)) if flag[0] else None
+    approx = ffi.new("double *")
+    check(lib.pccd_result_time_approx(res, approx))
+    return ContactTime(lo, hi, exact, approx[0])
+
+
+def _features(res):
+    count = ffi.new("size_t *")
+    check(lib.pccd_result_feature_count(res, count))
+    kind = ffi.new("int *")
+    points = ffi.new("size_t[4]")
+    features = []
+    for i in range(count[0]):
+        check(lib.pccd_result_feature(res, i, kind, points))
+        if not 0 <= kind[0] < len(KINDS):
+            raise InternalError(f"feature {i} has the unknown kind {kind[0]}")
+        features.append(Feature(KINDS[kind[0]], tuple(int(p) for p in points if p != _UNUSED)))
+    return tuple(features)
+
+
+def read_result(res):
+    """The Result held by a solved pccd_result handle."""
+    out = ffi.new("int *")
+    check(lib.pccd_result_collides(res, out))
+    collides = bool(out[0])
+    check(lib.pccd_result_stage(res, out))
+    if out[0] not in STAGES:
+        raise InternalError(f"the result reports the unknown stage {out[0]}")
+    stage = STAGES[out[0]]
+    first = _contact_time(res) if collides else None
+    return Result(collides, first, _features(res), stage)
+
+
+def result_json(result):
+    """The JSON object of a Result, as `polyccd check` prints it (formats.md)."""
+    first = result.first_contact
+    return {
+        "collides": result.collides,
+        "first_contact": None if first is None else {
+            "lo": ratio_text(first.lo.numerator, first.lo.denominator),
+            "hi": ratio_text(first.hi.numerator, first.hi.denominator),
+            "approx": first.approx,
+            "exact": None if first.exact is None
+            else ratio_text(first.exact.numerator, first.exact.denominator),
+        },
+        "features": [{"kind": f.kind, "points": list(f.points)} for f in result.features],
+    }

@@ -1,0 +1,146 @@
+"""The polyccd command line (shared/design/formats.md, Command line).
+
+Exit status: 0 success; 1 a failed case, a wrong answer or an internal error; 2 an input
+error (the message on stderr names the file and the place in it).
+"""
+import argparse
+import json
+import sys
+
+from . import __version__
+from ._corpus import check_case, files_under, solve_case
+from ._csv import CSV_KINDS
+from ._demo import query_dir, run_cases
+from ._errors import Error, InputError
+from ._json import read_query
+from ._queries import mismatch_lines, run_file
+from ._results import result_json
+
+OK, FAILED, BAD_INPUT = 0, 1, 2
+
+
+def _error(message):
+    print(f"polyccd: {message}", file=sys.stderr)
+
+
+def cmd_check(args):
+    try:
+        result = solve_case(read_query(args.file))
+    except InputError as e:
+        _error(f"{args.file}: {e}")
+        return BAD_INPUT
+    out = result_json(result)
+    out["bodies"] = None  # bodies in contact: for scene files only
+    print(json.dumps(out))
+    return OK
+
+
+def cmd_corpus(args):
+    try:
+        files = files_under(args.paths, "*.json")
+    except InputError as e:
+        _error(str(e))
+        return BAD_INPUT
+    if not files:
+        _error(f"no *.json case under {', '.join(args.paths)}")
+    failed = 0
+    for path in files:
+        reasons = check_case(path)
+        if reasons:
+            failed += 1
+            print(f"FAIL {path}: " + "; ".join(reasons))
+    print(f"{len(files) - failed} passed, {failed} failed")
+    return FAILED if failed else OK
+
+
+def run_queries(paths, kind=None, as_json=False, out=print, root=None):
+    """Runs benchmark CSV files (and folders of them); the exit status. Files are
+    named relative to root when given."""
+    try:
+        files = files_under(paths, "*.csv")
+    except InputError as e:
+        _error(str(e))
+        return BAD_INPUT
+    if not files:
+        _error(f"no *.csv file under {', '.join(map(str, paths))}")
+        return BAD_INPUT
+    reports = []
+    for path in files:
+        try:
+            report = run_file(path, kind)
+        except InputError as e:
+            _error(f"{path}: {e}")
+            return BAD_INPUT
+        if root is not None:
+            report.file = str(path.relative_to(root))
+        reports.append(report)
+        out(json.dumps(report.as_json()) if as_json else report.line())
+        for line in mismatch_lines(report):
+            print(line, file=sys.stderr if as_json else sys.stdout)
+    if not as_json:
+        n = sum(r.queries for r in reports)
+        seconds = sum(r.seconds_per_query * r.queries for r in reports)
+        out(f"total: {len(reports)} files, {n} queries, "
+            f"{sum(r.positives for r in reports)} positives, "
+            f"{sum(r.false_positives for r in reports)} false positives, "
+            f"{sum(r.false_negatives for r in reports)} false negatives, "
+            f"{seconds / n * 1e6:.2f} us/query")
+    return FAILED if any(r.mismatches for r in reports) else OK
+
+
+def cmd_queries(args):
+    return run_queries(args.files, args.kind, args.json)
+
+
+def cmd_demo(args):
+    print(f"polyccd {__version__} demo: exact answers for degenerate moving primitives\n")
+    status = OK if run_cases(print) else FAILED
+    folder = query_dir()
+    if folder is None:
+        print("shared benchmark queries not found (set POLYCCD_QUERY_DIR to the "
+              "ccd-queries folder); skipped")
+        return status
+    print(f"benchmark queries of {folder} (decide only, against the truth column):")
+    return max(status, run_queries([folder], root=folder))
+
+
+def parser():
+    p = argparse.ArgumentParser(
+        prog="polyccd", description="Exact continuous collision detection of moving "
+        "primitives (file formats: shared/design/formats.md).")
+    p.add_argument("--version", action="version", version=f"polyccd {__version__}")
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    c = sub.add_parser("check", help="solve one query file and print the JSON result")
+    c.add_argument("file", metavar="FILE.json")
+    c.set_defaults(run=cmd_check)
+    c = sub.add_parser("corpus", help="check every *.json case under the paths "
+                       "against its expect block")
+    c.add_argument("paths", nargs="+", metavar="PATH")
+    c.set_defaults(run=cmd_corpus)
+    c = sub.add_parser("queries", help="run benchmark CSV files (or folders of them) "
+                       "against their truth column")
+    c.add_argument("files", nargs="+", metavar="FILE.csv")
+    c.add_argument("--json", action="store_true", help="one JSON object per file and line")
+    c.add_argument("--kind", choices=CSV_KINDS, help="the query kind (default: from the "
+                   "folder name vertex-face/ or edge-edge/)")
+    c.set_defaults(run=cmd_queries)
+    c = sub.add_parser("demo", help="illustrative exact answers, then the benchmark summary")
+    c.set_defaults(run=cmd_demo)
+    return p
+
+
+def main(argv=None):
+    args = parser().parse_args(argv)
+    try:
+        return args.run(args)
+    except Error as e:  # InternalError: a bug, reported without a traceback
+        _error(f"{type(e).__name__}: {e}")
+        return FAILED
+    except MemoryError as e:
+        _error(f"out of memory: {e}")
+        return FAILED
+    except KeyboardInterrupt:
+        return 130
+    except BrokenPipeError:
+        sys.stderr.close()  # the reader went away (e.g. `| head`): nothing more to say
+        return FAILED
