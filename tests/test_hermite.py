@@ -5,7 +5,8 @@ rational isolating intervals), on random and deliberately degenerate polynomials
 Hankel minors that need the Frobenius rule).
 
 The probe binary build/poly_probe (tests/cpp/poly_probe.cpp) prints, per query, the
-exact count, the interval-filter count ("u" when the filter is unsure) and TaQ(g1, f).
+exact count, the interval-filter count ("u" when the filter is unsure), TaQ(g1, f) and
+the exact count by the Hermite route alone (no Bernstein/Descartes filters).
 """
 import os
 import random
@@ -131,10 +132,11 @@ def test_hermite_counts_match_sympy():
     got = run_probe(cases)
     assert len(got) == len(cases)
     checked_interval = 0
-    for (f, gs, a, b), (exact, inter, taq) in zip(cases, got):
+    for (f, gs, a, b), (exact, inter, taq, hermite) in zip(cases, got):
         want_count, want_taq = oracle(f, gs, a, b)
         msg = f"seed {SEED}: f={f} g={gs} on ({a}, {b})"
         assert int(exact) == want_count, msg
+        assert int(hermite) == want_count, msg
         assert int(taq) == want_taq, msg
         if inter != "u":
             checked_interval += 1
@@ -157,6 +159,7 @@ def test_frobenius_rule_zero_minors():
     got = run_probe(cases)
     assert [int(g[0]) for g in got] == [0, 1, 2, 1]
     assert [int(g[2]) for g in got] == [0, 1, 2, 1]
+    assert [int(g[3]) for g in got] == [0, 1, 2, 1]
 
 
 def random_sparse(rng):
@@ -178,7 +181,8 @@ def test_sparse_polynomials_zero_minor_runs():
     for _ in range(300):
         f, gs = random_sparse(rng)
         cases.append((f, gs, Fraction(rng.choice([-3, -1, 0])), Fraction(rng.choice([1, 2, 3]))))
-    for (f, gs, a, b), (exact, _inter, taq) in zip(cases, run_probe(cases)):
+    for (f, gs, a, b), (exact, _inter, taq, hermite) in zip(cases, run_probe(cases)):
         want_count, want_taq = oracle(f, gs, a, b)
-        assert (int(exact), int(taq)) == (want_count, want_taq), f"f={f} g={gs} on ({a}, {b})"
+        assert (int(exact), int(taq), int(hermite)) == (want_count, want_taq, want_count), \
+            f"f={f} g={gs} on ({a}, {b})"
 

@@ -19,12 +19,32 @@
 #include "poly/bernstein.h"
 #include "poly/hermite.h"
 #include "poly/integer.h"
+#include "poly/subdivide.h"
 
 namespace pccd::poly {
 
+// Pieces the subdivision filter may split before handing over to Hermite: enough to
+// separate the simple roots of typical contact polynomials (degree <= 30) on the
+// short intervals of the bisection, small next to one Hermite count at high degree.
+constexpr int kSubdivisionBudget = 48;
+
+// p / (t - 1) for p(1) = 0 (synthetic division; exact for exact inputs).
+template <class NT>
+Poly<NT> deflate_at_one(const Poly<NT> &p) {
+  const int n = p.degree();
+  std::vector<NT> q(n);
+  NT carry = arith::from_int<NT>(0);
+  for (int i = n; i >= 1; --i) {
+    carry = carry + p.c[i];
+    q[i - 1] = carry;
+  }
+  return Poly<NT>(std::move(q));
+}
+
+// filters = false skips every filter (tests use it to check the Hermite route alone).
 template <class NT>
 long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT &a,
-                 const NT &b) {
+                 const NT &b, bool filters = true) {
   if (f.degree() < 1) {
     if (f.c.empty()) throw arith::Internal_error("count_roots: f is identically zero");
     return 0;  // a nonzero constant has no root
@@ -36,21 +56,28 @@ long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT
   const NT zero = arith::from_int<NT>(0), one = arith::from_int<NT>(1);
   Poly<NT> F = reparametrize(f, a, b);
   if constexpr (exact) F = primitive_monic_sign(F);  // same roots, integers, lc > 0
-  if (certainly_no_root(F, zero, one)) return 0;
+  if (filters && certainly_no_root(F, zero, one)) return 0;
   std::vector<Poly<NT>> active;
   for (const Poly<NT> &g : conds) {
     Poly<NT> G = reparametrize(g, a, b);
     if constexpr (exact) G = primitive_positive(G);  // same signs, integers
-    int s = certain_sign_on(G, zero, one);
+    int s = filters ? certain_sign_on(G, zero, one) : 0;
     if (s < 0) return 0;  // g <= 0 on all of [a, b]
     if (s == 0) active.push_back(std::move(G));
   }
-  // Descartes filter: with 0 or 1 root of F in (0, 1) and every condition certainly
-  // positive there, the count needs no Tarski query (and none would be well
-  // conditioned with intervals when F has roots far outside the short interval).
-  const int v = bernstein_variations(F);
-  if (v == 0) return 0;
-  if (v == 1 && active.empty()) return 1;
+  // Subdivision filter (subdivide.h). Roots exactly at the ends of (0, 1) are not
+  // counted; they are divided out first (exact zeros only) so Descartes can apply.
+  Poly<NT> Fo = F;
+  while (Fo.degree() >= 1 && Poly<NT>::exact_zero(Fo.c.front())) Fo.c.erase(Fo.c.begin());
+  while (Fo.degree() >= 1 && Poly<NT>::exact_zero(Fo.eval(one))) Fo = deflate_at_one(Fo);
+  if (Fo.degree() < 1) return 0;
+  if (filters) {
+    std::vector<std::vector<NT>> gbs;
+    for (const Poly<NT> &g : active) gbs.push_back(bernstein_coefficients(g, zero, one));
+    long n = 0;
+    Subdivision_counter<NT> sub(kSubdivisionBudget);
+    if (sub.count(bernstein_coefficients(Fo, zero, one), std::move(gbs), n)) return n;
+  }
   // g_0 = s (1 - s)
   active.insert(active.begin(), Poly<NT>(std::vector<NT>{zero, one, -one}));
   arith::sign(F.lc());  // Uncertain unless the degree of f is certain

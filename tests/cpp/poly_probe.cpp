@@ -1,7 +1,7 @@
 // Test probe for lib/poly (not part of the library): reads one query per line
 //   <a> <b> | f0 f1 ... | g0 g1 ... | g0 g1 ...
 // (rational strings, ascending coefficients) and prints
-//   <exact count> <interval count or "u"> <taq(g_1, f) exact>
+//   <exact count> <interval count or "u"> <taq(g_1, f) exact> <exact count, Hermite only>
 // where count = #{t in (a, b) : f(t) = 0, every g_i(t) > 0} by Hermite/Hankel sign
 // determination. tests/test_hermite.py compares this with sympy's root isolation.
 #include <iostream>
@@ -62,7 +62,8 @@ int main() {
       taq = H.taq(g.empty() ? poly::Poly<Rational>::constant(1)
                             : poly::prem_positive(poly::primitive_positive(g[0]), F));
     }
-    std::cout << exact << " " << inter << " " << taq << "\n";
+    long hermite_only = poly::count_roots(f, g, a, b, /*filters=*/false);
+    std::cout << exact << " " << inter << " " << taq << " " << hermite_only << "\n";
   }
   return 0;
 }

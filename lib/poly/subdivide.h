@@ -1,0 +1,108 @@
+// Root counting by Bernstein subdivision: the filter in front of the Tarski queries.
+//
+// On a piece of (0, 1) with Bernstein coefficients of F and of the conditions G_i:
+//   - all coefficients of F of one strict sign: no root;
+//   - a condition with all coefficients <= 0: no qualifying root; all > 0: dropped;
+//   - Descartes' rule (bernstein.h): 0 sign variations of F, no root; 1 variation
+//     and no condition left, exactly one qualifying root;
+//   - otherwise halve the piece (de Casteljau at 1/2) and decide the midpoint itself.
+// Every step is exact (Rational) or certified (Interval). A piece that stays
+// undecided after the budget (a multiple root, a condition vanishing at a root, a
+// cluster of roots) makes the whole attempt fail, and the caller counts with the
+// Hermite method instead, which needs no separation at all.
+#pragma once
+#include <vector>
+
+#include "poly/bernstein.h"
+
+namespace pccd::poly {
+
+template <class NT>
+void de_casteljau_halves(const std::vector<NT> &b, std::vector<NT> &left, std::vector<NT> &right) {
+  const size_t n = b.size();
+  std::vector<NT> w = b;
+  left.assign(n, w[0]);
+  right.assign(n, w[n - 1]);
+  const NT half = arith::from_rational<NT>(Rational(1, 2));
+  for (size_t r = 1; r < n; ++r) {
+    for (size_t i = 0; i + r < n; ++i) w[i] = (w[i] + w[i + 1]) * half;
+    left[r] = w[0];
+    right[n - 1 - r] = w[n - 1 - r];
+  }
+}
+
+template <class NT>
+class Subdivision_counter {
+ public:
+  explicit Subdivision_counter(int budget) : budget_(budget) {}
+
+  // Adds to `count` the qualifying roots in the open piece; false when undecided.
+  bool count(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs, long &count) {
+    try {
+      return run(fb, std::move(gbs), count);
+    } catch (const arith::Uncertain &) {
+      return false;
+    }
+  }
+
+ private:
+  static bool all_pos(const std::vector<NT> &b) {
+    for (const NT &x : b)
+      if (!arith::certainly_positive(x)) return false;
+    return true;
+  }
+  static bool all_neg(const std::vector<NT> &b) {
+    for (const NT &x : b)
+      if (!arith::certainly_negative(x)) return false;
+    return true;
+  }
+  static bool all_nonpos(const std::vector<NT> &b) {
+    for (const NT &x : b)
+      if (!arith::certainly_nonpos(x)) return false;
+    return true;
+  }
+  // Sign variations with certain signs and nonzero ends; -1 otherwise.
+  static int variations(const std::vector<NT> &b) {
+    if (!(arith::certainly_positive(b.front()) || arith::certainly_negative(b.front()))) return -1;
+    if (!(arith::certainly_positive(b.back()) || arith::certainly_negative(b.back()))) return -1;
+    int v = 0, last = 0;
+    for (const NT &x : b) {
+      int s = arith::sign(x);  // may throw Uncertain: caught in count()
+      if (s == 0) continue;
+      if (last != 0 && s != last) ++v;
+      last = s;
+    }
+    return v;
+  }
+
+  bool run(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs, long &count) {
+    if (all_pos(fb) || all_neg(fb)) return true;
+    std::vector<std::vector<NT>> left_g;
+    for (auto &g : gbs) {
+      if (all_nonpos(g)) return true;
+      if (!all_pos(g)) left_g.push_back(std::move(g));
+    }
+    const int v = variations(fb);
+    if (v == 0) return true;
+    if (v == 1 && left_g.empty()) {
+      ++count;
+      return true;
+    }
+    if (--budget_ < 0) return false;
+    std::vector<NT> fl, fr;
+    de_casteljau_halves(fb, fl, fr);
+    std::vector<std::vector<NT>> gl(left_g.size()), gr(left_g.size());
+    for (size_t i = 0; i < left_g.size(); ++i) de_casteljau_halves(left_g[i], gl[i], gr[i]);
+    // The midpoint: F(1/2) = fl.back(), G_i(1/2) = gl[i].back().
+    if (arith::sign(fl.back()) == 0) {
+      bool ok = true;
+      for (const auto &g : gl) ok = ok && arith::sign(g.back()) > 0;
+      if (ok) ++count;
+    }
+    return run(fl, std::move(gl), count) && run(fr, std::move(gr), count);
+  }
+
+  int budget_;
+};
+
+}  // namespace pccd::poly
