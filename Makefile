@@ -58,7 +58,7 @@ venv: $(VENV)/.stamp $(LIB)
 	$(VENV)/bin/pip install -q --no-build-isolation --no-deps -e bindings/python
 
 # The C test program, linked against the shared library.
-$(BUILD)/test_api: tests/c/test_api.c include/polyccd.h $(LIB)
+$(BUILD)/test_api: tests/c/test_api.c tests/c/exact_rational.h include/polyccd.h $(LIB)
 	@mkdir -p $(BUILD)
 	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_api.c \
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
@@ -89,6 +89,10 @@ test: all test-c test-py
 valgrind: $(BUILD)/test_api
 	bash tests/c/run_valgrind.sh
 
+# ASan + UBSan build of the library and the C test (tests/c/run_sanitizers.sh).
+sanitize:
+	bash tests/c/run_sanitizers.sh
+
 bench: all
 	$(VENV)/bin/pip install -q -r tests/bench/requirements.txt
 	$(VPY) tests/bench/bench_queries.py
@@ -97,4 +101,4 @@ demo: all
 	$(VENV)/bin/polyccd demo
 
 clean:
-	rm -rf $(BUILD) $(LIB) bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c
+	rm -rf $(BUILD) build-asan $(LIB) bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c

@@ -1,7 +1,9 @@
 // The only place where C++ exceptions become C status codes. Every extern "C" entry
 // point runs its body through guard(), so no exception crosses the C API.
 #pragma once
+#include <cstring>
 #include <new>
+#include <type_traits>
 #include <string>
 
 #include "arith/errors.h"
@@ -40,6 +42,14 @@ int guard(const char *fn, F &&body) noexcept {
     set_error(fn, "internal error (please report with the inputs): unknown exception");
     return PCCD_EINTERNAL;
   }
+}
+
+// The integer a caller passed as a pccd_kind. C allows any int there; in C++ loading
+// an enum outside its value range is undefined, so the bits are copied out instead.
+inline long raw_kind(const pccd_kind &k) {
+  std::underlying_type_t<pccd_kind> raw;
+  std::memcpy(&raw, &k, sizeof raw);
+  return static_cast<long>(raw);
 }
 
 // Throws Input_error "<what> is NULL" when p is NULL.

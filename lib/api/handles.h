@@ -19,7 +19,7 @@ struct pccd_result {
 namespace pccd::api {
 
 // Number of points of a kind; Input_error for an unknown kind.
-size_t kind_points(int kind);
+size_t kind_points(long kind);
 
 // Solves with the interval stages built from `q`'s exact data (intervals enclosing it).
 pred::Contact_result solve_query(const pccd_query &q, const pred::Solve_options &opt);

@@ -13,7 +13,7 @@ using Poly_q = pccd::poly::Poly<Rational>;
 
 namespace pccd::api {
 
-size_t kind_points(int kind) {
+size_t kind_points(long kind) {
   switch (kind) {
     case PCCD_VERTEX_FACE: case PCCD_EDGE_EDGE: return 4;
     case PCCD_VERTEX_EDGE: return 3;
@@ -54,7 +54,7 @@ PCCD_API const char *pccd_version(void) { return PCCD_VERSION_STRING; }
 PCCD_API int pccd_kind_points(pccd_kind kind, size_t *count) {
   return guard("pccd_kind_points", [&] {
     require(count, "count");
-    *count = pccd::api::kind_points(kind);
+    *count = pccd::api::kind_points(pccd::api::raw_kind(kind));
     return PCCD_OK;
   });
 }
@@ -63,9 +63,10 @@ PCCD_API int pccd_query_new(pccd_query **out, pccd_kind kind) {
   return guard("pccd_query_new", [&] {
     require(out, "out");
     *out = nullptr;
-    size_t n = pccd::api::kind_points(kind);
+    const long k = pccd::api::raw_kind(kind);
+    size_t n = pccd::api::kind_points(k);
     auto *q = new pccd_query;
-    q->kind = kind;
+    q->kind = static_cast<int>(k);
     q->points.resize(n);
     *out = q;
     return PCCD_OK;

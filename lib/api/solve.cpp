@@ -94,15 +94,16 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
     res->r = pccd::pred::Contact_result();
     require(p_t0, "p_t0");
     require(p_t1, "p_t1");
-    if (kind == PCCD_SPHERE_SPHERE)
+    const long k = pccd::api::raw_kind(kind);
+    if (k == PCCD_SPHERE_SPHERE)
       throw Input_error("sphere-sphere queries need radii: use pccd_query_new");
-    const size_t n = pccd::api::kind_points(kind);
+    const size_t n = pccd::api::kind_points(k);
     pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
     const pccd::arith::Nearest_scope nearest;  // before any interval arithmetic
     // The interval stages see the doubles as exact points; the exact trajectories are
     // built only if those stages cannot decide.
     pccd::pred::Query_data<Interval> iq;
-    iq.kind = kind;
+    iq.kind = static_cast<int>(k);
     iq.p.resize(n);
     for (size_t i = 0; i < n; ++i)
       for (int a = 0; a < 3; ++a) {
@@ -118,7 +119,7 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
       }
     auto exact = [&] {
       pccd::pred::Query_data<Rational> eq;
-      eq.kind = kind;
+      eq.kind = static_cast<int>(k);
       eq.p.resize(n);
       for (size_t i = 0; i < n; ++i)
         for (int a = 0; a < 3; ++a) {
