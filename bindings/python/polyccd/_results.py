@@ -1,4 +1,5 @@
 """Result types of a solve, read from a pccd_result handle."""
+import threading
 from dataclasses import dataclass
 from fractions import Fraction
 from typing import Optional, Tuple
@@ -38,8 +39,22 @@ class Result:
     stage: str
 
 
+class _Scratch(threading.local):
+    """Per-thread output cells reused by every read (no allocation per call)."""
+
+    def __init__(self):
+        self.int_out = ffi.new("int *")
+        self.size_out = ffi.new("size_t *")
+        self.double_out = ffi.new("double *")
+        self.buf = ffi.new("char[]", 256)
+        self.points = ffi.new("size_t[4]")
+
+
+_scratch = _Scratch()
+
+
 def _time_text(res, which, buf):
-    needed = ffi.new("size_t *")
+    needed = _scratch.size_out
     rc = lib.pccd_result_time(res, which, buf, len(buf), needed)
     if rc == lib.PCCD_ERANGE:
         buf = ffi.new("char[]", needed[0])
@@ -49,22 +64,22 @@ def _time_text(res, which, buf):
 
 
 def _contact_time(res):
-    buf = ffi.new("char[]", 256)
+    buf = _scratch.buf
     lo = fraction_from_text(_time_text(res, 0, buf))
     hi = fraction_from_text(_time_text(res, 1, buf))
-    flag = ffi.new("int *")
+    flag = _scratch.int_out
     check(lib.pccd_result_time_is_exact(res, flag))
     exact = fraction_from_text(_time_text(res, 2, buf)) if flag[0] else None
-    approx = ffi.new("double *")
+    approx = _scratch.double_out
     check(lib.pccd_result_time_approx(res, approx))
     return ContactTime(lo, hi, exact, approx[0])
 
 
 def _features(res):
-    count = ffi.new("size_t *")
+    count = _scratch.size_out
     check(lib.pccd_result_feature_count(res, count))
-    kind = ffi.new("int *")
-    points = ffi.new("size_t[4]")
+    kind = _scratch.int_out
+    points = _scratch.points
     features = []
     for i in range(count[0]):
         check(lib.pccd_result_feature(res, i, kind, points))
@@ -76,15 +91,19 @@ def _features(res):
 
 def read_result(res):
     """The Result held by a solved pccd_result handle."""
-    out = ffi.new("int *")
+    out = _scratch.int_out
     check(lib.pccd_result_collides(res, out))
     collides = bool(out[0])
     check(lib.pccd_result_stage(res, out))
     if out[0] not in STAGES:
         raise InternalError(f"the result reports the unknown stage {out[0]}")
     stage = STAGES[out[0]]
-    first = _contact_time(res) if collides else None
-    return Result(collides, first, _features(res), stage)
+    if not collides:
+        return _NO_CONTACT[stage]  # immutable, so one shared object per stage
+    return Result(collides, _contact_time(res), _features(res), stage)
+
+
+_NO_CONTACT = {stage: Result(False, None, (), stage) for stage in STAGES.values()}
 
 
 def result_json(result):

@@ -81,6 +81,38 @@ def _set_coord(query, code, i, axis, texts, place):
     raise error_for(rc, message, place)
 
 
+class _Configs(threading.local):
+    """Per-thread cache of configs by (tolerance, want_time, want_exact), and one
+    reused result handle (read completely before any other call can reuse it)."""
+
+    def __init__(self):
+        self.cache = {}
+        self.res = None
+
+
+_configs = _Configs()
+
+
+def _cached_config(time_tolerance, want_time, want_exact, place):
+    try:
+        key = (type(time_tolerance), time_tolerance, bool(want_time), bool(want_exact))
+        hit = _configs.cache.get(key)
+    except TypeError:  # an unhashable tolerance: no caching
+        return _config(time_tolerance, want_time, want_exact, place)
+    if hit is None:
+        hit = _config(time_tolerance, want_time, want_exact, place)
+        if len(_configs.cache) > 32:
+            _configs.cache.clear()
+        _configs.cache[key] = hit
+    return hit
+
+
+def _shared_result():
+    if _configs.res is None:
+        _configs.res = _new("result")
+    return _configs.res
+
+
 def _config(time_tolerance, want_time, want_exact, place):
     cfg = ffi.new("pccd_config *")
     check(lib.pccd_config_init(cfg))
@@ -164,8 +196,8 @@ def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
     code = kind_code(kind, linear=True)
     a0 = linear_coords(p_t0, "p_t0", _NPOINTS[kind])
     a1 = linear_coords(p_t1, "p_t1", _NPOINTS[kind])
-    cfg, keep = _config(time_tolerance, want_time, want_exact, "time_tolerance")
-    res = _new("result")
+    cfg, _keep = _cached_config(time_tolerance, want_time, want_exact, "time_tolerance")
+    res = _shared_result()
     rc = lib.pccd_solve_linear_d(code, ffi.from_buffer("double[]", a0),
                                  ffi.from_buffer("double[]", a1), cfg, res)
     if rc != 0:
