@@ -76,3 +76,43 @@ int pccd_result_time_is_exact(const pccd_result *res, int *exact);
 int pccd_result_time_approx(const pccd_result *res, double *t);
 int pccd_result_feature_count(const pccd_result *res, size_t *count);
 int pccd_result_feature(const pccd_result *res, size_t i, int *kind, size_t points[4]);
+
+/* ---- Rigid motions ---- */
+typedef struct pccd_motion pccd_motion;
+typedef enum pccd_pose_side {
+  PCCD_POSE_BODY = ...,
+  PCCD_POSE_WORLD = ...
+} pccd_pose_side;
+int pccd_motion_new(pccd_motion **out);
+void pccd_motion_free(pccd_motion *m);
+int pccd_motion_copy(pccd_motion **out, const pccd_motion *m);
+int pccd_motion_set_translation_d(pccd_motion *m, size_t axis, const double *coeffs, size_t n);
+int pccd_motion_set_translation_s(pccd_motion *m, size_t axis, const char *const *coeffs,
+                                  size_t n);
+int pccd_motion_set_rotation_d(pccd_motion *m, size_t component, const double *coeffs,
+                               size_t n);
+int pccd_motion_set_rotation_s(pccd_motion *m, size_t component, const char *const *coeffs,
+                               size_t n);
+int pccd_motion_set_linear_translation_d(pccd_motion *m, const double p0[3],
+                                         const double p1[3]);
+int pccd_motion_set_linear_translation_s(pccd_motion *m, const char *const p0[3],
+                                         const char *const p1[3]);
+int pccd_motion_set_bezier_translation_d(pccd_motion *m, const double ctrl[12]);
+int pccd_motion_set_bezier_translation_s(pccd_motion *m, const char *const ctrl[12]);
+int pccd_motion_set_hermite_translation_d(pccd_motion *m, const double p0[3],
+                                          const double v0[3], const double p1[3],
+                                          const double v1[3]);
+int pccd_motion_set_hermite_translation_s(pccd_motion *m, const char *const p0[3],
+                                          const char *const v0[3], const char *const p1[3],
+                                          const char *const v1[3]);
+int pccd_motion_set_axis_rotation_s(pccd_motion *m, const char *const axis[3],
+                                    const char *const center[3], const char *tau0,
+                                    const char *tau1);
+int pccd_motion_set_screw_s(pccd_motion *m, const char *const axis[3],
+                            const char *const center[3], const char *tau0, const char *tau1,
+                            const char *advance);
+int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *const quat[4],
+                               const char *const offset[3]);
+int pccd_motion_validate(const pccd_motion *m);
+int pccd_motion_position_s(const pccd_motion *m, const char *const p[3], const char *t,
+                           char *buf, size_t cap, size_t *needed);

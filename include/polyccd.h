@@ -183,6 +183,143 @@ PCCD_API int pccd_result_feature_count(const pccd_result *res, size_t *count);
 PCCD_API int pccd_result_feature(const pccd_result *res, size_t i, int *kind,
                                  size_t points[4]);
 
+/* ---- Rigid motions ---- */
+
+/* A rigid motion over t in [0, 1] (formats.md, MOTION; the paper, section 2): a body
+ * point p (body coordinates) is at
+ *     x(t) = R(r(t)) p + o(t),
+ * where o(t) is the translation (the path of the body origin) and r(t) = w + x i + y j
+ * + z k the rotation quaternion, polynomials of t with rational coefficients. r need
+ * not have unit length: R(r) is the rotation by r/|r|,
+ *     R(r) = ((w^2 - |v|^2) I + 2 v v^T + 2 w [v]x) / (w^2 + |v|^2),  v = (x, y, z),
+ * the rotation by the angle 2 atan(|v| / w) about v (right-handed). Every position is
+ * an exact rational function of t. A motion whose r vanishes somewhere on [0, 1] is
+ * invalid (pccd_motion_validate); the setters do not check it, so that r can be built
+ * one component at a time.
+ *
+ * Poses composed in (pccd_motion_compose_pose_s) keep x(t) a rational function of t,
+ * but the path of the body origin may then no longer be a polynomial; see there. */
+typedef struct pccd_motion pccd_motion;
+
+/* Which side pccd_motion_compose_pose_s composes a pose on. */
+typedef enum pccd_pose_side {
+  PCCD_POSE_BODY = 0, /* x'(t) = M(R_q p + offset): the pose acts first, in body coordinates */
+  PCCD_POSE_WORLD = 1 /* x'(t) = R_q M(p) + offset: the pose acts last, on world positions */
+} pccd_pose_side;
+
+/* Creates the stationary motion (identity: o = 0, r = 1). PCCD_EINVAL when out is NULL.
+ * Release with pccd_motion_free; pccd_motion_free(NULL) does nothing. */
+PCCD_API int pccd_motion_new(pccd_motion **out);
+PCCD_API void pccd_motion_free(pccd_motion *m);
+
+/* Creates an independent copy of m in *out. PCCD_EINVAL when out or m is NULL. */
+PCCD_API int pccd_motion_copy(pccd_motion **out, const pccd_motion *m);
+
+/* Sets coordinate `axis` (0 = x, 1 = y, 2 = z) of the translation o(t) to the
+ * polynomial coeffs[0] + coeffs[1] t + ... + coeffs[n-1] t^(n-1) (n == 0: zero), and
+ * keeps the rotation. Afterwards that coordinate of the body origin's path is exactly
+ * this polynomial, even when a body-side pose with an offset was composed in before.
+ * PCCD_EINVAL: m NULL, axis > 2, NULL coeffs with n > 0, non-finite double, or a string
+ * that is not a number (the message names the coefficient, e.g. "translation y
+ * coefficient 2"); PCCD_ELIMIT: degree above PCCD_MAX_TRAJ_DEGREE, or a number beyond
+ * the text limits. On error the motion is unchanged. */
+PCCD_API int pccd_motion_set_translation_d(pccd_motion *m, size_t axis, const double *coeffs,
+                                           size_t n);
+PCCD_API int pccd_motion_set_translation_s(pccd_motion *m, size_t axis,
+                                           const char *const *coeffs, size_t n);
+
+/* Sets component `component` (0 = w, 1 = x, 2 = y, 3 = z) of the rotation quaternion
+ * r(t) to the polynomial coeffs[0..n-1] (ascending powers; n == 0: zero) and keeps the
+ * translation o(t). Errors as pccd_motion_set_translation_d (the message names e.g.
+ * "rotation z coefficient 0"), and PCCD_ESTATE when a body-side pose with a nonzero
+ * offset was composed in: that offset turns with the old r, so the body origin's path
+ * is no longer a polynomial to keep (set the rotation first, then compose). */
+PCCD_API int pccd_motion_set_rotation_d(pccd_motion *m, size_t component, const double *coeffs,
+                                        size_t n);
+PCCD_API int pccd_motion_set_rotation_s(pccd_motion *m, size_t component,
+                                        const char *const *coeffs, size_t n);
+
+/* Translation paths: set all three coordinates of o(t) and keep the rotation (as
+ * pccd_motion_set_translation_d for each axis). Degree <= 3 each.
+ *  - linear:  p0 + (p1 - p0) t  (p0 at t = 0, p1 at t = 1).
+ *  - bezier:  the cubic Bezier curve of the control points ctrl[0..2], ctrl[3..5],
+ *             ctrl[6..8], ctrl[9..11] (c0..c3): through c0 at t = 0 and c3 at t = 1,
+ *             velocities 3 (c1 - c0) and 3 (c3 - c2) there.
+ *  - hermite: the cubic with position p0 and velocity v0 at t = 0, p1 and v1 at t = 1.
+ * PCCD_EINVAL: a NULL pointer, a non-finite double, or an unparsable string (the
+ * message names it, e.g. "ctrl[7]" or "v1[2]"); PCCD_ELIMIT: a number beyond the text
+ * limits. On error the motion is unchanged. */
+PCCD_API int pccd_motion_set_linear_translation_d(pccd_motion *m, const double p0[3],
+                                                  const double p1[3]);
+PCCD_API int pccd_motion_set_linear_translation_s(pccd_motion *m, const char *const p0[3],
+                                                  const char *const p1[3]);
+PCCD_API int pccd_motion_set_bezier_translation_d(pccd_motion *m, const double ctrl[12]);
+PCCD_API int pccd_motion_set_bezier_translation_s(pccd_motion *m, const char *const ctrl[12]);
+PCCD_API int pccd_motion_set_hermite_translation_d(pccd_motion *m, const double p0[3],
+                                                   const double v0[3], const double p1[3],
+                                                   const double v1[3]);
+PCCD_API int pccd_motion_set_hermite_translation_s(pccd_motion *m, const char *const p0[3],
+                                                   const char *const v0[3],
+                                                   const char *const p1[3],
+                                                   const char *const v1[3]);
+
+/* Replaces the whole motion by the rotation about the fixed axis through `center` with
+ * direction `axis` (nonzero, any length), by linear interpolation of the quaternions
+ * (1, tau0 axis) at t = 0 and (1, tau1 axis) at t = 1 (the paper, appendix A):
+ *     r(t) = 1 + tau(t) (axis_x i + axis_y j + axis_z k),  tau(t) = tau0 + (tau1 - tau0) t.
+ * At time t the body is turned about the axis by the angle theta(t) with
+ * tan(theta(t) / 2) = tau(t) |axis| (right-handed; |theta| < pi), which is exact even
+ * when |axis| is irrational. Every body point on the axis line stays where it is:
+ * x(t) = R(r(t)) (p - center) + center. r never vanishes, so the motion is valid.
+ * All inputs are rational strings. PCCD_EINVAL: a NULL pointer, an unparsable number
+ * (named: "axis[1]", "center[0]", "tau0", "tau1"), or axis = (0, 0, 0); PCCD_ELIMIT: a
+ * number beyond the text limits. On error the motion is unchanged. */
+PCCD_API int pccd_motion_set_axis_rotation_s(pccd_motion *m, const char *const axis[3],
+                                             const char *const center[3], const char *tau0,
+                                             const char *tau1);
+
+/* The screw motion: pccd_motion_set_axis_rotation_s plus the translation
+ * advance * t * axis along the axis, so the body advances by advance * axis over
+ * [0, 1] (a distance |advance| |axis|; advance is the distance when |axis| = 1).
+ * Errors as pccd_motion_set_axis_rotation_s ("advance" names a bad advance). */
+PCCD_API int pccd_motion_set_screw_s(pccd_motion *m, const char *const axis[3],
+                                     const char *const center[3], const char *tau0,
+                                     const char *tau1, const char *advance);
+
+/* Composes m with the constant pose (R_q, offset), where R_q = R(q) is the rotation of
+ * the nonzero rational quaternion q = quat[0] + quat[1] i + quat[2] j + quat[3] k (any
+ * length) and offset a rational vector:
+ *   side PCCD_POSE_BODY  (0): x'(t) = M(R_q p + offset)    (e.g. a mesh placed in its body)
+ *   side PCCD_POSE_WORLD (1): x'(t) = R_q M(p) + offset    (e.g. a change of world frame)
+ * where M(p) is the position x(t) of p under m before the call. The result is exact and
+ * has the same degrees (the rotation becomes r q or q r). After a body-side pose with a
+ * nonzero offset, the body origin's path is R(r(t)) offset + o(t), a rational function
+ * of t; pccd_motion_set_rotation_* then returns PCCD_ESTATE.
+ * PCCD_EINVAL: a NULL pointer, side not 0 or 1, an unparsable number ("quat[2]",
+ * "offset[0]"), or q = 0; PCCD_ELIMIT: a number beyond the text limits. On error the
+ * motion is unchanged. */
+PCCD_API int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *const quat[4],
+                                        const char *const offset[3]);
+
+/* Decides exactly whether r(t) vanishes for some t in the CLOSED [0, 1], i.e. whether
+ * w, x, y, z have a common root there (r with no common root is valid even when each
+ * component has roots). PCCD_OK when the motion is valid. PCCD_EINVAL when r vanishes,
+ * with the first such time in the message: exactly ("t = 1/2", including t = 0 and
+ * t = 1) when it is rational, else an enclosure "lo < t < hi" of width <= 1e-12 when
+ * it is irrational; also PCCD_EINVAL when r is the zero polynomial or m is NULL. */
+PCCD_API int pccd_motion_validate(const pccd_motion *m);
+
+/* The exact position x(t) of the body point p = (p[0], p[1], p[2]) at time t, written
+ * to buf as "x y z": three exact rationals ("p/q", or "p" for integers) separated by
+ * single spaces, NUL-terminated. p and t are rational strings; t must be in [0, 1].
+ * *needed (when needed != NULL) receives the size in bytes including the NUL; when
+ * cap is too small (or buf is NULL) the call returns PCCD_ERANGE and leaves buf
+ * untouched. PCCD_EINVAL: m, p or an entry NULL, an unparsable number ("p[1]", "t"),
+ * t outside [0, 1], or r(t) = 0 at this t (the message says so); PCCD_ELIMIT: a
+ * number beyond the text limits. */
+PCCD_API int pccd_motion_position_s(const pccd_motion *m, const char *const p[3], const char *t,
+                                    char *buf, size_t cap, size_t *needed);
+
 #ifdef __cplusplus
 }
 #endif

@@ -32,19 +32,21 @@ if ! command -v valgrind >/dev/null; then
   echo "valgrind not installed (make deps installs it)"; exit 1
 fi
 
-# ---- 1. the C test -------------------------------------------------------------------
-log="$BUILD/valgrind-test_api.log"
-echo "== valgrind $BUILD/test_api (log: $log)"
-"${VG[@]}" --log-file="$log" "$BUILD/test_api" > "$BUILD/valgrind-test_api.out"
-rc=$?
-tail -n 1 "$BUILD/valgrind-test_api.out"
-grep -E 'ERROR SUMMARY|definitely lost:|indirectly lost:|All heap blocks were freed' "$log" | sed 's/^==[0-9]*== /   /'
-if [ $rc -ne 0 ]; then
-  echo "FAIL: test_api under valgrind exited with $rc (1 = a valgrind error or a failed check)"
-  status=1
-else
-  echo "ok: test_api is valgrind-clean"
-fi
+# ---- 1. the C tests ------------------------------------------------------------------
+for prog in test_api test_motion; do
+  log="$BUILD/valgrind-$prog.log"
+  echo "== valgrind $BUILD/$prog (log: $log)"
+  "${VG[@]}" --log-file="$log" "$BUILD/$prog" > "$BUILD/valgrind-$prog.out"
+  rc=$?
+  tail -n 1 "$BUILD/valgrind-$prog.out"
+  grep -E 'ERROR SUMMARY|definitely lost:|indirectly lost:|All heap blocks were freed' "$log" | sed 's/^==[0-9]*== /   /'
+  if [ $rc -ne 0 ]; then
+    echo "FAIL: $prog under valgrind exited with $rc (1 = a valgrind error or a failed check)"
+    status=1
+  else
+    echo "ok: $prog is valgrind-clean"
+  fi
+done
 
 # ---- 2. the corpus (and some benchmark queries) through the Python CLI ----------------
 judge_python_log() { # $1 = valgrind log; prints a summary; returns 1 on polyccd errors

@@ -1,0 +1,203 @@
+"""Motion: an exact rigid motion over t in [0, 1], a thin wrapper of pccd_motion.
+
+No geometry here: every number is converted exactly (see _numbers) and every motion is
+built, composed and evaluated by the C library. A Motion never changes after it is
+built; compose() returns a new one. Errors name the place of a bad input in the
+caller's terms ("translation[1][2]", "ctrl[3][0]", "tau0"), from the C message.
+"""
+import re
+
+from ._errors import InputError, error_for, last_error
+from ._numbers import fraction_from_text, number_text, show
+from ._pccd import ffi, lib
+from ._solve import _items, _texts
+
+# The place at the start of a C message about a motion: "pccd_fn: <place>: <what>".
+_C_PLACE = re.compile(r"pccd_\w+: ((translation|rotation) ([wxyz])(?: coefficient (\d+))?"
+                      r"|(p0|p1|v0|v1|ctrl|axis|center|quat|offset|p)\[(\d+)\]"
+                      r"|tau0|tau1|advance|t): (.*)", re.DOTALL)
+_COMPONENT = {"translation": "xyz", "rotation": "wxyz"}
+_SIDES = {"body": lib.PCCD_POSE_BODY, "world": lib.PCCD_POSE_WORLD}
+
+
+def _python_place(match):
+    """The caller's name of the place a C message names."""
+    if match.group(2):  # a coordinate polynomial: translation[axis][i], rotation[k][i]
+        place = f"{match.group(2)}[{_COMPONENT[match.group(2)].index(match.group(3))}]"
+        return place + (f"[{match.group(4)}]" if match.group(4) else "")
+    if match.group(5) == "ctrl":  # C takes 12 numbers, Python 4 points of 3
+        k = int(match.group(6))
+        return f"ctrl[{k // 3}][{k % 3}]"
+    return match.group(1)
+
+
+def _check(rc, default_place=None):
+    """Raises the exception of a negative status, placed in the caller's terms when the
+    C message names a place (or at default_place when it names none)."""
+    if rc == 0:
+        return
+    message = last_error()
+    match = _C_PLACE.fullmatch(message)
+    if match:
+        raise error_for(rc, match.group(7), _python_place(match))
+    raise error_for(rc, message, default_place)
+
+
+def _new_handle():
+    out = ffi.new("pccd_motion **")
+    _check(lib.pccd_motion_new(out))
+    return ffi.gc(out[0], lib.pccd_motion_free)
+
+
+def _copy_handle(handle):
+    out = ffi.new("pccd_motion **")
+    _check(lib.pccd_motion_copy(out, handle))
+    return ffi.gc(out[0], lib.pccd_motion_free)
+
+
+def _vector(value, place, size=3):
+    """The exact number texts of a vector of `size` numbers, or InputError."""
+    items = _items(value, place, f"{size} numbers")
+    if len(items) != size:
+        raise InputError(f"{place}: expected {size} numbers, got {len(items)}")
+    return [number_text(x, f"{place}[{i}]") for i, x in enumerate(items)]
+
+
+def _polys(value, place, count, names):
+    """count coefficient lists (each ascending powers of t) as lists of number texts."""
+    lists = _items(value, place, f"{count} coefficient lists [{names}]")
+    if len(lists) != count:
+        raise InputError(f"{place}: expected {count} coefficient lists [{names}], "
+                         f"got {len(lists)}")
+    out = []
+    for k, coeffs in enumerate(lists):
+        items = _items(coeffs, f"{place}[{k}]", "a list of polynomial coefficients")
+        out.append([number_text(c, f"{place}[{k}][{i}]") for i, c in enumerate(items)])
+    return out
+
+
+def _number(value, place):
+    if isinstance(value, (list, tuple, dict)):
+        raise InputError(f"{place}: expected a number, got {show(value)}")
+    return ffi.new("char[]", number_text(value, place).encode("utf-8", "replace"))
+
+
+class Motion:
+    """An exact rigid motion: body point p is at R(r(t)) p + o(t) for t in [0, 1]
+    (formats.md, MOTION). See docs/python-api.md, "Motions"."""
+
+    __slots__ = ("_handle",)
+
+    def __init__(self, translation=None, rotation=None):
+        """translation: [xs, ys, zs] and rotation: [ws, xs, ys, zs], coefficient lists in
+        ascending powers of t (omitted: zero translation, identity rotation)."""
+        handle = _new_handle()
+        if translation is not None:
+            for axis, texts in enumerate(_polys(translation, "translation", 3, "xs, ys, zs")):
+                array, _keep = _texts(texts)
+                _check(lib.pccd_motion_set_translation_s(handle, axis, array, len(texts)))
+        if rotation is not None:
+            for c, texts in enumerate(_polys(rotation, "rotation", 4, "ws, xs, ys, zs")):
+                array, _keep = _texts(texts)
+                _check(lib.pccd_motion_set_rotation_s(handle, c, array, len(texts)))
+        object.__setattr__(self, "_handle", handle)
+
+    def __setattr__(self, name, value):
+        raise AttributeError("a Motion cannot be changed; compose() returns a new one")
+
+    def __copy__(self):
+        return self  # immutable
+
+    def __deepcopy__(self, memo):
+        return self
+
+    @classmethod
+    def _wrap(cls, handle):
+        motion = cls.__new__(cls)
+        object.__setattr__(motion, "_handle", handle)
+        return motion
+
+    @classmethod
+    def _built(cls, setter, *arrays, default_place=None):
+        """A new motion from one C setter taking (const char *[]) arrays / strings."""
+        handle = _new_handle()
+        _check(setter(handle, *arrays), default_place)
+        return cls._wrap(handle)
+
+    @classmethod
+    def translation(cls, coeffs_xyz):
+        """A pure translation: [xs, ys, zs], ascending powers of t."""
+        return cls(translation=coeffs_xyz)
+
+    @classmethod
+    def linear(cls, p0, p1):
+        """A translation moving linearly from p0 (t = 0) to p1 (t = 1)."""
+        a0, k0 = _texts(_vector(p0, "p0"))
+        a1, k1 = _texts(_vector(p1, "p1"))
+        return cls._built(lib.pccd_motion_set_linear_translation_s, a0, a1)
+
+    @classmethod
+    def bezier(cls, ctrl):
+        """The cubic Bezier translation of 4 control points [[x, y, z], ...] (through
+        ctrl[0] at t = 0 and ctrl[3] at t = 1)."""
+        points = _items(ctrl, "ctrl", "4 control points")
+        if len(points) != 4:
+            raise InputError(f"ctrl: expected 4 control points, got {len(points)}")
+        texts = [x for i, point in enumerate(points) for x in _vector(point, f"ctrl[{i}]")]
+        array, _keep = _texts(texts)
+        return cls._built(lib.pccd_motion_set_bezier_translation_s, array)
+
+    @classmethod
+    def hermite(cls, p0, v0, p1, v1):
+        """The cubic Hermite translation: position p0, velocity v0 at t = 0; p1, v1 at 1."""
+        arrays = [_texts(_vector(v, name))
+                  for v, name in ((p0, "p0"), (v0, "v0"), (p1, "p1"), (v1, "v1"))]
+        return cls._built(lib.pccd_motion_set_hermite_translation_s, *(a for a, _ in arrays))
+
+    @classmethod
+    def axis_rotation(cls, axis, center, tau0, tau1):
+        """Rotation about the fixed axis through center (linear quaternion interpolation
+        (1, tau0 axis) -> (1, tau1 axis)); tan(angle(t) / 2) = tau(t) |axis|."""
+        a, ka = _texts(_vector(axis, "axis"))
+        c, kc = _texts(_vector(center, "center"))
+        return cls._built(lib.pccd_motion_set_axis_rotation_s, a, c, _number(tau0, "tau0"),
+                          _number(tau1, "tau1"), default_place="axis")
+
+    @classmethod
+    def screw(cls, axis, center, tau0, tau1, advance):
+        """axis_rotation plus the translation advance * t * axis along the axis."""
+        a, ka = _texts(_vector(axis, "axis"))
+        c, kc = _texts(_vector(center, "center"))
+        return cls._built(lib.pccd_motion_set_screw_s, a, c, _number(tau0, "tau0"),
+                          _number(tau1, "tau1"), _number(advance, "advance"),
+                          default_place="axis")
+
+    def compose(self, quat, offset, side="body"):
+        """A new motion: this one composed with the constant pose (R(quat), offset).
+        side="body": x'(t) = M(R p + offset); side="world": x'(t) = R M(p) + offset."""
+        if not isinstance(side, str) or side not in _SIDES:
+            raise InputError(f'side: {show(side)} is not "body" or "world"')
+        q, kq = _texts(_vector(quat, "quat", 4))
+        o, ko = _texts(_vector(offset, "offset"))
+        handle = _copy_handle(self._handle)
+        _check(lib.pccd_motion_compose_pose_s(handle, _SIDES[side], q, o), "quat")
+        return Motion._wrap(handle)
+
+    def validate(self):
+        """Returns self when r(t) vanishes nowhere on [0, 1]; else InputError with the
+        first vanishing time (exact, or an enclosure when irrational)."""
+        _check(lib.pccd_motion_validate(self._handle))
+        return self
+
+    def position(self, p, t):
+        """The exact position of body point p at time t in [0, 1]: 3 Fractions."""
+        point, _keep = _texts(_vector(p, "p"))
+        time = _number(t, "t")
+        needed = ffi.new("size_t *")
+        buf = ffi.new("char[]", 256)
+        rc = lib.pccd_motion_position_s(self._handle, point, time, buf, 256, needed)
+        if rc == lib.PCCD_ERANGE:
+            buf = ffi.new("char[]", needed[0])
+            rc = lib.pccd_motion_position_s(self._handle, point, time, buf, needed[0], needed)
+        _check(rc)
+        return tuple(fraction_from_text(x) for x in ffi.string(buf).decode().split(" "))

@@ -1,0 +1,156 @@
+#include "motion/rigid_motion.h"
+
+#include <utility>
+#include <vector>
+
+#include "poly/earliest.h"
+#include "poly/gcd.h"
+#include "poly/rational_root.h"
+
+namespace pccd::motion {
+
+using arith::Input_error;
+using arith::Rational;
+using V3 = Vec3p<Rational>;
+
+namespace {
+
+V3 add(const V3 &a, const V3 &b) { return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}}; }
+V3 scale(const Poly_q &s, const V3 &a) { return {{s * a[0], s * a[1], s * a[2]}}; }
+V3 scale(const Rational &s, const V3 &a) { return {{s * a[0], s * a[1], s * a[2]}}; }
+V3 constant(const Vec3_q &p) {
+  return {{Poly_q::constant(p[0]), Poly_q::constant(p[1]), Poly_q::constant(p[2])}};
+}
+
+Rational norm2(const Quat_q &q) { return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]; }
+
+void require_nonzero(const Quat_q &q, const char *what) {
+  if (sgn(norm2(q)) == 0) throw Input_error(std::string(what) + " is the zero quaternion");
+}
+
+}  // namespace
+
+void Rigid_motion::set_translation(int axis, Poly_q f) {
+  o[axis] = std::move(f);
+  b[axis] = Poly_q();
+}
+
+void Rigid_motion::set_translation(const V3 &path) {
+  o = path;
+  b = V3();
+}
+
+bool Rigid_motion::has_body_offset() const {
+  return !(b[0].c.empty() && b[1].c.empty() && b[2].c.empty());
+}
+
+void Rigid_motion::set_rotation(int c, Poly_q f) {
+  if (has_body_offset())
+    throw arith::Internal_error("set_rotation on a motion with a body-side offset");
+  r[c] = std::move(f);
+}
+
+Poly_q Rigid_motion::denominator() const { return quat_norm2(r); }
+
+V3 Rigid_motion::offset_numerator() const { return add(b, scale(denominator(), o)); }
+
+Homogeneous_traj Rigid_motion::point_trajectory(const Vec3_q &p) const {
+  Homogeneous_traj h;
+  h.W = denominator();
+  h.X = add(mat_vec(rotation_numerator(r), p), add(b, scale(h.W, o)));
+  return h;
+}
+
+Vec3_q Rigid_motion::position(const Vec3_q &p, const Rational &t) const {
+  if (sgn(t) < 0 || t > 1)
+    throw Input_error("t = " + arith::to_string(t) + " is outside [0, 1]");
+  // Evaluate r first: Rn(r(t)) = Rn(r)(t) since Rn is a polynomial map of r.
+  Quat_q rt{r[0].eval(t), r[1].eval(t), r[2].eval(t), r[3].eval(t)};
+  const Rational W = norm2(rt);
+  if (sgn(W) == 0)
+    throw Input_error("the rotation quaternion r(t) vanishes at t = " + arith::to_string(t));
+  const Mat3_poly Rn = rotation_numerator(quat_constant(rt));
+  Vec3_q x;
+  for (int i = 0; i < 3; ++i) {
+    Rational num = b[i].eval(t);
+    for (int j = 0; j < 3; ++j) num += Rn[i][j].eval(t) * p[j];
+    x[i] = num / W + o[i].eval(t);
+  }
+  return x;
+}
+
+// r(t) = 0 exactly when the four components share the root t, i.e. when t is a root of
+// g = gcd(w, x, y, z) (a common root of polynomials over Q is a root of their gcd, and
+// conversely). The decision is exact: g(0) and g(1) are evaluated, and the real roots
+// of g in the open (0, 1) are counted (poly::count_roots). The first root is then
+// enclosed by bisection on exact counts (poly::earliest_contact, width <= 1e-12) and
+// tested for rationality (poly::rational_first_contact: a rational root p/q of the
+// square-free part F has q | lc(F)).
+Vanishing Rigid_motion::vanishing() const {
+  Vanishing v;
+  if (quat_is_zero(r)) {
+    v.vanishes = v.identically = true;
+    return v;
+  }
+  Poly_q g = poly::gcd(poly::gcd(r[0], r[1]), poly::gcd(r[2], r[3]));
+  if (g.degree() < 1) return v;  // a nonzero constant gcd: no common root anywhere
+  const Rational zero(0), one(1);
+  const bool at0 = sgn(g.eval(zero)) == 0;
+  const bool inside = !at0 && poly::count_roots(g, {}, zero, one) > 0;
+  const bool at1 = sgn(g.eval(one)) == 0;
+  if (!(at0 || inside || at1)) return v;
+  v.vanishes = true;
+  if (!inside) {  // the first zero is t = 0, or t = 1 with none before it
+    v.exact = true;
+    v.lo = v.hi = at0 ? zero : one;
+    return v;
+  }
+  poly::System<Rational> s;
+  s.f = g;
+  const std::vector<poly::System<Rational>> sys{s};
+  poly::Search_result<Rational> e = poly::earliest_contact(sys, poly::Search_options());
+  if (!e.found) throw arith::Internal_error("vanishing: a counted root was not found");
+  v.lo = e.lo;
+  v.hi = e.hi;
+  v.exact = e.exact;
+  if (!v.exact) {  // e.lo < t* <= e.hi, and e.lo is not a root
+    poly::Rational_root_result rr = poly::rational_first_contact(sys, {0}, e.lo, e.hi);
+    if (rr.exact) {
+      v.exact = true;
+      v.lo = v.hi = rr.t;
+    }
+  }
+  return v;
+}
+
+std::string describe_vanishing(const Vanishing &v) {
+  if (v.identically) return "the rotation quaternion r(t) is the zero polynomial";
+  std::string where = v.exact ? "t = " + arith::to_string(v.lo)
+                              : "an irrational time t with " + arith::to_string(v.lo) +
+                                    " < t < " + arith::to_string(v.hi);
+  return "the rotation quaternion r(t) = w + x i + y j + z k vanishes at " + where +
+         " (its four components have a common root there, so R(r(t)) is undefined)";
+}
+
+void Rigid_motion::validate() const {
+  Vanishing v = vanishing();
+  if (v.vanishes) throw Input_error(describe_vanishing(v));
+}
+
+void Rigid_motion::compose_body(const Quat_q &q0, const Vec3_q &p0) {
+  require_nonzero(q0, "the pose quaternion");
+  // b' = |q0|^2 (Rn(r) p0 + b), with the old r; then r' = r q0.
+  b = scale(norm2(q0), add(mat_vec(rotation_numerator(r), p0), b));
+  r = quat_mul(r, quat_constant(q0));
+}
+
+void Rigid_motion::compose_world(const Quat_q &q1, const Vec3_q &p1) {
+  require_nonzero(q1, "the pose quaternion");
+  const Mat3_poly R1n = rotation_numerator(quat_constant(q1));  // constant polynomials
+  b = mat_vec(R1n, b);
+  const Rational inv = 1 / norm2(q1);
+  o = add(scale(inv, mat_vec(R1n, o)), constant(p1));
+  r = quat_mul(quat_constant(q1), r);
+}
+
+}  // namespace pccd::motion

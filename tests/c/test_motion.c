@@ -1,0 +1,264 @@
+/*
+ * test_motion.c -- the rigid-motion part of the C API (pccd_motion_*), through motions
+ * whose positions are known by construction, and every error path of that section of
+ * include/polyccd.h.
+ *
+ * Plain C99 (built with -std=c99 -Wall -Wextra -Werror). Prints every failed check with
+ * the case name, then "N passed, N failed"; exit status 0 only when nothing failed.
+ * Every handle is freed (valgrind-clean). The known-answer cases run under each IEEE
+ * rounding mode: answers are exact rationals, so the strings must be identical in every
+ * mode, and no call may change the mode (house style 21, 39).
+ *
+ * Positions are compared as strings: the library prints canonical "p/q" (lowest terms,
+ * positive denominator, "p" for integers), so equal rationals give equal strings. Every
+ * expected value is derived in a comment next to it.
+ */
+#include "polyccd.h"
+
+#include <fenv.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static int g_pass, g_fail, g_mode = FE_TONEAREST;
+static const char *g_case = "";
+
+static int check_(int ok, const char *expr, int line)
+{
+  if (ok) {
+    g_pass++;
+  } else {
+    g_fail++;
+    printf("FAIL line %d [%s, mode %d]: %s\n", line, g_case, g_mode, expr);
+    printf("     last error: %s\n", pccd_last_error());
+  }
+  return ok;
+}
+#define CHECK(cond) check_((cond) ? 1 : 0, #cond, __LINE__)
+/* A call that must succeed and leave the rounding mode alone. */
+#define OK(call) CHECK((call) == PCCD_OK && fegetround() == g_mode)
+/* A call that must fail with status rc and a message containing `word`. */
+#define FAILS(call, rc, word) \
+  CHECK((call) == (rc) && strstr(pccd_last_error(), (word)) != NULL && fegetround() == g_mode)
+
+/* The position of p = (p0, p1, p2) at t equals `want` ("x y z"). */
+static int position_is(const pccd_motion *m, const char *p0, const char *p1, const char *p2,
+                       const char *t, const char *want)
+{
+  const char *p[3];
+  char buf[512];
+  p[0] = p0;
+  p[1] = p1;
+  p[2] = p2;
+  if (pccd_motion_position_s(m, p, t, buf, sizeof buf, NULL) != PCCD_OK) return 0;
+  if (strcmp(buf, want) == 0) return 1;
+  printf("     position at t = %s: got \"%s\", want \"%s\"\n", t, buf, want);
+  return 0;
+}
+#define POS(m, p0, p1, p2, t, want) CHECK(position_is((m), (p0), (p1), (p2), (t), (want)))
+
+static void known_answers(void)
+{
+  pccd_motion *m = NULL, *c = NULL;
+  static const char *const z_axis[3] = {"0", "0", "1"}, *const c100[3] = {"1", "0", "0"};
+
+  g_case = "identity";
+  OK(pccd_motion_new(&m));
+  POS(m, "1", "-2/3", "0.5", "1/2", "1 -2/3 1/2");
+  OK(pccd_motion_validate(m));
+
+  g_case = "polynomial translation and rotation";
+  {
+    /* o = (t, 0, 1 - t^2); r = 1 + t k: at t = 1, r = 1 + k, a quarter turn about z
+     * (tan(theta/2) = 1), so (1, 0, 0) -> (0, 1, 0), plus o(1) = (1, 0, 0). */
+    const double ox[2] = {0, 1}, oz[3] = {1, 0, -1};
+    const char *const rz[2] = {"0", "1"};
+    OK(pccd_motion_set_translation_d(m, 0, ox, 2));
+    OK(pccd_motion_set_translation_d(m, 2, oz, 3));
+    OK(pccd_motion_set_rotation_s(m, 3, rz, 2));
+    POS(m, "1", "0", "0", "1", "1 1 0");
+    /* t = 1/2: r = 1 + k/2, W = 5/4; R(1,0,0) = ((1 - 1/4), 2 * 1/2, 0) / (5/4) = (3/5, 4/5, 0);
+     * o = (1/2, 0, 3/4). */
+    POS(m, "1", "0", "0", "1/2", "11/10 4/5 3/4");
+    OK(pccd_motion_validate(m));
+  }
+
+  g_case = "copy is independent";
+  OK(pccd_motion_copy(&c, m));
+  OK(pccd_motion_set_translation_d(m, 0, NULL, 0)); /* x translation := 0 */
+  POS(c, "1", "0", "0", "1", "1 1 0");
+  POS(m, "1", "0", "0", "1", "0 1 0");
+  pccd_motion_free(c);
+  c = NULL;
+
+  g_case = "linear translation keeps the rotation";
+  {
+    const double p0[3] = {1, 2, 3}, p1[3] = {3, 2, -1};
+    static const char *const s0[3] = {"0", "0", "0"}, *const s1[3] = {"1/3", "0", "0"};
+    OK(pccd_motion_set_linear_translation_d(m, p0, p1));
+    POS(m, "1", "0", "0", "1", "3 3 -1"); /* (0,1,0) + (3,2,-1) */
+    POS(m, "0", "0", "0", "1/2", "2 2 1");
+    OK(pccd_motion_new(&c));
+    OK(pccd_motion_set_linear_translation_s(c, s0, s1));
+    POS(c, "0", "0", "0", "1", "1/3 0 0");
+    pccd_motion_free(c);
+    c = NULL;
+  }
+
+  g_case = "bezier";
+  {
+    /* c0 = 0, c1 = (1,0,0), c2 = (1,1,0), c3 = (0,1,0): B(1/2) = (3 c1 + 3 c2 + c3) / 8
+     * + c0/8 = (6/8, 4/8, 0). */
+    const double ctrl[12] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+    OK(pccd_motion_new(&c));
+    OK(pccd_motion_set_bezier_translation_d(c, ctrl));
+    POS(c, "0", "0", "0", "0", "0 0 0");
+    POS(c, "0", "0", "0", "1", "0 1 0");
+    POS(c, "0", "0", "0", "1/2", "3/4 1/2 0");
+  }
+
+  g_case = "hermite";
+  {
+    /* p0 = 0, v0 = (1,0,0), p1 = (1,1,1), v1 = 0: h(1/2) = v0/8 + p1/2 + 0 = (5/8, 1/2, 1/2)
+     * with the basis h10(1/2) = 1/8, h01(1/2) = 1/2. */
+    const double p0[3] = {0, 0, 0}, v0[3] = {1, 0, 0}, p1[3] = {1, 1, 1}, v1[3] = {0, 0, 0};
+    OK(pccd_motion_set_hermite_translation_d(c, p0, v0, p1, v1));
+    POS(c, "0", "0", "0", "1", "1 1 1");
+    POS(c, "0", "0", "0", "1/2", "5/8 1/2 1/2");
+  }
+
+  g_case = "axis rotation";
+  /* About z through (1, 0, 0), tau 0 -> 1: a quarter turn at t = 1, so (2,0,0) -> (1,1,0);
+   * (1, 0, 7) is on the axis and stays. */
+  OK(pccd_motion_set_axis_rotation_s(c, z_axis, c100, "0", "1"));
+  POS(c, "2", "0", "0", "1", "1 1 0");
+  POS(c, "1", "0", "7", "1/3", "1 0 7");
+  POS(c, "2", "0", "0", "0", "2 0 0");
+  OK(pccd_motion_validate(c));
+
+  g_case = "screw";
+  /* The same plus advance 3 along (0,0,1): z grows by 3 t. */
+  OK(pccd_motion_set_screw_s(c, z_axis, c100, "0", "1", "3"));
+  POS(c, "2", "0", "0", "1", "1 1 3");
+  POS(c, "1", "0", "0", "1/2", "1 0 3/2");
+
+  g_case = "compose";
+  {
+    /* Body side: the pose (quarter turn about z, offset (0,0,1)) first, then the screw
+     * at t = 1: (1,0,0) -> (0,1,1) -> rotate about the axis through (1,0,0): (0,1) - (1,0)
+     * = (-1,1) -> (-1,-1) + (1,0) = (0,-1); z 1 + 3 = 4. */
+    static const char *const q[4] = {"1", "0", "0", "1"}, *const off[3] = {"0", "0", "1"};
+    static const char *const half[4] = {"0", "0", "0", "2"}, *const shift[3] = {"5", "0", "0"};
+    OK(pccd_motion_compose_pose_s(c, PCCD_POSE_BODY, q, off));
+    POS(c, "1", "0", "0", "1", "0 -1 4");
+    /* World side: a half turn about z (q = 2k, any length) takes (0, -1, 4) to
+     * (0, 1, 4), then + (5, 0, 0). */
+    OK(pccd_motion_compose_pose_s(c, PCCD_POSE_WORLD, half, shift));
+    POS(c, "1", "0", "0", "1", "5 1 4");
+  }
+
+  g_case = "validate";
+  {
+    /* w = t - 1/2, x = 2t - 1, y = z = 0: common root 1/2. */
+    const char *const w[2] = {"-1/2", "1"}, *const x[2] = {"-1", "2"};
+    const char *const w2[3] = {"-1/2", "0", "1"};
+    pccd_motion_free(m);
+    OK(pccd_motion_new(&m));
+    OK(pccd_motion_set_rotation_s(m, 0, w, 2));
+    OK(pccd_motion_set_rotation_s(m, 1, x, 2));
+    FAILS(pccd_motion_validate(m), PCCD_EINVAL, "vanishes at t = 1/2");
+    FAILS(pccd_motion_position_s(m, c100, "1/2", NULL, 0, NULL), PCCD_EINVAL, "t = 1/2");
+    /* w = t^2 - 1/2 alone: vanishes at 1/sqrt(2), irrational. */
+    OK(pccd_motion_set_rotation_s(m, 1, NULL, 0));
+    OK(pccd_motion_set_rotation_s(m, 0, w2, 3));
+    FAILS(pccd_motion_validate(m), PCCD_EINVAL, "irrational time t with 7");
+    /* x = 2t - 1 and w = 1: no common root although x has one. */
+    OK(pccd_motion_set_rotation_s(m, 0, c100, 1));
+    OK(pccd_motion_set_rotation_s(m, 1, x, 2));
+    OK(pccd_motion_validate(m));
+    OK(pccd_motion_set_rotation_d(m, 0, NULL, 0));
+    OK(pccd_motion_set_rotation_d(m, 1, NULL, 0));
+    FAILS(pccd_motion_validate(m), PCCD_EINVAL, "zero polynomial");
+  }
+  pccd_motion_free(m);
+  pccd_motion_free(c);
+}
+
+static void error_paths(void)
+{
+  pccd_motion *m = NULL, *c = NULL;
+  const double nan_coeffs[2] = {0, NAN}, big[66] = {0};
+  static const char *const bad[2] = {"0", "1/0"}, *const zero3[3] = {"0", "0", "0"};
+  static const char *const one_q[4] = {"1", "0", "0", "0"}, *const zero_q[4] = {"0", "0", "0", "0"};
+  static const char *const bad3[3] = {"0", "abc", "0"}, *const e1[3] = {"1", "0", "0"};
+  char buf[8] = "keep";
+  size_t needed = 0;
+
+  g_case = "errors";
+  FAILS(pccd_motion_new(NULL), PCCD_EINVAL, "out");
+  pccd_motion_free(NULL);
+  OK(pccd_motion_new(&m));
+  FAILS(pccd_motion_copy(NULL, m), PCCD_EINVAL, "out");
+  c = m; /* must be reset to NULL on error */
+  FAILS(pccd_motion_copy(&c, NULL), PCCD_EINVAL, "motion");
+  CHECK(c == NULL);
+  FAILS(pccd_motion_set_translation_d(NULL, 0, NULL, 0), PCCD_EINVAL, "motion");
+  FAILS(pccd_motion_set_translation_d(m, 3, NULL, 0), PCCD_EINVAL, "axis 3");
+  FAILS(pccd_motion_set_rotation_d(m, 4, NULL, 0), PCCD_EINVAL, "component 4");
+  FAILS(pccd_motion_set_translation_d(m, 0, NULL, 2), PCCD_EINVAL, "coeffs");
+  FAILS(pccd_motion_set_translation_d(m, 1, nan_coeffs, 2), PCCD_EINVAL,
+        "translation y coefficient 1: NaN");
+  FAILS(pccd_motion_set_rotation_s(m, 3, bad, 2), PCCD_EINVAL, "rotation z coefficient 1");
+  FAILS(pccd_motion_set_rotation_d(m, 2, big, 66), PCCD_ELIMIT, "rotation y: degree 65");
+  OK(pccd_motion_set_rotation_d(m, 2, big, 65)); /* degree 64 of zeros: allowed */
+  FAILS(pccd_motion_set_linear_translation_s(m, zero3, bad3), PCCD_EINVAL, "p1[1]");
+  FAILS(pccd_motion_set_hermite_translation_s(m, zero3, zero3, zero3, NULL), PCCD_EINVAL, "v1");
+  FAILS(pccd_motion_set_axis_rotation_s(m, zero3, zero3, "0", "1"), PCCD_EINVAL, "zero vector");
+  FAILS(pccd_motion_set_axis_rotation_s(m, e1, zero3, "0", "x"), PCCD_EINVAL, "tau1");
+  FAILS(pccd_motion_set_screw_s(m, e1, zero3, "0", "1", NULL), PCCD_EINVAL, "advance");
+  FAILS(pccd_motion_compose_pose_s(m, 2, one_q, zero3), PCCD_EINVAL, "side");
+  FAILS(pccd_motion_compose_pose_s(m, PCCD_POSE_WORLD, zero_q, zero3), PCCD_EINVAL, "zero");
+  FAILS(pccd_motion_compose_pose_s(m, PCCD_POSE_BODY, one_q, bad3), PCCD_EINVAL, "offset[1]");
+  /* On error the motion is unchanged: still the identity. */
+  POS(m, "1", "2", "3", "1", "1 2 3");
+  FAILS(pccd_motion_position_s(m, e1, "2", buf, sizeof buf, NULL), PCCD_EINVAL, "outside");
+  FAILS(pccd_motion_position_s(m, bad3, "0", buf, sizeof buf, NULL), PCCD_EINVAL, "p[1]");
+  FAILS(pccd_motion_position_s(m, e1, NULL, buf, sizeof buf, NULL), PCCD_EINVAL, "t is NULL");
+
+  g_case = "ERANGE protocol";
+  /* "1 0 0" needs 6 bytes. */
+  FAILS(pccd_motion_position_s(m, e1, "0", buf, 5, &needed), PCCD_ERANGE, "6 needed");
+  CHECK(needed == 6 && strcmp(buf, "keep") == 0);
+  FAILS(pccd_motion_position_s(m, e1, "0", NULL, 0, &needed), PCCD_ERANGE, "too small");
+  OK(pccd_motion_position_s(m, e1, "0", buf, 6, &needed));
+  CHECK(needed == 6 && strcmp(buf, "1 0 0") == 0);
+
+  g_case = "ESTATE after a body offset";
+  {
+    static const char *const off[3] = {"0", "1", "0"};
+    const double one = 1;
+    OK(pccd_motion_compose_pose_s(m, PCCD_POSE_BODY, one_q, zero3)); /* no offset: fine */
+    OK(pccd_motion_set_rotation_d(m, 0, &one, 1));
+    OK(pccd_motion_compose_pose_s(m, PCCD_POSE_BODY, one_q, off));
+    FAILS(pccd_motion_set_rotation_d(m, 0, &one, 1), PCCD_ESTATE, "body-side pose");
+    /* Setting the translation is still allowed and makes the origin's path (0, 0, 0). */
+    OK(pccd_motion_set_translation_d(m, 1, NULL, 0));
+    POS(m, "0", "0", "0", "1/2", "0 0 0");
+  }
+  pccd_motion_free(m);
+}
+
+int main(void)
+{
+  static const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+  int i;
+  for (i = 0; i < 4; ++i) {
+    g_mode = modes[i];
+    if (!CHECK(fesetround(g_mode) == 0)) continue;
+    known_answers();
+    error_paths();
+  }
+  fesetround(FE_TONEAREST);
+  printf("%d passed, %d failed\n", g_pass, g_fail);
+  return g_fail == 0 ? 0 : 1;
+}
