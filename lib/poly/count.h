@@ -18,6 +18,7 @@
 
 #include "poly/bernstein.h"
 #include "poly/hermite.h"
+#include "poly/gcd.h"
 #include "poly/integer.h"
 #include "poly/subdivide.h"
 
@@ -27,6 +28,9 @@ namespace pccd::poly {
 // separate the simple roots of typical contact polynomials (degree <= 30) on the
 // short intervals of the bisection, small next to one Hermite count at high degree.
 constexpr int kSubdivisionBudget = 48;
+// The exact path's alternative is a Hermite count with big integers at every step of
+// the bisection, far costlier than a few hundred halvings of reduced polynomials.
+constexpr int kExactSubdivisionBudget = 256;
 
 // p / (t - 1) for p(1) = 0 (synthetic division; exact for exact inputs).
 template <class NT>
@@ -72,11 +76,32 @@ long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT
   while (Fo.degree() >= 1 && Poly<NT>::exact_zero(Fo.eval(one))) Fo = deflate_at_one(Fo);
   if (Fo.degree() < 1) return 0;
   if (filters) {
-    std::vector<std::vector<NT>> gbs;
-    for (const Poly<NT> &g : active) gbs.push_back(bernstein_coefficients(g, zero, one));
+    std::vector<std::vector<NT>> gbs, hbs;
+    int budget = kSubdivisionBudget;
+    Poly<NT> Fs = Fo;  // the polynomial subdivided: same distinct roots in (0, 1)
+    if constexpr (exact) {
+      // The square-free part has the same distinct roots, all simple, so every piece
+      // resolves (a double root never shows one sign variation). Only the signs at its
+      // roots matter: reduce each condition modulo it (a positive multiple of the
+      // remainder), and give the subdivision the common factors gcd(Fs, G_i) to
+      // recognise a condition vanishing at a root.
+      Fs = squarefree_primitive(Fo);
+      const Poly<NT> &Fp = Fs;
+      for (const Poly<NT> &g : active) {
+        Poly<NT> r = Fp.degree() >= 1 ? prem_positive(g, Fp) : g;
+        if (r.c.empty()) return 0;  // g vanishes at every root of F in (0, 1)
+        gbs.push_back(bernstein_coefficients(r, zero, one));
+        Poly<NT> h = gcd(Fp, r);
+        hbs.push_back(h.degree() >= 1 ? bernstein_coefficients(h, zero, one) : std::vector<NT>{});
+      }
+      budget = kExactSubdivisionBudget;
+    } else {
+      for (const Poly<NT> &g : active) gbs.push_back(bernstein_coefficients(g, zero, one));
+    }
     long n = 0;
-    Subdivision_counter<NT> sub(kSubdivisionBudget);
-    if (sub.count(bernstein_coefficients(Fo, zero, one), std::move(gbs), n)) return n;
+    Subdivision_counter<NT> sub(budget);
+    if (sub.count(bernstein_coefficients(Fs, zero, one), std::move(gbs), n, std::move(hbs)))
+      return n;
   }
   // g_0 = s (1 - s)
   active.insert(active.begin(), Poly<NT>(std::vector<NT>{zero, one, -one}));

@@ -5,6 +5,11 @@
 //   - a condition with all coefficients <= 0: no qualifying root; all > 0: dropped;
 //   - Descartes' rule (bernstein.h): 0 sign variations of F, no root; 1 variation
 //     and no condition left, exactly one qualifying root;
+//   - with exactly one (simple) root of F in the piece, a condition whose common
+//     factor H_i = gcd(F, G_i) changes sign across the piece vanishes at that root,
+//     so the root does not qualify (H_i divides F, whose only root in the piece is
+//     simple, so H_i has at most that root there; the ends are not roots of F). The
+//     exact path supplies H_i; with intervals there is no gcd and the rule is off;
 //   - otherwise halve the piece (de Casteljau at 1/2) and decide the midpoint itself.
 // Every step is exact (Rational) or certified (Interval). A piece that stays
 // undecided after the budget (a multiple root, a condition vanishing at a root, a
@@ -37,9 +42,12 @@ class Subdivision_counter {
   explicit Subdivision_counter(int budget) : budget_(budget) {}
 
   // Adds to `count` the qualifying roots in the open piece; false when undecided.
-  bool count(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs, long &count) {
+  // hbs: Bernstein coefficients of gcd(F, G_i) for each condition (empty: unknown).
+  bool count(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs, long &count,
+             std::vector<std::vector<NT>> hbs = {}) {
     try {
-      return run(fb, std::move(gbs), count);
+      if (hbs.size() != gbs.size()) hbs.assign(gbs.size(), {});
+      return run(fb, std::move(gbs), std::move(hbs), count);
     } catch (const arith::Uncertain &) {
       return false;
     }
@@ -75,31 +83,44 @@ class Subdivision_counter {
     return v;
   }
 
-  bool run(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs, long &count) {
+  bool run(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs,
+           std::vector<std::vector<NT>> hbs, long &count) {
     if (all_pos(fb) || all_neg(fb)) return true;
-    std::vector<std::vector<NT>> left_g;
-    for (auto &g : gbs) {
-      if (all_nonpos(g)) return true;
-      if (!all_pos(g)) left_g.push_back(std::move(g));
+    std::vector<std::vector<NT>> left_g, left_h;
+    for (size_t i = 0; i < gbs.size(); ++i) {
+      if (all_nonpos(gbs[i])) return true;
+      if (!all_pos(gbs[i])) {
+        left_g.push_back(std::move(gbs[i]));
+        left_h.push_back(std::move(hbs[i]));
+      }
     }
     const int v = variations(fb);
     if (v == 0) return true;
-    if (v == 1 && left_g.empty()) {
-      ++count;
-      return true;
+    if (v == 1) {
+      if (left_g.empty()) {
+        ++count;
+        return true;
+      }
+      for (const auto &h : left_h)
+        if (h.size() >= 2 && arith::sign(h.front()) * arith::sign(h.back()) < 0) return true;
     }
     if (--budget_ < 0) return false;
     std::vector<NT> fl, fr;
     de_casteljau_halves(fb, fl, fr);
     std::vector<std::vector<NT>> gl(left_g.size()), gr(left_g.size());
-    for (size_t i = 0; i < left_g.size(); ++i) de_casteljau_halves(left_g[i], gl[i], gr[i]);
+    std::vector<std::vector<NT>> hl(left_h.size()), hr(left_h.size());
+    for (size_t i = 0; i < left_g.size(); ++i) {
+      de_casteljau_halves(left_g[i], gl[i], gr[i]);
+      if (!left_h[i].empty()) de_casteljau_halves(left_h[i], hl[i], hr[i]);
+    }
     // The midpoint: F(1/2) = fl.back(), G_i(1/2) = gl[i].back().
     if (arith::sign(fl.back()) == 0) {
       bool ok = true;
       for (const auto &g : gl) ok = ok && arith::sign(g.back()) > 0;
       if (ok) ++count;
     }
-    return run(fl, std::move(gl), count) && run(fr, std::move(gr), count);
+    return run(fl, std::move(gl), std::move(hl), count) &&
+           run(fr, std::move(gr), std::move(hr), count);
   }
 
   int budget_;
