@@ -1,6 +1,6 @@
 """polyccd: exact continuous collision detection of moving primitives.
 
-Python bindings of libpolyccd (see docs/python-api.md). Every answer comes from the C
+Python bindings of libpolyccd (see bindings/python/API.md). Every answer comes from the C
 library; this package converts inputs exactly and raises clear errors.
 """
 __version__ = "0.1.0"

@@ -185,7 +185,7 @@ def solve_query(kind, points, radii, time_tolerance, want_time, want_exact,
 def solve(kind, points, radii=None, *, time_tolerance="1e-12", want_time=True,
           want_exact=True):
     """Decides exactly whether the moving primitives touch during [0, 1]; see
-    docs/python-api.md. points: one [xs, ys, zs] per point, ascending powers of t."""
+    bindings/python/API.md. points: one [xs, ys, zs] per point, ascending powers of t."""
     return solve_query(kind, points, radii, time_tolerance, want_time, want_exact)
 
 
