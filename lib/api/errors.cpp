@@ -1,3 +1,4 @@
+#include <cstring>
 #include <string>
 
 #include "api/guard.h"
@@ -16,6 +17,17 @@ void set_error(const char *fn, const std::string &what) {
 }
 
 const char *last_error_text() { return last_error.c_str(); }
+
+int write_text(const char *fn, const std::string &text, char *buf, size_t cap, size_t *needed) {
+  if (needed) *needed = text.size() + 1;
+  if (!buf || cap < text.size() + 1) {
+    set_error(fn, "buffer of " + std::to_string(cap) + " bytes is too small; " +
+                      std::to_string(text.size() + 1) + " needed");
+    return PCCD_ERANGE;
+  }
+  std::memcpy(buf, text.c_str(), text.size() + 1);
+  return PCCD_OK;
+}
 
 }  // namespace pccd::api
 

@@ -52,6 +52,10 @@ inline long raw_kind(const pccd_kind &k) {
   return static_cast<long>(raw);
 }
 
+// Writes text to (buf, cap) with the PCCD_ERANGE protocol of polyccd.h: *needed (when
+// not NULL) gets the size with the NUL; a NULL or short buffer gives PCCD_ERANGE.
+int write_text(const char *fn, const std::string &text, char *buf, size_t cap, size_t *needed);
+
 // Throws Input_error "<what> is NULL" when p is NULL.
 inline void require(const void *p, const char *what) {
   if (!p) throw arith::Input_error(std::string(what) + " is NULL");

@@ -87,17 +87,6 @@ Vec3_q vec_s(const char *const *values, const char *name, size_t first = 0) {
   return v;
 }
 
-// Writes text to (buf, cap) with the PCCD_ERANGE protocol of polyccd.h.
-int write_text(const char *fn, const std::string &text, char *buf, size_t cap, size_t *needed) {
-  if (needed) *needed = text.size() + 1;
-  if (!buf || cap < text.size() + 1) {
-    pccd::api::set_error(fn, "buffer of " + std::to_string(cap) + " bytes is too small; " +
-                                 std::to_string(text.size() + 1) + " needed");
-    return PCCD_ERANGE;
-  }
-  std::memcpy(buf, text.c_str(), text.size() + 1);
-  return PCCD_OK;
-}
 
 }  // namespace
 
@@ -289,7 +278,7 @@ PCCD_API int pccd_motion_position_s(const pccd_motion *m, const char *const p[3]
     const Vec3_q x = m->m.position(vec_s(p, "p"), number_s(t, "t"));
     std::string text;
     for (int i = 0; i < 3; ++i) text += (i ? " " : "") + pccd::arith::to_string(x[i]);
-    return write_text("pccd_motion_position_s", text, buf, cap, needed);
+    return pccd::api::write_text("pccd_motion_position_s", text, buf, cap, needed);
   });
 }
 

@@ -62,16 +62,9 @@ PCCD_API int pccd_result_time(const pccd_result *res, int which, char *buf, size
                                                "(irrational, or want_exact was 0)");
       return PCCD_ESTATE;
     }
-    std::string s = pccd::arith::to_string(which == 0 ? res->r.lo : res->r.hi);
-    if (needed) *needed = s.size() + 1;
-    if (!buf || cap < s.size() + 1) {
-      pccd::api::set_error("pccd_result_time", "buffer of " + std::to_string(cap) +
-                                                   " bytes is too small; " +
-                                                   std::to_string(s.size() + 1) + " needed");
-      return PCCD_ERANGE;
-    }
-    std::memcpy(buf, s.c_str(), s.size() + 1);
-    return PCCD_OK;
+    return pccd::api::write_text("pccd_result_time",
+                                 pccd::arith::to_string(which == 0 ? res->r.lo : res->r.hi), buf,
+                                 cap, needed);
   });
 }
 
