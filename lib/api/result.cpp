@@ -49,7 +49,7 @@ PCCD_API int pccd_result_stage(const pccd_result *res, int *stage) {
 
 PCCD_API int pccd_result_time(const pccd_result *res, int which, char *buf, size_t cap,
                               size_t *needed) {
-  return guard("pccd_result_time", [&] {
+  return guard("pccd_result_time", [&]() -> int {
     PCCD_NEED_SOLVED("pccd_result_time");
     if (which < 0 || which > 2)
       throw Input_error("which is " + std::to_string(which) + "; expected 0 (lo), 1 (hi) or 2 (exact)");
