@@ -10,8 +10,10 @@
 //
 // Before the Tarski queries, exact-or-certified Bernstein tests on [a, b] drop
 // conditions that are positive on the whole interval and answer 0 at once when f has
-// no root there or some condition is <= 0 on all of it; Descartes' rule answers when
-// f has 0 or exactly 1 root in (a, b) and no condition is left.
+// no root there or some condition is <= 0 on all of it; then Bernstein subdivision
+// with Descartes' rule (subdivide.h) usually settles the count. Hermite counting takes
+// the residue: clusters of roots beyond the subdivision budget, and (with intervals)
+// multiple roots or conditions vanishing at a root.
 #pragma once
 #include <type_traits>
 #include <vector>
@@ -86,12 +88,11 @@ long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT
       // remainder), and give the subdivision the common factors gcd(Fs, G_i) to
       // recognise a condition vanishing at a root.
       Fs = squarefree_primitive(Fo);
-      const Poly<NT> &Fp = Fs;
       for (const Poly<NT> &g : active) {
-        Poly<NT> r = Fp.degree() >= 1 ? prem_positive(g, Fp) : g;
+        Poly<NT> r = prem_positive(g, Fs);  // deg Fs >= 1: Fo has degree >= 1 here
         if (r.c.empty()) return 0;  // g vanishes at every root of F in (0, 1)
         gbs.push_back(bernstein_coefficients(r, zero, one));
-        Poly<NT> h = gcd(Fp, r);
+        Poly<NT> h = gcd(Fs, r);
         hbs.push_back(h.degree() >= 1 ? bernstein_coefficients(h, zero, one) : std::vector<NT>{});
       }
       budget = kExactSubdivisionBudget;

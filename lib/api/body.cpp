@@ -1,0 +1,191 @@
+// pccd_body_*: rigid bodies (lib/motion/body.h). Checks the C arguments, converts the
+// numbers exactly, builds the body; validation and edge extraction live in lib/motion.
+// *out is written only with a complete body, so a failed call leaves it NULL.
+#include <string>
+#include <vector>
+
+#include "api/body_handle.h"
+#include "api/guard.h"
+
+using pccd::api::guard;
+using pccd::api::require;
+using pccd::arith::Input_error;
+using pccd::arith::Rational;
+using pccd::motion::Point3_q;
+
+namespace {
+
+std::string place(const char *name, size_t i) {
+  return std::string(name) + "[" + std::to_string(i) + "]";
+}
+
+std::string place(const char *name, size_t i, size_t k) {
+  return place(name, i) + "[" + std::to_string(k) + "]";
+}
+
+// n points from n * 3 doubles / strings; entry (i, k) is named name[i][k].
+std::vector<Point3_q> points_d(const double *values, size_t n, const char *name) {
+  if (n > 0) require(values, name);
+  std::vector<Point3_q> out(n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t k = 0; k < 3; ++k)
+      out[i][k] = pccd::arith::rational_from_double(values[3 * i + k], place(name, i, k));
+  return out;
+}
+
+Rational number_s(const char *text, const std::string &where) {
+  if (!text) throw Input_error(where + " is NULL");
+  return pccd::arith::parse_rational(text, where);
+}
+
+std::vector<Point3_q> points_s(const char *const *values, size_t n, const char *name) {
+  if (n > 0) require(values, name);
+  std::vector<Point3_q> out(n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t k = 0; k < 3; ++k) out[i][k] = number_s(values[3 * i + k], place(name, i, k));
+  return out;
+}
+
+std::vector<pccd::motion::Triangle> triangles_of(const unsigned int *tris, size_t nt) {
+  pccd::motion::check_body_size(nt, "triangles");
+  if (nt > 0) require(tris, "triangles");
+  std::vector<pccd::motion::Triangle> out(nt);
+  for (size_t t = 0; t < nt; ++t)
+    for (size_t k = 0; k < 3; ++k) out[t][k] = tris[3 * t + k];
+  return out;
+}
+
+// The size checks run before any allocation (nv * 3 cannot overflow below the limit).
+int new_mesh(pccd_body **out, std::vector<Point3_q> vertices,
+             std::vector<pccd::motion::Triangle> triangles) {
+  auto body = std::make_unique<pccd_body>();
+  body->mesh = std::make_unique<pccd::motion::Mesh_body>(std::move(vertices),
+                                                         std::move(triangles));
+  *out = body.release();
+  return PCCD_OK;
+}
+
+int new_spheres(pccd_body **out, std::vector<Point3_q> centers, std::vector<Rational> radii) {
+  auto body = std::make_unique<pccd_body>();
+  body->spheres = std::make_unique<pccd::motion::Sphere_body>(std::move(centers),
+                                                              std::move(radii));
+  *out = body.release();
+  return PCCD_OK;
+}
+
+const pccd::motion::Mesh_body &edge_owner(const pccd_body *b, size_t i) {
+  require(b, "body");
+  const size_t n = b->mesh ? b->mesh->edges().size() : 0;
+  if (i >= n)
+    throw Input_error("edge " + std::to_string(i) + " out of range (the body has " +
+                      std::to_string(n) + " edges)");
+  return *b->mesh;
+}
+
+}  // namespace
+
+extern "C" {
+
+PCCD_API int pccd_body_new_mesh_d(pccd_body **out, const double *vertices, size_t nv,
+                                  const unsigned int *triangles, size_t nt) {
+  return guard("pccd_body_new_mesh_d", [&] {
+    require(out, "out");
+    *out = nullptr;
+    pccd::motion::check_body_size(nv, "vertices");
+    auto tris = triangles_of(triangles, nt);
+    return new_mesh(out, points_d(vertices, nv, "vertices"), std::move(tris));
+  });
+}
+
+PCCD_API int pccd_body_new_mesh_s(pccd_body **out, const char *const *vertices, size_t nv,
+                                  const unsigned int *triangles, size_t nt) {
+  return guard("pccd_body_new_mesh_s", [&] {
+    require(out, "out");
+    *out = nullptr;
+    pccd::motion::check_body_size(nv, "vertices");
+    auto tris = triangles_of(triangles, nt);
+    return new_mesh(out, points_s(vertices, nv, "vertices"), std::move(tris));
+  });
+}
+
+PCCD_API int pccd_body_new_spheres_d(pccd_body **out, const double *centers,
+                                     const double *radii, size_t n) {
+  return guard("pccd_body_new_spheres_d", [&] {
+    require(out, "out");
+    *out = nullptr;
+    pccd::motion::check_body_size(n, "spheres");
+    if (n > 0) require(radii, "radii");
+    auto c = points_d(centers, n, "centers");
+    std::vector<Rational> r(n);
+    for (size_t i = 0; i < n; ++i)
+      r[i] = pccd::arith::rational_from_double(radii[i], place("radii", i));
+    return new_spheres(out, std::move(c), std::move(r));
+  });
+}
+
+PCCD_API int pccd_body_new_spheres_s(pccd_body **out, const char *const *centers,
+                                     const char *const *radii, size_t n) {
+  return guard("pccd_body_new_spheres_s", [&] {
+    require(out, "out");
+    *out = nullptr;
+    pccd::motion::check_body_size(n, "spheres");
+    if (n > 0) require(radii, "radii");
+    auto c = points_s(centers, n, "centers");
+    std::vector<Rational> r(n);
+    for (size_t i = 0; i < n; ++i) r[i] = number_s(radii[i], place("radii", i));
+    return new_spheres(out, std::move(c), std::move(r));
+  });
+}
+
+PCCD_API void pccd_body_free(pccd_body *b) { delete b; }
+
+PCCD_API int pccd_body_kind(const pccd_body *b, int *kind) {
+  return guard("pccd_body_kind", [&] {
+    require(b, "body");
+    require(kind, "kind");
+    *kind = b->mesh ? PCCD_BODY_MESH : PCCD_BODY_SPHERES;
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_body_counts(const pccd_body *b, size_t *vertices_or_spheres, size_t *edges,
+                              size_t *triangles) {
+  return guard("pccd_body_counts", [&] {
+    require(b, "body");
+    const auto *m = b->mesh.get();
+    if (vertices_or_spheres)
+      *vertices_or_spheres = m ? m->vertices().size() : b->spheres->centers().size();
+    if (edges) *edges = m ? m->edges().size() : 0;
+    if (triangles) *triangles = m ? m->triangles().size() : 0;
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_body_edge(const pccd_body *b, size_t i, size_t v[2]) {
+  return guard("pccd_body_edge", [&] {
+    const auto &m = edge_owner(b, i);
+    require(v, "v");
+    v[0] = m.edges()[i][0];
+    v[1] = m.edges()[i][1];
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_body_edge_triangles(const pccd_body *b, size_t i, size_t *tris, size_t cap,
+                                      size_t *count) {
+  return guard("pccd_body_edge_triangles", [&] {
+    size_t n = 0;
+    const uint32_t *first = edge_owner(b, i).edge_triangles(i, &n);
+    if (count) *count = n;
+    if (!tris || cap < n) {
+      pccd::api::set_error("pccd_body_edge_triangles",
+                           "tris: room for " + std::to_string(cap) + " triangles, " +
+                               std::to_string(n) + " needed");
+      return PCCD_ERANGE;
+    }
+    for (size_t k = 0; k < n; ++k) tris[k] = first[k];
+    return PCCD_OK;
+  });
+}
+
+}  // extern "C"
