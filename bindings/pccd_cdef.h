@@ -116,3 +116,26 @@ int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *const quat[
 int pccd_motion_validate(const pccd_motion *m);
 int pccd_motion_position_s(const pccd_motion *m, const char *const p[3], const char *t,
                            char *buf, size_t cap, size_t *needed);
+
+/* ---- Bodies ---- */
+typedef struct pccd_body pccd_body;
+typedef enum pccd_body_type {
+  PCCD_BODY_MESH = ...,
+  PCCD_BODY_SPHERES = ...
+} pccd_body_type;
+#define PCCD_MAX_BODY_ELEMENTS ...
+int pccd_body_new_mesh_d(pccd_body **out, const double *vertices, size_t nv,
+                         const unsigned int *triangles, size_t nt);
+int pccd_body_new_mesh_s(pccd_body **out, const char *const *vertices, size_t nv,
+                         const unsigned int *triangles, size_t nt);
+int pccd_body_new_spheres_d(pccd_body **out, const double *centers, const double *radii,
+                            size_t n);
+int pccd_body_new_spheres_s(pccd_body **out, const char *const *centers,
+                            const char *const *radii, size_t n);
+void pccd_body_free(pccd_body *b);
+int pccd_body_kind(const pccd_body *b, int *kind);
+int pccd_body_counts(const pccd_body *b, size_t *vertices_or_spheres, size_t *edges,
+                     size_t *triangles);
+int pccd_body_edge(const pccd_body *b, size_t i, size_t v[2]);
+int pccd_body_edge_triangles(const pccd_body *b, size_t i, size_t *tris, size_t cap,
+                             size_t *count);

@@ -320,6 +320,73 @@ PCCD_API int pccd_motion_validate(const pccd_motion *m);
 PCCD_API int pccd_motion_position_s(const pccd_motion *m, const char *const p[3], const char *t,
                                     char *buf, size_t cap, size_t *needed);
 
+/* ---- Bodies ---- */
+
+/* A rigid body in body coordinates (formats.md, BODY): a triangle mesh or a set of
+ * balls, with exact rational coordinates. A body never changes after it is created; a
+ * pccd_motion moves it. The library copies the inputs.
+ *
+ * Mesh: vertices (nv points) and triangles (nt index triples, 0-based). At least one
+ * triangle; every index < nv. Degenerate triangles are accepted and kept as given
+ * (repeated indices such as (0, 0, 1), collinear or coincident vertices): a triangle is
+ * the closed set its vertices span. Unused vertices are allowed.
+ * The edges of a mesh are derived: every unordered pair {a, b} with a != b that is a
+ * side of some triangle, listed once as (a, b) with a < b, sorted by (a, b). A side
+ * with a repeated index is a point, not an edge.
+ *
+ * Spheres: n >= 1 closed balls, centres and radii > 0 (balls may overlap). */
+typedef struct pccd_body pccd_body;
+
+/* What a body is (pccd_body_kind). Named _type: pccd_body_kind is the query function. */
+typedef enum pccd_body_type {
+  PCCD_BODY_MESH = 0,
+  PCCD_BODY_SPHERES = 1
+} pccd_body_type;
+
+/* Most vertices, triangles or balls of one body (PCCD_ELIMIT beyond). */
+#define PCCD_MAX_BODY_ELEMENTS 50000000
+
+/* Creates a mesh body. vertices holds nv * 3 numbers (x, y, z of vertex 0, then vertex
+ * 1, ...), triangles nt * 3 indices. The _s variant takes rational strings.
+ * PCCD_EINVAL: out NULL, a NULL array with a nonzero count, nt == 0, an index out of
+ * range ("triangles[3][1]: index 12 out of range (10 vertices)"), a non-finite double
+ * or an unparsable string ("vertices[4][2]: ..."); PCCD_ELIMIT: nv or nt above
+ * PCCD_MAX_BODY_ELEMENTS, or a number beyond the text limits. *out is NULL on error.
+ * Release with pccd_body_free; pccd_body_free(NULL) does nothing. */
+PCCD_API int pccd_body_new_mesh_d(pccd_body **out, const double *vertices, size_t nv,
+                                  const unsigned int *triangles, size_t nt);
+PCCD_API int pccd_body_new_mesh_s(pccd_body **out, const char *const *vertices, size_t nv,
+                                  const unsigned int *triangles, size_t nt);
+
+/* Creates a body of n balls: centers holds n * 3 numbers, radii n numbers.
+ * PCCD_EINVAL: out NULL, a NULL array, n == 0, a radius <= 0 ("radii[2]: -1/2 is not
+ * > 0"), a non-finite double or an unparsable string ("centers[1][0]: ...");
+ * PCCD_ELIMIT: n above PCCD_MAX_BODY_ELEMENTS, or a number beyond the text limits. */
+PCCD_API int pccd_body_new_spheres_d(pccd_body **out, const double *centers,
+                                     const double *radii, size_t n);
+PCCD_API int pccd_body_new_spheres_s(pccd_body **out, const char *const *centers,
+                                     const char *const *radii, size_t n);
+
+PCCD_API void pccd_body_free(pccd_body *b);
+
+/* *kind = PCCD_BODY_MESH or PCCD_BODY_SPHERES (a pccd_body_type). PCCD_EINVAL when b or kind is NULL. */
+PCCD_API int pccd_body_kind(const pccd_body *b, int *kind);
+
+/* The sizes of a body: vertices (mesh) or balls (spheres), edges and triangles (0 for
+ * spheres). Each output pointer may be NULL. PCCD_EINVAL when b is NULL. */
+PCCD_API int pccd_body_counts(const pccd_body *b, size_t *vertices_or_spheres, size_t *edges,
+                              size_t *triangles);
+
+/* Edge i of a mesh (in the order described above): v[0] < v[1], vertex indices.
+ * PCCD_EINVAL: b or v NULL, or i >= the number of edges (always for spheres). */
+PCCD_API int pccd_body_edge(const pccd_body *b, size_t i, size_t v[2]);
+
+/* The triangles incident to edge i, ascending, each once: *count (when count != NULL)
+ * receives their number; when cap < that number (or tris is NULL) the call returns
+ * PCCD_ERANGE and leaves tris untouched. PCCD_EINVAL as pccd_body_edge. */
+PCCD_API int pccd_body_edge_triangles(const pccd_body *b, size_t i, size_t *tris, size_t cap,
+                                      size_t *count);
+
 #ifdef __cplusplus
 }
 #endif

@@ -28,6 +28,8 @@ from ._errors import Error, InputError, InternalError, LimitError  # noqa: E402
 from ._results import KINDS, ContactTime, Feature, Result  # noqa: E402
 from ._solve import collides_linear, solve, solve_linear  # noqa: E402
 from ._motion import Motion  # noqa: E402
+from ._body import Mesh, Spheres  # noqa: E402
 
 __all__ = ["__version__", "KINDS", "solve", "solve_linear", "collides_linear", "Result",
-           "ContactTime", "Feature", "Motion", "Error", "InputError", "LimitError", "InternalError"]
+           "ContactTime", "Feature", "Motion", "Mesh", "Spheres", "Error", "InputError",
+           "LimitError", "InternalError"]
