@@ -61,4 +61,15 @@ inline void require(const void *p, const char *what) {
   if (!p) throw arith::Input_error(std::string(what) + " is NULL");
 }
 
+// The body of pccd_X_new for a default-constructed handle: *out is NULL on failure.
+template <class T>
+int new_handle(const char *fn, T **out) {
+  return guard(fn, [&] {
+    require(out, "out");
+    *out = nullptr;
+    *out = new T;
+    return PCCD_OK;
+  });
+}
+
 }  // namespace pccd::api

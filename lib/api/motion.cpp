@@ -87,18 +87,12 @@ Vec3_q vec_s(const char *const *values, const char *name, size_t first = 0) {
   return v;
 }
 
-
 }  // namespace
 
 extern "C" {
 
 PCCD_API int pccd_motion_new(pccd_motion **out) {
-  return guard("pccd_motion_new", [&] {
-    require(out, "out");
-    *out = nullptr;
-    *out = new pccd_motion;
-    return PCCD_OK;
-  });
+  return pccd::api::new_handle("pccd_motion_new", out);
 }
 
 PCCD_API void pccd_motion_free(pccd_motion *m) { delete m; }

@@ -12,12 +12,7 @@ using pccd::arith::Input_error;
 extern "C" {
 
 PCCD_API int pccd_result_new(pccd_result **out) {
-  return guard("pccd_result_new", [&] {
-    require(out, "out");
-    *out = nullptr;
-    *out = new pccd_result;
-    return PCCD_OK;
-  });
+  return pccd::api::new_handle("pccd_result_new", out);
 }
 
 PCCD_API void pccd_result_free(pccd_result *r) { delete r; }
