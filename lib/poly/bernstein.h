@@ -37,6 +37,26 @@ std::vector<NT> bernstein_coefficients(const Poly<NT> &p, const NT &a, const NT 
   return out;
 }
 
+// Tests on coefficient vectors, true only when certain (never throw Uncertain).
+template <class NT>
+bool all_positive(const std::vector<NT> &b) {
+  for (const NT &x : b)
+    if (!arith::certainly_positive(x)) return false;
+  return true;
+}
+template <class NT>
+bool all_negative(const std::vector<NT> &b) {
+  for (const NT &x : b)
+    if (!arith::certainly_negative(x)) return false;
+  return true;
+}
+template <class NT>
+bool all_nonpositive(const std::vector<NT> &b) {
+  for (const NT &x : b)
+    if (!arith::certainly_nonpos(x)) return false;
+  return true;
+}
+
 // True only when p certainly has no root on [a, b] (all Bernstein coefficients of one
 // strict sign). Never throws Uncertain: an undecided filter answers false.
 template <class NT>
@@ -44,12 +64,7 @@ bool certainly_no_root(const Poly<NT> &p, const NT &a, const NT &b) {
   try {
     if (p.c.empty()) return false;  // the zero polynomial vanishes everywhere
     std::vector<NT> bc = bernstein_coefficients(p, a, b);
-    bool pos = true, neg = true;
-    for (const NT &x : bc) {
-      pos = pos && arith::certainly_positive(x);
-      neg = neg && arith::certainly_negative(x);
-    }
-    return pos || neg;
+    return all_positive(bc) || all_negative(bc);
   } catch (const arith::Uncertain &) {
     return false;
   }
@@ -62,38 +77,9 @@ int certain_sign_on(const Poly<NT> &p, const NT &a, const NT &b) {
   try {
     if (p.c.empty()) return -1;  // identically zero: never > 0
     std::vector<NT> bc = bernstein_coefficients(p, a, b);
-    bool pos = true, nonpos = true;
-    for (const NT &x : bc) {
-      pos = pos && arith::certainly_positive(x);
-      nonpos = nonpos && arith::certainly_nonpos(x);
-    }
-    return pos ? 1 : nonpos ? -1 : 0;
+    return all_positive(bc) ? 1 : all_nonpositive(bc) ? -1 : 0;
   } catch (const arith::Uncertain &) {
     return 0;
-  }
-}
-
-// Descartes' rule of signs in the Bernstein basis: the number of roots of p in the
-// open (0, 1), counted with multiplicity, is at most the number V of sign variations
-// of its Bernstein coefficients on [0, 1] and has V's parity; so V = 0 means no root
-// and V = 1 exactly one (simple) root. Returns V, or -1 when it is not certain (an
-// end coefficient that is zero or of uncertain sign, an uncertain inner one).
-template <class NT>
-int bernstein_variations(const Poly<NT> &p) {
-  try {
-    if (p.c.empty()) return -1;
-    std::vector<NT> bc = bernstein_coefficients(p, arith::from_int<NT>(0), arith::from_int<NT>(1));
-    if (arith::sign(bc.front()) == 0 || arith::sign(bc.back()) == 0) return -1;
-    int v = 0, last = 0;
-    for (const NT &x : bc) {
-      int s = arith::sign(x);  // Uncertain -> -1 below
-      if (s == 0) continue;
-      if (last != 0 && s != last) ++v;
-      last = s;
-    }
-    return v;
-  } catch (const arith::Uncertain &) {
-    return -1;
   }
 }
 

@@ -3,8 +3,10 @@
 // On a piece of (0, 1) with Bernstein coefficients of F and of the conditions G_i:
 //   - all coefficients of F of one strict sign: no root;
 //   - a condition with all coefficients <= 0: no qualifying root; all > 0: dropped;
-//   - Descartes' rule (bernstein.h): 0 sign variations of F, no root; 1 variation
-//     and no condition left, exactly one qualifying root;
+//   - Descartes' rule in the Bernstein basis: the number of roots of F in the open
+//     piece, with multiplicity, is at most the number V of sign variations of its
+//     coefficients and has V's parity; so V = 0 means no root, and V = 1 exactly one
+//     simple root (then, with no condition left, one qualifying root);
 //   - with exactly one (simple) root of F in the piece, a condition whose common
 //     factor H_i = gcd(F, G_i) changes sign across the piece vanishes at that root,
 //     so the root does not qualify (H_i divides F, whose only root in the piece is
@@ -54,21 +56,6 @@ class Subdivision_counter {
   }
 
  private:
-  static bool all_pos(const std::vector<NT> &b) {
-    for (const NT &x : b)
-      if (!arith::certainly_positive(x)) return false;
-    return true;
-  }
-  static bool all_neg(const std::vector<NT> &b) {
-    for (const NT &x : b)
-      if (!arith::certainly_negative(x)) return false;
-    return true;
-  }
-  static bool all_nonpos(const std::vector<NT> &b) {
-    for (const NT &x : b)
-      if (!arith::certainly_nonpos(x)) return false;
-    return true;
-  }
   // Sign variations with certain signs and nonzero ends; -1 otherwise.
   static int variations(const std::vector<NT> &b) {
     if (!(arith::certainly_positive(b.front()) || arith::certainly_negative(b.front()))) return -1;
@@ -85,11 +72,11 @@ class Subdivision_counter {
 
   bool run(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs,
            std::vector<std::vector<NT>> hbs, long &count) {
-    if (all_pos(fb) || all_neg(fb)) return true;
+    if (all_positive(fb) || all_negative(fb)) return true;
     std::vector<std::vector<NT>> left_g, left_h;
     for (size_t i = 0; i < gbs.size(); ++i) {
-      if (all_nonpos(gbs[i])) return true;
-      if (!all_pos(gbs[i])) {
+      if (all_nonpositive(gbs[i])) return true;
+      if (!all_positive(gbs[i])) {
         left_g.push_back(std::move(gbs[i]));
         left_h.push_back(std::move(hbs[i]));
       }
