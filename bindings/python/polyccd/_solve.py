@@ -81,36 +81,32 @@ def _set_coord(query, code, i, axis, texts, place):
     raise error_for(rc, message, place)
 
 
-class _Configs(threading.local):
-    """Per-thread cache of configs by (tolerance, want_time, want_exact), and one
-    reused result handle (read completely before any other call can reuse it)."""
+class _Thread(threading.local):
+    """Per-thread state of the linear entry points: configs cached by (tolerance,
+    want_time, want_exact), the decide-only config of collides_linear, and one result
+    handle that solve_linear and collides_linear reuse (each reads it completely before
+    returning)."""
 
     def __init__(self):
         self.cache = {}
-        self.res = None
+        self.res = _new("result")
+        self.decide_cfg, _ = _config(None, False, True, "time_tolerance")
+        self.out = ffi.new("int *")
 
-
-_configs = _Configs()
 
 
 def _cached_config(time_tolerance, want_time, want_exact, place):
     try:
         key = (type(time_tolerance), time_tolerance, bool(want_time), bool(want_exact))
-        hit = _configs.cache.get(key)
+        hit = _thread.cache.get(key)
     except TypeError:  # an unhashable tolerance: no caching
         return _config(time_tolerance, want_time, want_exact, place)
     if hit is None:
         hit = _config(time_tolerance, want_time, want_exact, place)
-        if len(_configs.cache) > 32:
-            _configs.cache.clear()
-        _configs.cache[key] = hit
+        if len(_thread.cache) > 32:
+            _thread.cache.clear()
+        _thread.cache[key] = hit
     return hit
-
-
-def _shared_result():
-    if _configs.res is None:
-        _configs.res = _new("result")
-    return _configs.res
 
 
 def _config(time_tolerance, want_time, want_exact, place):
@@ -123,6 +119,9 @@ def _config(time_tolerance, want_time, want_exact, place):
     cfg.want_time = 1 if want_time else 0
     cfg.want_exact = 1 if want_exact else 0
     return cfg, keep
+
+
+_thread = _Thread()  # after _config, which its __init__ calls
 
 
 def _solve_error(rc, message, cfg, tolerance_place, radii=None):
@@ -197,7 +196,7 @@ def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
     a0 = linear_coords(p_t0, "p_t0", _NPOINTS[kind])
     a1 = linear_coords(p_t1, "p_t1", _NPOINTS[kind])
     cfg, _keep = _cached_config(time_tolerance, want_time, want_exact, "time_tolerance")
-    res = _shared_result()
+    res = _thread.res
     rc = lib.pccd_solve_linear_d(code, ffi.from_buffer("double[]", a0),
                                  ffi.from_buffer("double[]", a1), cfg, res)
     if rc != 0:
@@ -216,18 +215,6 @@ def _linear_error(rc, a0, a1, cfg):
     _solve_error(rc, message, cfg, "time_tolerance")
 
 
-class _Linear:
-    """Per-thread state of collides_linear: one reused result handle, decide-only cfg."""
-
-    def __init__(self):
-        self.res = _new("result")
-        self.cfg = ffi.new("pccd_config *")
-        check(lib.pccd_config_init(self.cfg))
-        self.cfg.want_time = 0
-        self.out = ffi.new("int *")
-
-
-_tls = threading.local()
 _ND, _F64 = np.ndarray, np.dtype(np.float64)
 _FAST = {kind: (code, (_NPOINTS[kind], 3)) for kind, code in _LINEAR.items()}
 _from_buffer, _solve_linear_d = ffi.from_buffer, lib.pccd_solve_linear_d
@@ -239,10 +226,7 @@ def collides_linear(kind, p_t0, p_t1):
     The low-overhead decide-only path for benchmarks: no Result is built, a per-thread
     result handle is reused, and C-contiguous float64 arrays of the right shape go to C
     without any copy (anything else goes through linear_coords, as in solve_linear)."""
-    try:
-        state = _tls.state
-    except AttributeError:
-        state = _tls.state = _Linear()
+    state = _thread
     try:
         code, shape = _FAST[kind]
     except (KeyError, TypeError):
@@ -254,8 +238,8 @@ def collides_linear(kind, p_t0, p_t1):
             and p_t1.flags.c_contiguous):
         p_t1 = linear_coords(p_t1, "p_t1", shape[0])
     rc = _solve_linear_d(code, _from_buffer("double[]", p_t0), _from_buffer("double[]", p_t1),
-                         state.cfg, state.res)
+                         state.decide_cfg, state.res)
     if rc != 0:
-        _linear_error(rc, p_t0, p_t1, state.cfg)
+        _linear_error(rc, p_t0, p_t1, state.decide_cfg)
     check(lib.pccd_result_collides(state.res, state.out))
     return state.out[0] != 0
