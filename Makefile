@@ -14,8 +14,8 @@ VPY      := $(VENV)/bin/python
 CXXFLAGS ?= -O2 -g
 CXXFLAGS += -std=c++17 -fPIC -fvisibility=hidden -fvisibility-inlines-hidden \
             -ffp-contract=off -frounding-math -Wall -Wextra -Wno-unused-parameter \
-            -Iinclude -Ilib -DPCCD_BUILDING
-LDLIBS   := -lgmpxx -lgmp
+            -pthread -Iinclude -Ilib -DPCCD_BUILDING
+LDLIBS   := -lgmpxx -lgmp -pthread
 SAN      ?=
 
 SRCS := $(sort $(wildcard lib/*/*.cpp))

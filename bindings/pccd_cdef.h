@@ -139,3 +139,54 @@ int pccd_body_counts(const pccd_body *b, size_t *vertices_or_spheres, size_t *ed
 int pccd_body_edge(const pccd_body *b, size_t i, size_t v[2]);
 int pccd_body_edge_triangles(const pccd_body *b, size_t i, size_t *tris, size_t cap,
                              size_t *count);
+
+/* Scenes */
+typedef enum pccd_feature {
+  PCCD_FEATURE_VERTEX = ...,
+  PCCD_FEATURE_EDGE = ...,
+  PCCD_FEATURE_TRIANGLE = ...,
+  PCCD_FEATURE_SPHERE = ...
+} pccd_feature;
+
+typedef enum pccd_broad_phase {
+  PCCD_BROAD_BOXES = ...,
+  PCCD_BROAD_BRUTE = ...
+} pccd_broad_phase;
+
+typedef struct pccd_scene pccd_scene;
+typedef struct pccd_report pccd_report;
+
+int pccd_scene_new(pccd_scene **out);
+void pccd_scene_free(pccd_scene *s);
+int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_motion *motion, size_t *index);
+int pccd_scene_body_count(const pccd_scene *s, size_t *count);
+
+typedef struct pccd_scene_options {
+  size_t struct_size;
+  unsigned threads;
+  int all_contacts;
+  int broad_phase;
+} pccd_scene_options;
+
+int pccd_scene_options_init(pccd_scene_options *opt);
+int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg, const pccd_scene_options *opt,
+                     pccd_report *rep);
+int pccd_report_new(pccd_report **out);
+void pccd_report_free(pccd_report *rep);
+int pccd_report_collides(const pccd_report *rep, int *collides);
+#define PCCD_WHOLE ...
+int pccd_report_time(const pccd_report *rep, size_t pair, size_t contact, int which, char *buf,
+                     size_t cap, size_t *needed);
+int pccd_report_time_info(const pccd_report *rep, size_t pair, size_t contact, int *exact,
+                          double *approx);
+int pccd_report_pair_count(const pccd_report *rep, size_t *count);
+int pccd_report_pair(const pccd_report *rep, size_t pair, size_t *body_i, size_t *body_j,
+                     int *is_first);
+int pccd_report_contact_count(const pccd_report *rep, size_t pair, size_t *count);
+int pccd_report_contact(const pccd_report *rep, size_t pair, size_t contact, int *feature_i,
+                        size_t *index_i, int *feature_j, size_t *index_j);
+
+typedef struct pccd_scene_stats {
+  unsigned long long pieces, leaves, candidates, solved, static_tests, refined;
+} pccd_scene_stats;
+int pccd_report_stats(const pccd_report *rep, pccd_scene_stats *stats);

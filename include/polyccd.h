@@ -387,6 +387,92 @@ PCCD_API int pccd_body_edge(const pccd_body *b, size_t i, size_t v[2]);
 PCCD_API int pccd_body_edge_triangles(const pccd_body *b, size_t i, size_t *tris, size_t cap,
                                       size_t *count);
 
+/* ------------------------------------------------------------------------------------
+ * Scenes: bodies on rigid motions, checked exactly over t in [0, 1].
+ *
+ * Meshes touch when their surfaces (closed triangles) share a point; sphere sets when
+ * two balls of different bodies share a point; a sphere set and a mesh when a ball meets
+ * a closed triangle. Every pair of bodies in contact is reported with its first contact
+ * time and the feature pairs touching first (or all of them, with all_contacts), and
+ * the scene's first contact time over all pairs.
+ * ---------------------------------------------------------------------------------- */
+
+/* A feature of one body in a contact. Indices: vertices and triangles as given, edges as
+ * pccd_body_edge numbers them, balls as given. A contact found at t = 0 by the static
+ * test of two meshes is TRIANGLE / TRIANGLE. */
+typedef enum pccd_feature {
+  PCCD_FEATURE_VERTEX = 0,
+  PCCD_FEATURE_EDGE = 1,
+  PCCD_FEATURE_TRIANGLE = 2,
+  PCCD_FEATURE_SPHERE = 3
+} pccd_feature;
+
+/* How candidate feature pairs are found. Both give identical answers. */
+typedef enum pccd_broad_phase {
+  PCCD_BROAD_BOXES = 0, /* time pieces + CGAL box intersection (default) */
+  PCCD_BROAD_BRUTE = 1  /* every feature pair (a reference; quadratic) */
+} pccd_broad_phase;
+
+typedef struct pccd_scene pccd_scene;
+typedef struct pccd_report pccd_report;
+
+PCCD_API int pccd_scene_new(pccd_scene **out);
+PCCD_API void pccd_scene_free(pccd_scene *s);
+/* Appends a body with a motion (NULL: stationary). The scene keeps its own reference to
+ * the body and a copy of the motion: both may be freed or changed afterwards. *index
+ * (when not NULL) receives the body's position. The motion is validated by
+ * pccd_scene_solve. */
+PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_motion *motion,
+                            size_t *index);
+PCCD_API int pccd_scene_body_count(const pccd_scene *s, size_t *count);
+
+typedef struct pccd_scene_options {
+  size_t struct_size;     /* set by pccd_scene_options_init */
+  unsigned threads;       /* worker threads, >= 1 (default 1); answers do not depend on it */
+  int all_contacts;       /* 0 (default): the feature pairs touching first;
+                             1: every touching feature pair with its own first time */
+  int broad_phase;        /* a pccd_broad_phase (default PCCD_BROAD_BOXES) */
+} pccd_scene_options;
+
+PCCD_API int pccd_scene_options_init(pccd_scene_options *opt);
+
+/* Solves the scene (>= 2 bodies) into rep. cfg and opt may be NULL (defaults).
+ * PCCD_EINVAL when a motion's quaternion vanishes on [0, 1] ("bodies[2].motion: ..."). */
+PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
+                              const pccd_scene_options *opt, pccd_report *rep);
+
+PCCD_API int pccd_report_new(pccd_report **out);
+PCCD_API void pccd_report_free(pccd_report *rep);
+
+/* Whole scene: any contact, and the first contact time (which: 0 = lo, 1 = hi, 2 = exact;
+ * PCCD_ESTATE when there is no contact or, for 2, no exact value). */
+PCCD_API int pccd_report_collides(const pccd_report *rep, int *collides);
+#define PCCD_WHOLE ((size_t)-1)
+/* The time of the scene (pair == PCCD_WHOLE), of pair `pair` (contact == PCCD_WHOLE), or of
+ * contact `contact` of pair `pair`, as text; which as above. */
+PCCD_API int pccd_report_time(const pccd_report *rep, size_t pair, size_t contact, int which,
+                              char *buf, size_t cap, size_t *needed);
+/* *exact = 1 when that time is known exactly; *approx = a double near it (within the
+ * enclosure). Either pointer may be NULL. */
+PCCD_API int pccd_report_time_info(const pccd_report *rep, size_t pair, size_t contact,
+                                   int *exact, double *approx);
+/* Body pairs in contact, ascending (i, j); is_first = 1 when the pair's first contact may
+ * be the scene's (exact: equal to it). */
+PCCD_API int pccd_report_pair_count(const pccd_report *rep, size_t *count);
+PCCD_API int pccd_report_pair(const pccd_report *rep, size_t pair, size_t *body_i,
+                              size_t *body_j, int *is_first);
+PCCD_API int pccd_report_contact_count(const pccd_report *rep, size_t pair, size_t *count);
+/* Contact `contact` of pair `pair`: a feature of body i and one of body j. */
+PCCD_API int pccd_report_contact(const pccd_report *rep, size_t pair, size_t contact,
+                                 int *feature_i, size_t *index_i, int *feature_j,
+                                 size_t *index_j);
+
+/* Work counters of the last solve (for benchmarks). */
+typedef struct pccd_scene_stats {
+  unsigned long long pieces, leaves, candidates, solved, static_tests, refined;
+} pccd_scene_stats;
+PCCD_API int pccd_report_stats(const pccd_report *rep, pccd_scene_stats *stats);
+
 #ifdef __cplusplus
 }
 #endif

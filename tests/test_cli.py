@@ -69,7 +69,7 @@ BAD_FILES = [
     ("null.json", query(points=[[[0], [0], [None]]] + TRIANGLE), "points[0][2][0]: null is not a number"),
     ("format.json", {**query(), "format": "polyccd-query/2"}, "format: expected"),
     ("noformat.json", {"kind": "vertex-face"}, "format: expected"),
-    ("scene.json", {"format": "polyccd/1", "bodies": []}, "scene files (polyccd/1) are not supported yet"),
+    ("scene.json", {"format": "polyccd/1", "bodies": []}, "bodies: a scene needs at least 2 bodies"),
     ("kind.json", query(kind="face-face"), "kind: expected one of"),
     ("count.json", query(points=TRIANGLE), "points: expected 4 point trajectories"),
     ("traj.json", query(points=[[[0], [0]]] + TRIANGLE), "points[0]: expected [xs, ys, zs]"),

@@ -59,7 +59,7 @@ std::vector<pccd::motion::Triangle> triangles_of(const unsigned int *tris, size_
 int new_mesh(pccd_body **out, std::vector<Point3_q> vertices,
              std::vector<pccd::motion::Triangle> triangles) {
   auto body = std::make_unique<pccd_body>();
-  body->mesh = std::make_unique<pccd::motion::Mesh_body>(std::move(vertices),
+  body->mesh = std::make_shared<const pccd::motion::Mesh_body>(std::move(vertices),
                                                          std::move(triangles));
   *out = body.release();
   return PCCD_OK;
@@ -67,7 +67,7 @@ int new_mesh(pccd_body **out, std::vector<Point3_q> vertices,
 
 int new_spheres(pccd_body **out, std::vector<Point3_q> centers, std::vector<Rational> radii) {
   auto body = std::make_unique<pccd_body>();
-  body->spheres = std::make_unique<pccd::motion::Sphere_body>(std::move(centers),
+  body->spheres = std::make_shared<const pccd::motion::Sphere_body>(std::move(centers),
                                                               std::move(radii));
   *out = body.release();
   return PCCD_OK;

@@ -27,8 +27,14 @@ using motion::Point_traj;
 using poly::Poly;
 using poly::System;
 
-// Feature kinds share the values of pccd_kind.
-enum Feature_kind { VERTEX_FACE = 0, EDGE_EDGE = 1, VERTEX_EDGE = 2, VERTEX_VERTEX = 3, SPHERE_SPHERE = 4 };
+// Query kinds 0..4 share the values of pccd_kind and are also the feature kinds of
+// their systems. SPHERE_TRIANGLE (a closed ball against a closed triangle; points
+// c, f0, f1, f2) is used by body queries; its features are the ball meeting the open
+// face, an open edge or a vertex, and (kind SPHERE_TRIANGLE) the static test at t = 0.
+enum Feature_kind {
+  VERTEX_FACE = 0, EDGE_EDGE = 1, VERTEX_EDGE = 2, VERTEX_VERTEX = 3, SPHERE_SPHERE = 4,
+  SPHERE_TRIANGLE = 5, SPHERE_FACE = 6, SPHERE_EDGE = 7, SPHERE_VERTEX = 8
+};
 
 struct Feature {
   int kind = 0;
@@ -141,6 +147,51 @@ void add_edge_edge(Feature_set<NT> &set, const Point_traj<NT> &a0, const Point_t
   Poly<NT> sa1 = motion::dot(n, motion::cross(eb, a1 - b0));
   add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f,
              {-(sb0 * sb1), -(sa0 * sa1)});
+}
+
+// Balls against a triangle's features (kind SPHERE_TRIANGLE). Every point trajectory
+// is D(t) times the true position, D > 0 on [0, 1] (D = 1 for primitive queries:
+// `r2d2` = r^2 D^2), so every condition is homogeneous after multiplying the radius
+// by D. The distance from the centre c to the closed triangle equals r exactly when
+// the closest point lies in one relatively open feature: the open face (distance to
+// the plane r, projection strictly inside), an open edge (distance to the line r,
+// projection strictly inside) or a vertex. So every first contact after t = 0 is a
+// hit of one of these systems and every hit is a contact (distance exactly r); the
+// vertex systems are closed sublevel sets, which makes the union closed. A ball that
+// already meets the triangle at t = 0 without touching a vertex is found by the
+// static test (pred/static_contact.h).
+template <class NT>
+void add_ball_vertex(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_traj<NT> &v,
+                     const Poly<NT> &r2d2, int iv) {
+  using K = typename System<NT>::Kind;
+  auto d = c - v;
+  add_system(set, Feature{SPHERE_VERTEX, {{0, iv, -1, -1}}}, K::sublevel, motion::dot(d, d) - r2d2,
+             {});
+}
+
+template <class NT>
+void add_ball_edge(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_traj<NT> &e0,
+                   const Point_traj<NT> &e1, const Poly<NT> &r2d2, int i0, int i1) {
+  using K = typename System<NT>::Kind;
+  auto e = e1 - e0;
+  auto u = motion::cross(e, c - e0);
+  Poly<NT> f = motion::dot(u, u) - r2d2 * motion::dot(e, e);
+  add_system(set, Feature{SPHERE_EDGE, {{0, i0, i1, -1}}}, f.is_zero() ? K::zero_f : K::roots, f,
+             {motion::dot(c - e0, e), motion::dot(e1 - c, e)});
+}
+
+template <class NT>
+void add_ball_face(Feature_set<NT> &set, const Point_traj<NT> &c,
+                   const std::array<const Point_traj<NT> *, 3> &fv, const Poly<NT> &r2d2) {
+  using K = typename System<NT>::Kind;
+  auto n = motion::cross(*fv[1] - *fv[0], *fv[2] - *fv[0]);
+  Poly<NT> h = motion::dot(n, c - *fv[0]);
+  Poly<NT> f = h * h - r2d2 * motion::dot(n, n);
+  std::vector<Poly<NT>> g;
+  for (int i = 0; i < 3; ++i)
+    g.push_back(motion::dot(n, motion::cross(*fv[(i + 1) % 3] - *fv[i], c - *fv[i])));
+  add_system(set, Feature{SPHERE_FACE, {{0, 1, 2, 3}}}, f.is_zero() ? K::zero_f : K::roots, f,
+             std::move(g));
 }
 
 }  // namespace pccd::pred

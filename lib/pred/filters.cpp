@@ -30,11 +30,17 @@ bool bounds_separate(const Query_data<Interval> &q) {
     }
     init[side] = true;
   }
-  if (q.kind == SPHERE_SPHERE)
-    for (int side = 0; side < 2; ++side)
+  if (q.kind == SPHERE_SPHERE || q.kind == SPHERE_TRIANGLE) {
+    // Radii scale with D (query_systems.h): grow by r * max D.
+    const double dmax = q.scale.c.empty() ? 1.0 : poly::range_on_unit(q.scale).hi;
+    for (int side = 0; side < 2; ++side) {
+      if (q.kind == SPHERE_TRIANGLE && side == 1) break;
+      const double grow = (q.radius[side] * Interval(dmax)).hi;
       for (int a = 0; a < 3; ++a)
-        box[side][a] = {arith::round_down(box[side][a].lo - q.radius[side].hi),
-                        arith::round_up(box[side][a].hi + q.radius[side].hi)};
+        box[side][a] = {arith::round_down(box[side][a].lo - grow),
+                        arith::round_up(box[side][a].hi + grow)};
+    }
+  }
   for (int a = 0; a < 3; ++a)
     if (box[0][a].hi < box[1][a].lo || box[1][a].hi < box[0][a].lo) return true;
   return false;
@@ -61,8 +67,15 @@ bool bernstein_excludes(const Query_data<Interval> &q) {
     }
     case SPHERE_SPHERE: {
       auto d = p[0] - p[1];
-      Interval r = q.radius[0] + q.radius[1];
-      Poly<Interval> f = motion::dot(d, d) - Poly<Interval>::constant(r * r);
+      Poly<Interval> f = motion::dot(d, d) - radius_squared(Interval(q.radius[0] + q.radius[1]), q.scale);
+      return !f.c.empty() && poly::certain_sign_on(f, zero, one) > 0;
+    }
+    case SPHERE_TRIANGLE: {
+      // The ball stays strictly off the triangle's plane: (n.(c - f0))^2 > r^2 D^2 |n|^2
+      // on [0, 1] (where n = 0 the left side is 0, so this cannot hold there).
+      auto n = motion::cross(p[2] - p[1], p[3] - p[1]);
+      Poly<Interval> h = motion::dot(n, p[0] - p[1]);
+      Poly<Interval> f = h * h - radius_squared(q.radius[0], q.scale) * motion::dot(n, n);
       return !f.c.empty() && poly::certain_sign_on(f, zero, one) > 0;
     }
   }

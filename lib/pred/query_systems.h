@@ -7,13 +7,27 @@
 
 namespace pccd::pred {
 
-// The primitive query: kind, point trajectories, ball radii (SPHERE_SPHERE only).
+// The primitive query: kind, point trajectories, ball radii (SPHERE_SPHERE: both;
+// SPHERE_TRIANGLE: radius[0], the ball at point 0).
+//
+// `scale`: every trajectory in p may be D(t) times the true position, with one common
+// polynomial D > 0 on [0, 1] (body queries clear the denominators of rational motions
+// this way). Contact conditions between points are homogeneous in point differences
+// and unchanged; radii are multiplied by D. Empty means D = 1.
 template <class NT>
 struct Query_data {
   int kind = 0;
   std::vector<Point_traj<NT>> p;
   NT radius[2];
+  Poly<NT> scale;
 };
+
+// r^2 D^2 as a polynomial.
+template <class NT>
+Poly<NT> radius_squared(const NT &r, const Poly<NT> &scale) {
+  Poly<NT> r2 = Poly<NT>::constant(r * r);
+  return scale.c.empty() ? r2 : r2 * scale * scale;
+}
 
 template <class NT>
 Feature_set<NT> build_systems(const Query_data<NT> &q) {
@@ -46,9 +60,15 @@ Feature_set<NT> build_systems(const Query_data<NT> &q) {
     case SPHERE_SPHERE: {
       // Closed balls meet iff |ca - cb|^2 - (ra + rb)^2 <= 0.
       auto d = p[0] - p[1];
-      NT r = q.radius[0] + q.radius[1];
-      Poly<NT> f = motion::dot(d, d) - Poly<NT>::constant(r * r);
+      Poly<NT> f = motion::dot(d, d) - radius_squared(NT(q.radius[0] + q.radius[1]), q.scale);
       add_system(s, Feature{SPHERE_SPHERE, {{0, 1, -1, -1}}}, K::sublevel, f, {});
+      break;
+    }
+    case SPHERE_TRIANGLE: {
+      Poly<NT> r2d2 = radius_squared(q.radius[0], q.scale);
+      add_ball_face(s, p[0], {{&p[1], &p[2], &p[3]}}, r2d2);
+      for (int i = 0; i < 3; ++i) add_ball_edge(s, p[0], p[1 + i], p[1 + (i + 1) % 3], r2d2, 1 + i, 1 + (i + 1) % 3);
+      for (int i = 1; i <= 3; ++i) add_ball_vertex(s, p[0], p[i], r2d2, i);
       break;
     }
     default:

@@ -3,6 +3,7 @@
 #include "poly/earliest.h"
 #include "poly/rational_root.h"
 #include "polyccd.h"
+#include "pred/static_contact.h"
 
 namespace pccd::pred {
 
@@ -37,6 +38,27 @@ poly::Search_result<NT> search(const Feature_set<NT> &set, const Solve_options &
   return poly::earliest_contact(set.systems, so);
 }
 
+template <class NT>
+NT at_zero(const Poly<NT> &p) { return p.c.empty() ? arith::from_int<NT>(0) : p.c[0]; }
+
+// SPHERE_TRIANGLE: the ball already meets the closed triangle at t = 0.
+template <class NT>
+bool ball_meets_triangle_at_zero(const Query_data<NT> &q) {
+  std::array<Vec3<NT>, 4> x;
+  for (int i = 0; i < 4; ++i)
+    for (int a = 0; a < 3; ++a) x[i][a] = at_zero(q.p[i][a]);
+  NT d = q.scale.c.empty() ? arith::from_int<NT>(1) : at_zero(q.scale);
+  NT r2d2 = q.radius[0] * q.radius[0] * d * d;
+  return ball_meets_triangle(x[0], r2d2, {{x[1], x[2], x[3]}});
+}
+
+void set_contact_at_zero(Contact_result &out, int stage) {
+  out.collides = out.exact = true;
+  out.lo = out.hi = 0;
+  out.features = {Feature{SPHERE_TRIANGLE, {{0, 1, 2, 3}}}};
+  out.stage = stage;
+}
+
 }  // namespace
 
 Contact_result solve(const Query_data<Interval> &iq,
@@ -51,6 +73,20 @@ Contact_result solve(const Query_data<Interval> &iq,
   if (bernstein_excludes(iq)) {
     out.stage = PCCD_STAGE_BERNSTEIN;
     return out;
+  }
+  if (iq.kind == SPHERE_TRIANGLE) {
+    bool meets;
+    int stage = PCCD_STAGE_INTERVAL;
+    try {
+      meets = ball_meets_triangle_at_zero(iq);
+    } catch (const arith::Uncertain &) {
+      meets = ball_meets_triangle_at_zero(exact_points());
+      stage = PCCD_STAGE_EXACT;
+    }
+    if (meets) {
+      set_contact_at_zero(out, stage);
+      return out;
+    }
   }
   bool decided = false;
   try {

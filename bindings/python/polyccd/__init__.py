@@ -29,7 +29,10 @@ from ._results import KINDS, ContactTime, Feature, Result  # noqa: E402
 from ._solve import collides_linear, solve, solve_linear  # noqa: E402
 from ._motion import Motion  # noqa: E402
 from ._body import Mesh, Spheres  # noqa: E402
+from ._scene import Body, Contact, PairResult, SceneResult, load_scene  # noqa: E402
+from ._scene import check_scene as check  # noqa: E402
 
 __all__ = ["__version__", "KINDS", "solve", "solve_linear", "collides_linear", "Result",
-           "ContactTime", "Feature", "Motion", "Mesh", "Spheres", "Error", "InputError",
+           "ContactTime", "Feature", "Motion", "Mesh", "Spheres", "Body", "check", "load_scene",
+           "SceneResult", "PairResult", "Contact", "Error", "InputError",
            "LimitError", "InternalError"]

@@ -5,8 +5,9 @@ from fractions import Fraction
 from pathlib import Path
 
 from ._errors import Error, InputError
-from ._json import read_query
+from ._json import SceneNotSupported, load, query_case
 from ._numbers import exact_fraction, ratio_text
+from ._scene import check_scene, scene_from_doc
 from ._solve import solve_query
 
 DEFAULT_TOLERANCE = "1e-12"
@@ -46,8 +47,27 @@ def _shown(first):
     return f"[{_text(first.lo)}, {_text(first.hi)}] (not exact)"
 
 
+def read_case(path):
+    """("query", QueryCase) or ("scene", (bodies, options, expect)) of a case file."""
+    doc = load(path)
+    try:
+        return "query", query_case(doc)
+    except SceneNotSupported:
+        return "scene", scene_from_doc(doc)
+
+
+def solve_scene_case(scene, **kw):
+    """The SceneResult of (bodies, options, expect) (its time tolerance applies)."""
+    bodies, options, _ = scene
+    return check_scene(bodies, time_tolerance=options.time_tolerance or DEFAULT_TOLERANCE, **kw)
+
+
 def compare(expect, result, tolerance):
     """Reasons why result does not meet expect (empty when it passes)."""
+    if expect.pairs is not None and hasattr(result, "pairs"):
+        got = tuple(p.names for p in result.pairs)
+        if got != expect.pairs:
+            return [f"pairs: expected {[list(p) for p in expect.pairs]}, got {[list(p) for p in got]}"]
     if result.collides != expect.collides:
         return [f"collides: expected {str(expect.collides).lower()}, "
                 f"got {str(result.collides).lower()}"]
@@ -76,14 +96,15 @@ def check_case(path):
     """Reasons why the case file at path fails (empty when it passes). A file that
     cannot be read, parsed or solved fails with its error message."""
     try:
-        case = read_query(path)
-        if case.expect is None:
+        what, case = read_case(path)
+        expect = case.expect if what == "query" else case[2]
+        if expect is None:
             return ["no expect block (a corpus case needs expect.collides)"]
-        tolerance = exact_fraction(case.time_tolerance or DEFAULT_TOLERANCE,
-                                   "options.time_tolerance")
-        result = solve_case(case)
+        given = case.time_tolerance if what == "query" else case[1].time_tolerance
+        tolerance = exact_fraction(given or DEFAULT_TOLERANCE, "options.time_tolerance")
+        result = solve_case(case) if what == "query" else solve_scene_case(case)
     except InputError as e:
         return [str(e)]
     except (Error, MemoryError) as e:  # a bug or no memory: this case fails, others go on
         return [f"{type(e).__name__}: {e}"]
-    return compare(case.expect, result, tolerance)
+    return compare(expect, result, tolerance)

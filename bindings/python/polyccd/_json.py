@@ -129,6 +129,7 @@ class Expect:
     """The `expect` block of a case: first_contact is exact, (lo, hi) or None."""
     collides: bool
     first_contact: Union[None, Fraction, Tuple[Fraction, Fraction]]
+    pairs: Optional[Tuple[Tuple[str, str], ...]] = None  # scenes: body pairs in contact
 
 
 @dataclass(frozen=True)
@@ -170,7 +171,7 @@ def query_case(doc):
     top = _object_at(doc, "(top level)")
     fmt = top.get("format")
     if fmt == SCENE_FORMAT:
-        raise SceneNotSupported("scene files (polyccd/1) are not supported yet by this version")
+        raise SceneNotSupported("a scene file (polyccd/1), not a query")
     if fmt != QUERY_FORMAT:
         got = "missing" if "format" not in top else describe(fmt)
         raise InputError(f'format: expected "{QUERY_FORMAT}" or "{SCENE_FORMAT}", got {got}')

@@ -106,17 +106,21 @@ def read_result(res):
 _NO_CONTACT = {stage: Result(False, None, (), stage) for stage in STAGES.values()}
 
 
+def time_json(first):
+    """The JSON object of a ContactTime (None: null)."""
+    return None if first is None else {
+        "lo": ratio_text(first.lo.numerator, first.lo.denominator),
+        "hi": ratio_text(first.hi.numerator, first.hi.denominator),
+        "approx": first.approx,
+        "exact": None if first.exact is None
+        else ratio_text(first.exact.numerator, first.exact.denominator),
+    }
+
+
 def result_json(result):
     """The JSON object of a Result, as `polyccd check` prints it (formats.md)."""
-    first = result.first_contact
     return {
         "collides": result.collides,
-        "first_contact": None if first is None else {
-            "lo": ratio_text(first.lo.numerator, first.lo.denominator),
-            "hi": ratio_text(first.hi.numerator, first.hi.denominator),
-            "approx": first.approx,
-            "exact": None if first.exact is None
-            else ratio_text(first.exact.numerator, first.exact.denominator),
-        },
+        "first_contact": time_json(result.first_contact),
         "features": [{"kind": f.kind, "points": list(f.points)} for f in result.features],
     }

@@ -8,13 +8,12 @@ import json
 import sys
 
 from . import __version__
-from ._corpus import check_case, files_under, solve_case
+from ._corpus import check_case, files_under, read_case, solve_case, solve_scene_case
 from ._csv import CSV_KINDS
 from ._demo import query_dir, run_cases
 from ._errors import Error, InputError
-from ._json import read_query
 from ._queries import mismatch_lines, run_file
-from ._results import result_json
+from ._results import result_json, time_json
 
 OK, FAILED, BAD_INPUT = 0, 1, 2
 
@@ -25,7 +24,11 @@ def _error(message):
 
 def cmd_check(args):
     try:
-        result = solve_case(read_query(args.file))
+        what, case = read_case(args.file)
+        if what == "scene":
+            print(json.dumps(scene_json(solve_scene_case(case, threads=args.threads))))
+            return OK
+        result = solve_case(case)
     except InputError as e:
         _error(f"{args.file}: {e}")
         return BAD_INPUT
@@ -33,6 +36,25 @@ def cmd_check(args):
     out["bodies"] = None  # bodies in contact: for scene files only
     print(json.dumps(out))
     return OK
+
+
+def _contact_json(pair, c):
+    return {"bodies": list(pair.names), "a": list(c.a), "b": list(c.b),
+            "first_contact": time_json(c.first_contact)}
+
+
+def scene_json(r):
+    """The JSON of a SceneResult (formats.md, check; "pairs" is an optional extension:
+    every body pair in contact with its first time and touching features)."""
+    return {
+        "collides": r.collides,
+        "first_contact": time_json(r.first_contact),
+        "features": [_contact_json(p, c) for p in r.first for c in p.contacts
+                     if r.first_contact.exact is None or c.first_contact.exact == r.first_contact.exact],
+        "bodies": list(r.first[0].names) if r.first else None,
+        "pairs": [{"bodies": list(p.names), "first_contact": time_json(p.first_contact),
+                   "features": [_contact_json(p, c) for c in p.contacts]} for p in r.pairs],
+    }
 
 
 def cmd_corpus(args):
@@ -110,8 +132,9 @@ def parser():
         "primitives (file formats: shared/design/formats.md).")
     p.add_argument("--version", action="version", version=f"polyccd {__version__}")
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    c = sub.add_parser("check", help="solve one query file and print the JSON result")
+    c = sub.add_parser("check", help="solve one scene or query file and print the JSON result")
     c.add_argument("file", metavar="FILE.json")
+    c.add_argument("--threads", type=int, default=1, help="worker threads for scenes (default 1)")
     c.set_defaults(run=cmd_check)
     c = sub.add_parser("corpus", help="check every *.json case under the paths "
                        "against its expect block")

@@ -1,0 +1,84 @@
+// pccd_scene_*: scenes of bodies on motions, solved into a pccd_report.
+#include <string>
+
+#include "api/body_handle.h"
+#include "api/guard.h"
+#include "api/handles.h"
+#include "api/motion_handle.h"
+#include "api/scene_handle.h"
+
+using pccd::api::guard;
+using pccd::api::require;
+using pccd::arith::Input_error;
+
+extern "C" {
+
+PCCD_API int pccd_scene_new(pccd_scene **out) { return pccd::api::new_handle("pccd_scene_new", out); }
+
+PCCD_API void pccd_scene_free(pccd_scene *s) { delete s; }
+
+PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_motion *motion,
+                            size_t *index) {
+  return guard("pccd_scene_add", [&] {
+    require(s, "scene");
+    require(body, "body");
+    pccd::broad::Scene_body b;
+    b.mesh = body->mesh;
+    b.spheres = body->spheres;
+    if (motion) b.motion = motion->m;
+    s->bodies.push_back(std::move(b));
+    if (index) *index = s->bodies.size() - 1;
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_scene_body_count(const pccd_scene *s, size_t *count) {
+  return guard("pccd_scene_body_count", [&] {
+    require(s, "scene");
+    require(count, "count");
+    *count = s->bodies.size();
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_scene_options_init(pccd_scene_options *opt) {
+  return guard("pccd_scene_options_init", [&] {
+    require(opt, "opt");
+    opt->struct_size = sizeof(pccd_scene_options);
+    opt->threads = 1;
+    opt->all_contacts = 0;
+    opt->broad_phase = PCCD_BROAD_BOXES;
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
+                              const pccd_scene_options *opt, pccd_report *rep) {
+  return guard("pccd_scene_solve", [&] {
+    require(s, "scene");
+    require(rep, "report");
+    pccd::broad::Scene_options so;
+    so.solve = pccd::api::read_config(cfg);
+    if (opt) {
+      if (opt->struct_size != sizeof(pccd_scene_options))
+        throw Input_error("opt->struct_size is " + std::to_string(opt->struct_size) +
+                          "; initialise the options with pccd_scene_options_init");
+      if (opt->threads < 1 || opt->threads > 1024)
+        throw Input_error("opt->threads is " + std::to_string(opt->threads) + "; expected 1 to 1024");
+      if (opt->all_contacts != 0 && opt->all_contacts != 1)
+        throw Input_error("opt->all_contacts is " + std::to_string(opt->all_contacts) + "; expected 0 or 1");
+      if (opt->broad_phase != PCCD_BROAD_BOXES && opt->broad_phase != PCCD_BROAD_BRUTE)
+        throw Input_error("opt->broad_phase is " + std::to_string(opt->broad_phase) +
+                          "; expected PCCD_BROAD_BOXES (0) or PCCD_BROAD_BRUTE (1)");
+      so.threads = opt->threads;
+      so.all_contacts = opt->all_contacts == 1;
+      so.brute = opt->broad_phase == PCCD_BROAD_BRUTE;
+    }
+    rep->solved = false;
+    rep->r = pccd::broad::solve_scene(s->bodies, so);
+    rep->solved = true;
+    return PCCD_OK;
+  });
+}
+
+}  // extern "C"

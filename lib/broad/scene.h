@@ -1,0 +1,49 @@
+// Scenes of moving bodies: every body pair in contact, and the scene's first contact.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "broad/pair_search.h"
+
+namespace pccd::broad {
+
+struct Scene_body {
+  std::shared_ptr<const motion::Mesh_body> mesh;  // exactly one of mesh / spheres
+  std::shared_ptr<const motion::Sphere_body> spheres;
+  motion::Rigid_motion motion;
+};
+
+struct Scene_options {
+  pred::Solve_options solve;
+  bool all_contacts = false;
+  bool brute = false;
+  unsigned threads = 1;
+};
+
+struct Contact_report {
+  Feature_ref a, b;       // features of body i and body j
+  arith::Rational lo, hi; // this feature pair's first contact time (lo == hi when exact)
+  bool exact = false;
+};
+
+struct Pair_report {
+  size_t i = 0, j = 0;  // i < j
+  arith::Rational lo, hi;
+  bool exact = false;
+  std::vector<Contact_report> contacts;  // sorted by time, then features
+};
+
+struct Scene_report {
+  bool collides = false;
+  arith::Rational lo, hi;
+  bool exact = false;
+  std::vector<Pair_report> pairs;   // the pairs in contact, ascending (i, j)
+  std::vector<size_t> first_pairs;  // indices into pairs: those that may touch first
+  Search_stats stats;
+};
+
+// Input_error naming "bodies[k].motion" when a motion's quaternion vanishes on [0, 1].
+Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt);
+
+}  // namespace pccd::broad

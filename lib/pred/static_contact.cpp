@@ -1,0 +1,122 @@
+#include "pred/static_contact.h"
+
+namespace pccd::pred {
+
+using arith::sign;
+
+namespace {
+
+template <class NT>
+bool equal(const Vec3<NT> &a, const Vec3<NT> &b) {
+  for (int i = 0; i < 3; ++i)
+    if (sign(a[i] - b[i]) != 0) return false;
+  return true;
+}
+
+template <class NT>
+bool is_zero_vec(const Vec3<NT> &v) {
+  return sign(v[0]) == 0 && sign(v[1]) == 0 && sign(v[2]) == 0;
+}
+
+// p in the open segment (a, b).
+template <class NT>
+bool in_open_segment(const Vec3<NT> &p, const Vec3<NT> &a, const Vec3<NT> &b) {
+  Vec3<NT> e = sub(b, a);
+  if (!is_zero_vec(cross3(e, sub(p, a)))) return false;
+  return sign(dot3(sub(p, a), e)) > 0 && sign(dot3(sub(b, p), e)) > 0;
+}
+
+// p in the closed segment [a, b].
+template <class NT>
+bool in_segment(const Vec3<NT> &p, const Vec3<NT> &a, const Vec3<NT> &b) {
+  return equal(p, a) || equal(p, b) || in_open_segment(p, a, b);
+}
+
+// The side conditions n . ((t[i+1] - t[i]) x (p - t[i])) of a point in the plane.
+template <class NT>
+bool strictly_inside_sides(const Vec3<NT> &p, const std::array<Vec3<NT>, 3> &t, const Vec3<NT> &n) {
+  for (int i = 0; i < 3; ++i)
+    if (sign(dot3(n, cross3(sub(t[(i + 1) % 3], t[i]), sub(p, t[i])))) <= 0) return false;
+  return true;
+}
+
+}  // namespace
+
+template <class NT>
+bool point_in_triangle(const Vec3<NT> &p, const std::array<Vec3<NT>, 3> &t) {
+  for (int i = 0; i < 3; ++i)
+    if (in_segment(p, t[i], t[(i + 1) % 3])) return true;
+  Vec3<NT> n = cross3(sub(t[1], t[0]), sub(t[2], t[0]));
+  return sign(dot3(n, sub(p, t[0]))) == 0 && strictly_inside_sides(p, t, n);
+}
+
+template <class NT>
+bool segments_meet(const Vec3<NT> &p, const Vec3<NT> &q, const Vec3<NT> &a, const Vec3<NT> &b) {
+  if (in_segment(p, a, b) || in_segment(q, a, b) || in_segment(a, p, q) || in_segment(b, p, q))
+    return true;
+  // Proper crossing of the open segments (see pred/features.h, add_edge_edge).
+  Vec3<NT> ep = sub(q, p), ea = sub(b, a);
+  if (sign(dot3(cross3(ep, sub(a, p)), sub(b, p))) != 0) return false;
+  Vec3<NT> n = cross3(ep, ea);
+  int sa = sign(dot3(n, cross3(ep, sub(a, p)))), sb = sign(dot3(n, cross3(ep, sub(b, p))));
+  int sp = sign(dot3(n, cross3(ea, sub(p, a)))), sq = sign(dot3(n, cross3(ea, sub(q, a))));
+  return sa * sb < 0 && sp * sq < 0;
+}
+
+template <class NT>
+bool segment_meets_triangle(const Vec3<NT> &p, const Vec3<NT> &q, const std::array<Vec3<NT>, 3> &t) {
+  if (point_in_triangle(p, t) || point_in_triangle(q, t)) return true;
+  for (int i = 0; i < 3; ++i)
+    if (segments_meet(p, q, t[i], t[(i + 1) % 3])) return true;
+  // Transversal crossing of the open face.
+  Vec3<NT> n = cross3(sub(t[1], t[0]), sub(t[2], t[0]));
+  int sp = sign(dot3(n, sub(p, t[0]))), sq = sign(dot3(n, sub(q, t[0])));
+  if (sp * sq >= 0) return false;  // also n = 0 (degenerate triangle)
+  Vec3<NT> d = sub(q, p);
+  int first = 0;
+  for (int i = 0; i < 3; ++i) {
+    int s = sign(dot3(d, cross3(sub(t[i], p), sub(t[(i + 1) % 3], p))));
+    if (s == 0 || (first != 0 && s != first)) return false;
+    first = s;
+  }
+  return true;
+}
+
+template <class NT>
+bool triangles_meet(const std::array<Vec3<NT>, 3> &a, const std::array<Vec3<NT>, 3> &b) {
+  for (int i = 0; i < 3; ++i)
+    if (segment_meets_triangle(a[i], a[(i + 1) % 3], b)) return true;
+  for (int i = 0; i < 3; ++i)
+    if (segment_meets_triangle(b[i], b[(i + 1) % 3], a)) return true;
+  return false;
+}
+
+template <class NT>
+bool ball_meets_triangle(const Vec3<NT> &c, const NT &r2d2, const std::array<Vec3<NT>, 3> &t) {
+  for (int i = 0; i < 3; ++i) {
+    Vec3<NT> d = sub(c, t[i]);
+    if (sign(dot3(d, d) - r2d2) <= 0) return true;
+  }
+  for (int i = 0; i < 3; ++i) {
+    const Vec3<NT> &e0 = t[i], &e1 = t[(i + 1) % 3];
+    Vec3<NT> e = sub(e1, e0);
+    if (sign(dot3(sub(c, e0), e)) <= 0 || sign(dot3(sub(e1, c), e)) <= 0) continue;
+    Vec3<NT> u = cross3(e, sub(c, e0));
+    if (sign(dot3(u, u) - r2d2 * dot3(e, e)) <= 0) return true;
+  }
+  Vec3<NT> n = cross3(sub(t[1], t[0]), sub(t[2], t[0]));
+  if (!strictly_inside_sides(c, t, n)) return false;  // also n = 0
+  NT h = dot3(n, sub(c, t[0]));
+  return sign(h * h - r2d2 * dot3(n, n)) <= 0;
+}
+
+template bool triangles_meet(const std::array<Vec3<arith::Rational>, 3> &,
+                             const std::array<Vec3<arith::Rational>, 3> &);
+template bool triangles_meet(const std::array<Vec3<arith::Interval>, 3> &,
+                             const std::array<Vec3<arith::Interval>, 3> &);
+template bool ball_meets_triangle(const Vec3<arith::Rational> &, const arith::Rational &,
+                                  const std::array<Vec3<arith::Rational>, 3> &);
+template bool ball_meets_triangle(const Vec3<arith::Interval> &, const arith::Interval &,
+                                  const std::array<Vec3<arith::Interval>, 3> &);
+
+}  // namespace pccd::pred
