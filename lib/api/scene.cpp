@@ -23,8 +23,7 @@ PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_mot
     require(s, "scene");
     require(body, "body");
     pccd::broad::Scene_body b;
-    b.mesh = body->mesh;
-    b.spheres = body->spheres;
+    b.body = body->data;
     if (motion) b.motion = motion->m;
     s->bodies.push_back(std::move(b));
     if (index) *index = s->bodies.size() - 1;

@@ -17,5 +17,9 @@ template <> inline Interval from_int<Interval>(long v) { return Interval(static_
 template <class NT> NT from_rational(const Rational &q);
 template <> inline Rational from_rational<Rational>(const Rational &q) { return q; }
 template <> inline Interval from_rational<Interval>(const Rational &q) { return enclose(q); }
+// A point (an exact number of NT) >= q: q itself, or the double just above it.
+template <class NT> NT from_rational_up(const Rational &q);
+template <> inline Rational from_rational_up<Rational>(const Rational &q) { return q; }
+template <> inline Interval from_rational_up<Interval>(const Rational &q) { return Interval(enclose(q).hi); }
 
 }  // namespace pccd::arith

@@ -71,7 +71,7 @@ Pose_piece enclose_pose(const Moving_body &b, double a, double t1) {
     }
     max_or = std::fmax(max_or, p.orad[i]);
   }
-  p.spread = p.finite ? 3 * max_rr * b.reach + max_or : kInf;
+  p.spread = p.finite ? 3 * max_rr * b.data->reach + max_or : kInf;
   return p;
 }
 

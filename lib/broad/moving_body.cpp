@@ -32,13 +32,12 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-Moving_body prepare_body(std::shared_ptr<const motion::Mesh_body> mesh,
-                         std::shared_ptr<const motion::Sphere_body> spheres,
-                         const motion::Rigid_motion &m) {
+Moving_body prepare_body(std::shared_ptr<const Body_data> data, const motion::Rigid_motion &m) {
   m.validate();
   Moving_body b;
-  b.mesh = std::move(mesh);
-  b.spheres = std::move(spheres);
+  b.data = std::move(data);
+  b.mesh = b.data->mesh;
+  b.spheres = b.data->spheres;
   b.motion = m;
   b.Rn = motion::rotation_numerator(m.r);
   b.O = m.offset_numerator();
@@ -48,7 +47,15 @@ Moving_body prepare_body(std::shared_ptr<const motion::Mesh_body> mesh,
     b.O_i[i] = poly::convert<Interval>(b.O[i]);
   }
   b.W_i = poly::convert<Interval>(b.W);
+  return b;
+}
 
+std::shared_ptr<const Body_data> make_body_data(std::shared_ptr<const motion::Mesh_body> mesh,
+                                                std::shared_ptr<const motion::Sphere_body> spheres) {
+  auto data = std::make_shared<Body_data>();
+  Body_data &b = *data;
+  b.mesh = std::move(mesh);
+  b.spheres = std::move(spheres);
   const auto &P = b.mesh ? b.mesh->vertices() : b.spheres->centers();
   b.pts.resize(P.size());
   double err = 0;
@@ -107,7 +114,7 @@ Moving_body prepare_body(std::shared_ptr<const motion::Mesh_body> mesh,
   b.reach = (reach + pad) * (1 + 1e-12);
   b.feature = median(sizes);
   if (!(b.feature > 0)) b.feature = b.reach > 0 ? b.reach : 1.0;
-  return b;
+  return data;
 }
 
 }  // namespace pccd::broad

@@ -15,8 +15,30 @@ using arith::Interval;
 using arith::Rational;
 using motion::Poly_q;
 
-struct Moving_body {
+// Motion-independent data of a body, derived once per body (pccd_body keeps it).
+struct Body_data {
   std::shared_ptr<const motion::Mesh_body> mesh;     // exactly one of mesh / spheres
+  std::shared_ptr<const motion::Sphere_body> spheres;
+  // Points: mesh vertices or ball centres. pts[k] is the nearest double of each
+  // coordinate; |exact - pts| <= pt_err (an upper bound, for every coordinate).
+  std::vector<std::array<double, 3>> pts;
+  double pt_err = 0;
+  std::vector<double> radius_up;  // radii rounded up (spheres)
+  // Mesh only: the three edge indices of each triangle (edge (a, b) of mesh->edges();
+  // -1 for a side with a repeated index) and the vertices used by some triangle.
+  std::vector<std::array<int64_t, 3>> tri_edges;
+  std::vector<uint32_t> surface_vertices;
+  double reach = 0;    // upper bound of max_k |pts_k|_inf (+ radius): for the spread
+  double feature = 0;  // typical feature size (median triangle box diagonal / diameter)
+  std::array<double, 3> box_c{}, box_h{};  // body-frame box of all points (+ radii)
+};
+
+std::shared_ptr<const Body_data> make_body_data(std::shared_ptr<const motion::Mesh_body> mesh,
+                                                std::shared_ptr<const motion::Sphere_body> spheres);
+
+struct Moving_body {
+  std::shared_ptr<const Body_data> data;
+  std::shared_ptr<const motion::Mesh_body> mesh;     // = data->mesh, data->spheres
   std::shared_ptr<const motion::Sphere_body> spheres;
   motion::Rigid_motion motion;
 
@@ -29,22 +51,8 @@ struct Moving_body {
   std::array<poly::Poly<Interval>, 3> O_i;
   poly::Poly<Interval> W_i;
 
-  // Points: mesh vertices or ball centres. pts[k] is the nearest double of each
-  // coordinate; |exact - pts| <= pt_err (an upper bound, for every coordinate).
-  std::vector<std::array<double, 3>> pts;
-  double pt_err = 0;
-  std::vector<double> radius_up;  // radii rounded up (spheres)
-  // Mesh only: the three edge indices of each triangle (edge (a, b) of mesh->edges();
-  // -1 for a side with a repeated index) and the vertices used by some triangle.
-  std::vector<std::array<int64_t, 3>> tri_edges;
-  std::vector<uint32_t> surface_vertices;
-
-  double reach = 0;    // upper bound of max_k |pts_k|_inf (+ radius): for the spread
-  double feature = 0;  // typical feature size (median triangle box diagonal / diameter)
-  std::array<double, 3> box_c{}, box_h{};  // body-frame box of all points (+ radii)
-
   bool is_mesh() const { return static_cast<bool>(mesh); }
-  size_t n_points() const { return pts.size(); }
+  size_t n_points() const { return data->pts.size(); }
   // The exact body-frame coordinates of point k.
   const motion::Point3_q &point(size_t k) const {
     return mesh ? mesh->vertices()[k] : spheres->centers()[k];
@@ -52,8 +60,6 @@ struct Moving_body {
 };
 
 // Validates the motion (Input_error when r(t) vanishes on [0, 1]) and derives the data.
-Moving_body prepare_body(std::shared_ptr<const motion::Mesh_body> mesh,
-                         std::shared_ptr<const motion::Sphere_body> spheres,
-                         const motion::Rigid_motion &m);
+Moving_body prepare_body(std::shared_ptr<const Body_data> data, const motion::Rigid_motion &m);
 
 }  // namespace pccd::broad

@@ -157,7 +157,7 @@ std::vector<std::pair<Feature_ref, Feature_ref>> Pair_ctx::contacts(
         Feature_ref m;
         switch (f.kind) {
           case pred::SPHERE_EDGE: {
-            const int64_t e = side(ts).tri_edges[t][f.points[1] - 1];
+            const int64_t e = side(ts).data->tri_edges[t][f.points[1] - 1];
             if (e < 0) throw arith::Internal_error("ball contact on a degenerate side");
             m = {F_EDGE, static_cast<uint32_t>(e)};
             break;

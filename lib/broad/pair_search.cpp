@@ -36,7 +36,7 @@ struct Side {
 
   const Box &point(const Pose_piece &pose, uint32_t k) {
     if (vstamp[k] != stamp) {
-      vbox[k] = point_box(pose, b->pts[k], b->pt_err);
+      vbox[k] = point_box(pose, b->data->pts[k], b->data->pt_err);
       vstamp[k] = stamp;
     }
     return vbox[k];
@@ -47,7 +47,7 @@ struct Side {
       const auto &t = b->mesh->triangles()[e];
       return hull(hull(point(pose, t[0]), point(pose, t[1])), point(pose, t[2]));
     }
-    return grow(point(pose, e), b->radius_up[e]);
+    return grow(point(pose, e), b->data->radius_up[e]);
   }
   size_t n_elements() const {
     return b->is_mesh() ? b->mesh->triangles().size() : b->spheres->centers().size();
@@ -71,7 +71,7 @@ class Searcher {
       all[s].resize(side_[s].n_elements());
       for (size_t e = 0; e < all[s].size(); ++e) all[s][e] = static_cast<uint32_t>(e);
     }
-    delta_ = std::min(ctx_.side(0).feature, ctx_.side(1).feature);
+    delta_ = std::min(ctx_.side(0).data->feature, ctx_.side(1).data->feature);
     piece(0.0, 1.0, 0, all[0], all[1]);
   }
 
@@ -85,6 +85,7 @@ class Searcher {
   bool found_any_ = false, have_best_ = false;
   Rational best_hi_;
   double delta_ = 0;
+  double piece_lo_ = 0, piece_hi_ = 1;  // the leaf being intersected
 
   bool pruned(double a) const {
     if (opt_.all_contacts || !have_best_) return false;
@@ -93,14 +94,17 @@ class Searcher {
     return ra > best_hi_;
   }
 
-  // Solves the new pairs among cand (in parallel), appends them in key order.
-  void solve(std::vector<Prim_pair> cand) {
-    std::sort(cand.begin(), cand.end());
-    cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
-    std::vector<Prim_pair> fresh;
-    for (const Prim_pair &p : cand)
-      if (seen_.insert(p.key()).second) fresh.push_back(p);
+  pred::Solve_options bounded_options() const {
+    pred::Solve_options o = opt_.solve;
+    if (!opt_.all_contacts && have_best_ && opt_.solve.want_time && best_hi_ < 1) o.until = best_hi_;
+    return o;
+  }
+
+  // Solves the pairs of `fresh` (not seen before) in parallel; appends the touching ones
+  // in the given order and updates the best upper bound.
+  void solve_batch(const std::vector<Prim_pair> &fresh) {
     if (fresh.empty()) return;
+    const pred::Solve_options o = bounded_options();
     std::vector<std::unique_ptr<Solved_pair>> res(fresh.size());
     pool_.parallel_for(fresh.size(), [&](size_t i) {
       auto s = std::make_unique<Solved_pair>();
@@ -112,11 +116,12 @@ class Searcher {
           s->result.lo = s->result.hi = 0;
         }
       } else {
-        s->result = ctx_.solve(fresh[i], opt_.solve);
+        s->result = ctx_.solve(fresh[i], o);
       }
       res[i] = std::move(s);
     });
     for (auto &s : res) {
+      seen_.insert(s->prim.key());
       if (s->prim.type == TT) ++out_.stats.static_tests;
       else ++out_.stats.solved;
       if (s->result.collides) {
@@ -128,6 +133,18 @@ class Searcher {
       if (s->result.collides) out_.solved.push_back(std::move(s));
     }
   }
+
+  // The pairs of cand not seen before, once each, in key order.
+  std::vector<Prim_pair> fresh_of(std::vector<Prim_pair> cand) const {
+    std::sort(cand.begin(), cand.end());
+    cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+    std::vector<Prim_pair> fresh;
+    for (const Prim_pair &p : cand)
+      if (!seen_.count(p.key())) fresh.push_back(p);
+    return fresh;
+  }
+
+  void solve(std::vector<Prim_pair> cand) { solve_batch(fresh_of(std::move(cand))); }
 
   void static_pass() {
     std::vector<Prim_pair> cand;
@@ -160,8 +177,8 @@ class Searcher {
           cand.push_back({type, va ? (*va)[i] : uint32_t(i), vb ? (*vb)[j] : uint32_t(j)});
     };
     if (A.is_mesh() && B.is_mesh()) {
-      all(VF, 0, B.mesh->triangles().size(), &A.surface_vertices, nullptr);
-      all(FV, A.mesh->triangles().size(), 0, nullptr, &B.surface_vertices);
+      all(VF, 0, B.mesh->triangles().size(), &A.data->surface_vertices, nullptr);
+      all(FV, A.mesh->triangles().size(), 0, nullptr, &B.data->surface_vertices);
       all(EE, A.mesh->edges().size(), B.mesh->edges().size(), nullptr, nullptr);
     } else if (!A.is_mesh() && !B.is_mesh()) {
       all(SS, A.n_points(), B.n_points(), nullptr, nullptr);
@@ -192,7 +209,7 @@ class Searcher {
     ++out_.stats.pieces;
     Pose_piece pose[2] = {enclose_pose(ctx_.side(0), a, b), enclose_pose(ctx_.side(1), a, b)};
     for (int s = 0; s < 2; ++s) ++side_[s].stamp;
-    Box bodyB = frame_box(pose[1], ctx_.side(1).box_c, ctx_.side(1).box_h);
+    Box bodyB = frame_box(pose[1], ctx_.side(1).data->box_c, ctx_.side(1).data->box_h);
     Box hullA = filter(0, pose[0], actA, bodyB);
     if (actA.empty()) return;
     Box hullB = filter(1, pose[1], actB, hullA);
@@ -202,7 +219,11 @@ class Searcher {
     const bool leaf = depth >= kMax_depth ||
                       std::max(pose[0].spread, pose[1].spread) <= delta_ ||
                       double(actA.size()) * double(actB.size()) <= kLeaf_pairs;
-    if (leaf) return intersect(pose, actA, actB);
+    if (leaf) {
+      piece_lo_ = a;
+      piece_hi_ = b;
+      return intersect(pose, actA, actB);
+    }
     const double m = 0.5 * (a + b);  // exact: dyadic pieces
     piece(a, m, depth + 1, actA, actB);
     piece(m, b, depth + 1, std::move(actA), std::move(actB));
@@ -220,7 +241,7 @@ class Searcher {
           sd.vlisted[v] = sd.stamp;
           verts.push_back(v);
         }
-        const int64_t e = sd.b->tri_edges[t][k];
+        const int64_t e = sd.b->data->tri_edges[t][k];
         if (e >= 0 && sd.elisted[e] != sd.stamp) {
           sd.elisted[e] = sd.stamp;
           edges.push_back(static_cast<uint32_t>(e));
@@ -263,7 +284,60 @@ class Searcher {
       box_pairs(elem[0], elem[1], pairs);
       emit(!mA && !mB ? SS : !mA ? ST : TS, actA, actB);
     }
-    solve(std::move(cand));
+    solve_in_time_order(pose, std::move(cand));
+  }
+
+  // The box of one side's primitive of a pair over a pose (vertex, edge, triangle, ball).
+  Box prim_box(int s, uint8_t type, uint32_t k, const Pose_piece &pose) {
+    Side &sd = side_[s];
+    const bool vertex = (s == 0 && type == VF) || (s == 1 && type == FV);
+    if (vertex) return point_box(pose, sd.b->data->pts[k], sd.b->data->pt_err);
+    if (type == EE) {
+      const auto &e = sd.b->mesh->edges()[k];
+      return hull(point_box(pose, sd.b->data->pts[e[0]], sd.b->data->pt_err),
+                  point_box(pose, sd.b->data->pts[e[1]], sd.b->data->pt_err));
+    }
+    if (!sd.b->is_mesh()) return grow(point_box(pose, sd.b->data->pts[k], sd.b->data->pt_err), sd.b->data->radius_up[k]);
+    const auto &t = sd.b->mesh->triangles()[k];
+    Box h = point_box(pose, sd.b->data->pts[t[0]], sd.b->data->pt_err);
+    for (int v = 1; v < 3; ++v) h = hull(h, point_box(pose, sd.b->data->pts[t[v]], sd.b->data->pt_err));
+    return h;
+  }
+
+  // Candidates of a leaf piece [a, b]: each gets the start of the first of kSub equal
+  // sub-pieces on which its two boxes meet (a lower bound of its contacts in [a, b];
+  // none: no contact in [a, b], so it is left for a later piece). They are solved in
+  // order of that bound, in batches of fixed, growing sizes; a batch starts only with pairs whose
+  // bound is <= the best upper bound so far, and each pair is asked only for contacts
+  // up to that bound (pred::Solve_options::until). Batches do not depend on threads.
+  void solve_in_time_order(const Pose_piece pose[2], std::vector<Prim_pair> cand) {
+    std::vector<Prim_pair> fresh = fresh_of(std::move(cand));
+    if (fresh.empty()) return;
+    constexpr int kSub = 8;
+    constexpr size_t kBatch = 64;
+    const double a = piece_lo_, b = piece_hi_;
+    std::vector<std::array<Pose_piece, 2>> sub(kSub);
+    for (int k = 0; k < kSub; ++k)
+      for (int s = 0; s < 2; ++s)
+        sub[k][s] = enclose_pose(ctx_.side(s), a + (b - a) * k / kSub, k + 1 == kSub ? b : a + (b - a) * (k + 1) / kSub);
+    std::vector<std::pair<double, Prim_pair>> order;
+    for (const Prim_pair &p : fresh)
+      for (int k = 0; k < kSub; ++k)
+        if (boxes_meet(prim_box(0, p.type, p.a, sub[k][0]), prim_box(1, p.type, p.b, sub[k][1]))) {
+          order.push_back({a + (b - a) * k / kSub, p});
+          break;
+        }
+    std::sort(order.begin(), order.end(), [](const auto &x, const auto &y) {
+      return x.first != y.first ? x.first < y.first : x.second < y.second;
+    });
+    size_t size = 4;  // batches of 4, 8, ..., kBatch pairs: the first bound comes early
+    for (size_t start = 0; start < order.size(); start += size, size = std::min(kBatch, 2 * size)) {
+      std::vector<Prim_pair> batch;
+      for (size_t i = start; i < std::min(order.size(), start + size); ++i)
+        if (!pruned(order[i].first)) batch.push_back(order[i].second);
+      if (batch.empty()) break;  // sorted: every later bound is pruned too
+      solve_batch(batch);
+    }
   }
 };
 

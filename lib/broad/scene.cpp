@@ -47,7 +47,7 @@ Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_opti
   mb.reserve(bodies.size());
   for (size_t k = 0; k < bodies.size(); ++k) {
     try {
-      mb.push_back(prepare_body(bodies[k].mesh, bodies[k].spheres, bodies[k].motion));
+      mb.push_back(prepare_body(bodies[k].body, bodies[k].motion));
     } catch (const arith::Input_error &e) {
       throw arith::Input_error("bodies[" + std::to_string(k) + "].motion: " + e.what());
     }

@@ -9,8 +9,7 @@
 namespace pccd::broad {
 
 struct Scene_body {
-  std::shared_ptr<const motion::Mesh_body> mesh;  // exactly one of mesh / spheres
-  std::shared_ptr<const motion::Sphere_body> spheres;
+  std::shared_ptr<const Body_data> body;  // make_body_data, once per body
   motion::Rigid_motion motion;
 };
 

@@ -17,7 +17,18 @@ namespace pccd::poly {
 struct Search_options {
   Rational tol = Rational(1, 1000000000000);  // 1e-12
   bool want_time = true;
+  // Only contacts at times <= until matter: the search may answer "none" when the first
+  // contact is later. When it does find one, the answer (enclosure, exactness, systems)
+  // is exactly the one of until = 1: the bisection still runs on [0, 1] and only stops
+  // early once its lower end passes `until` (so results never depend on until).
+  Rational until = 1;
 };
+
+// lo is certainly beyond `until`.
+inline bool past(const Rational &lo, const Rational &until) { return lo > until; }
+inline bool past(const Interval &lo, const Rational &until) {
+  return arith::enclose(until).hi < lo.lo;
+}
 
 template <class NT>
 struct Search_result {
@@ -77,8 +88,27 @@ Search_result<NT> earliest_contact(const std::vector<System<NT>> &sys,
     return res;
   }
   NT lo = zero, hi = one;
+  const bool bounded = opt.until < 1;
+  if (bounded) {
+    // No contact in (0, u] with u >= until: none that matters (cheap early answer).
+    const NT u = arith::from_rational_up<NT>(opt.until);
+    bool any = false;
+    for (size_t i : active)
+      if (sys[i].meets(zero, u)) {
+        any = true;
+        break;
+      }
+    if (!any) {
+      res = Search_result<NT>();
+      return res;
+    }
+  }
   {
     while (wider_than(lo, hi, opt.tol)) {
+      if (bounded && past(lo, opt.until)) {
+        res = Search_result<NT>();  // the first contact is after `until`
+        return res;
+      }
       bool stepped = false;
       for (const NT &m : split_points(lo, hi)) {
         try {

@@ -35,6 +35,7 @@ poly::Search_result<NT> search(const Feature_set<NT> &set, const Solve_options &
   poly::Search_options so;
   so.tol = opt.tol;
   so.want_time = opt.want_time;
+  so.until = opt.until;
   return poly::earliest_contact(set.systems, so);
 }
 

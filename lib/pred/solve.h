@@ -16,6 +16,11 @@ struct Solve_options {
   arith::Rational tol = arith::Rational(1, 1000000000000);  // 1e-12
   bool want_time = true;
   bool want_exact = true;
+  // Only a first contact at a time <= until is wanted: a later one may be reported as
+  // no contact. A contact that is reported is the same as with until = 1
+  // (poly/earliest.h), so answers never depend on it. Body queries set it from the
+  // best contact found so far.
+  arith::Rational until = 1;
 };
 
 struct Contact_result {
