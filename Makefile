@@ -22,7 +22,7 @@ SRCS := $(sort $(wildcard lib/*/*.cpp))
 OBJS := $(patsubst lib/%.cpp,$(BUILD)/%.o,$(SRCS))
 DEPS := $(OBJS:.o=.d)
 
-APT_PKGS := libgmp-dev libmpfr-dev libcgal-dev libeigen3-dev g++ make python3-venv python3-dev valgrind
+APT_PKGS := libgmp-dev libmpfr-dev libcgal-dev libcgal-demo libeigen3-dev g++ make python3-venv python3-dev valgrind
 
 .PHONY: all deps lib venv test test-c test-py check-header check-symbols bench demo clean sanitize valgrind
 
@@ -110,6 +110,7 @@ sanitize:
 bench: all
 	$(VENV)/bin/pip install -q -r tests/bench/requirements.txt
 	$(VPY) tests/bench/bench_queries.py
+	$(VPY) tests/bench/bench_bodies.py
 
 demo: all
 	$(VENV)/bin/polyccd demo

@@ -115,8 +115,12 @@ def cmd_queries(args):
 
 
 def cmd_demo(args):
-    print(f"polyccd {__version__} demo: exact answers for degenerate moving primitives\n")
-    status = OK if run_cases(print) else FAILED
+    from ._demo_bodies import run_demo_scenes  # needs trimesh, gemmi, matplotlib
+    print(f"polyccd {__version__} demo: two real scenes, checked exactly\n")
+    results = run_demo_scenes(args.out, threads=args.threads)
+    status = OK if all(r[0].collides for r in results.values()) else FAILED
+    print(f"\nexact answers for degenerate moving primitives\n")
+    status = max(status, OK if run_cases(print) else FAILED)
     folder = query_dir()
     if folder is None:
         print("shared benchmark queries not found (set POLYCCD_QUERY_DIR to the "
@@ -147,7 +151,10 @@ def parser():
     c.add_argument("--kind", choices=CSV_KINDS, help="the query kind (default: from the "
                    "folder name vertex-face/ or edge-edge/)")
     c.set_defaults(run=cmd_queries)
-    c = sub.add_parser("demo", help="illustrative exact answers, then the benchmark summary")
+    c = sub.add_parser("demo", help="two real scenes (CGAL pinions, darunavir in HIV protease) "
+                       "with PNGs, illustrative primitive answers, the benchmark summary")
+    c.add_argument("--out", default="build/demo", help="folder of the PNGs (default build/demo)")
+    c.add_argument("--threads", type=int, default=2, help="worker threads (default 2)")
     c.set_defaults(run=cmd_demo)
     return p
 
