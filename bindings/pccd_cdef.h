@@ -188,5 +188,6 @@ int pccd_report_contact(const pccd_report *rep, size_t pair, size_t contact, int
 
 typedef struct pccd_scene_stats {
   unsigned long long pieces, leaves, candidates, solved, static_tests, refined;
+  unsigned long long by_stage[5];
 } pccd_scene_stats;
 int pccd_report_stats(const pccd_report *rep, pccd_scene_stats *stats);

@@ -470,6 +470,7 @@ PCCD_API int pccd_report_contact(const pccd_report *rep, size_t pair, size_t con
 /* Work counters of the last solve (for benchmarks). */
 typedef struct pccd_scene_stats {
   unsigned long long pieces, leaves, candidates, solved, static_tests, refined;
+  unsigned long long by_stage[5]; /* solved feature pairs by the pccd_stage that decided */
 } pccd_scene_stats;
 PCCD_API int pccd_report_stats(const pccd_report *rep, pccd_scene_stats *stats);
 

@@ -155,7 +155,8 @@ PCCD_API int pccd_report_stats(const pccd_report *rep, pccd_scene_stats *stats) 
     if (!solved(rep, "pccd_report_stats")) return PCCD_ESTATE;
     require(stats, "stats");
     const auto &s = rep->r.stats;
-    *stats = {s.pieces, s.leaves, s.candidates, s.solved, s.static_tests, s.refined};
+    *stats = {s.pieces, s.leaves, s.candidates, s.solved, s.static_tests, s.refined, {0, 0, 0, 0, 0}};
+    for (int k = 0; k < 5; ++k) stats->by_stage[k] = s.by_stage[k];
     return PCCD_OK;
   });
 }

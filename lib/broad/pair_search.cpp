@@ -16,6 +16,7 @@ void Search_stats::add(const Search_stats &o) {
   solved += o.solved;
   static_tests += o.static_tests;
   refined += o.refined;
+  for (int k = 0; k < 5; ++k) by_stage[k] += o.by_stage[k];
 }
 
 namespace {
@@ -123,7 +124,10 @@ class Searcher {
     for (auto &s : res) {
       seen_.insert(s->prim.key());
       if (s->prim.type == TT) ++out_.stats.static_tests;
-      else ++out_.stats.solved;
+      else {
+        ++out_.stats.solved;
+        if (s->result.stage >= 0 && s->result.stage < 5) ++out_.stats.by_stage[s->result.stage];
+      }
       if (s->result.collides) {
         found_any_ = true;
         const Rational hi = opt_.solve.want_time ? s->result.hi : Rational(-1);

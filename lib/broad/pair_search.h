@@ -48,6 +48,7 @@ struct Search_stats {
   uint64_t solved = 0;      // distinct feature pairs solved exactly
   uint64_t static_tests = 0;
   uint64_t refined = 0;     // re-solves with a finer tolerance (combine.h)
+  uint64_t by_stage[5] = {0, 0, 0, 0, 0};  // solved pairs by deciding pccd_stage
   void add(const Search_stats &o);
 };
 

@@ -166,6 +166,8 @@ def _read(rep, names):
     check(lib.pccd_report_stats(rep, stats))
     stat_dict = {k: int(getattr(stats, k)) for k in
                  ("pieces", "leaves", "candidates", "solved", "static_tests", "refined")}
+    for k, name in ((1, "bounds"), (2, "bernstein"), (3, "interval"), (4, "exact")):
+        stat_dict["stage_" + name] = int(stats.by_stage[k])
     whole = _time(rep, _WHOLE, _WHOLE) if collides else None
     return SceneResult(collides, whole, tuple(pairs), tuple(first), stat_dict)
 
