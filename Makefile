@@ -73,6 +73,12 @@ $(BUILD)/test_motion: tests/c/test_motion.c include/polyccd.h $(LIB)
 	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_motion.c \
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
 
+# The scene C test (pccd_scene_*, pccd_report_*), linked against the shared library.
+$(BUILD)/test_scene: tests/c/test_scene.c include/polyccd.h $(LIB)
+	@mkdir -p $(BUILD)
+	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_scene.c \
+	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
+
 # The body C test (pccd_body_*), linked against the shared library.
 $(BUILD)/test_body: tests/c/test_body.c include/polyccd.h $(LIB)
 	@mkdir -p $(BUILD)
@@ -89,10 +95,11 @@ check-symbols: $(LIB)
 	if [ -n "$$bad" ]; then echo "exported symbols without pccd_ prefix:"; echo "$$bad"; exit 1; fi; \
 	echo "nm -D: only pccd_ symbols exported ($$(nm -D --defined-only $(LIB) | grep -c ' T pccd_') functions)"
 
-test-c: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body check-header check-symbols
+test-c: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene check-header check-symbols
 	$(BUILD)/test_api
 	$(BUILD)/test_motion
 	$(BUILD)/test_body
+	$(BUILD)/test_scene
 
 test-py: all $(BUILD)/poly_probe
 	POLYCCD_QUERY_DIR=$${POLYCCD_QUERY_DIR:-../shared/data/ccd-queries} $(VPY) -m pytest -q tests
@@ -100,7 +107,7 @@ test-py: all $(BUILD)/poly_probe
 test: all test-c test-py
 
 # Memory checks: the C test and the corpus under valgrind (see tests/c/run_valgrind.sh).
-valgrind: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body
+valgrind: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene
 	bash tests/c/run_valgrind.sh
 
 # ASan + UBSan build of the library and the C test (tests/c/run_sanitizers.sh).

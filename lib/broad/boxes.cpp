@@ -1,5 +1,10 @@
 #include "broad/boxes.h"
 
+// CGAL's headers otherwise add a load-time test of the FPU rounding modes (for its
+// Interval_nt, unused here): it switches the rounding mode during library loading and
+// aborts where rounding modes are not emulated (valgrind). polyccd never relies on the
+// rounding mode (see arith/interval.h and the error bound in boxes.h).
+#define CGAL_DISABLE_ROUNDING_MATH_CHECK
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/box_intersection_d.h>
 

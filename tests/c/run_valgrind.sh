@@ -33,7 +33,7 @@ if ! command -v valgrind >/dev/null; then
 fi
 
 # ---- 1. the C tests ------------------------------------------------------------------
-for prog in test_api test_motion test_body; do
+for prog in test_api test_motion test_body test_scene; do
   log="$BUILD/valgrind-$prog.log"
   echo "== valgrind $BUILD/$prog (log: $log)"
   "${VG[@]}" --log-file="$log" "$BUILD/$prog" > "$BUILD/valgrind-$prog.out"
