@@ -7,11 +7,11 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def _block(lang):
+def _block(lang, k=0):
     text = open(os.path.join(ROOT, "README.md"), encoding="utf-8").read()
     blocks = re.findall(r"```" + lang + r"\n(.*?)```", text, re.S)
-    assert blocks, f"no {lang} block in README.md"
-    return blocks[0]
+    assert len(blocks) > k, f"no {lang} block {k} in README.md"
+    return blocks[k]
 
 
 def test_python_example_runs(tmp_path):
@@ -20,6 +20,15 @@ def test_python_example_runs(tmp_path):
     out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, cwd=ROOT)
     assert out.returncode == 0, out.stderr
     assert out.stdout.startswith("1/3 (Feature(kind='vertex-face'"), out.stdout
+
+
+def test_python_scene_example_runs(tmp_path):
+    # Cube edge 10 is (3, 5), the diagonal of the face x = 1 through its centre.
+    script = tmp_path / "scene.py"
+    script.write_text(_block("python", 1))
+    out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, cwd=ROOT)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout == "3/4 [(('edge', 10), ('sphere', 0))]\n", out.stdout
 
 
 def test_c_example_runs(tmp_path):
