@@ -53,6 +53,16 @@ bool ball_meets_triangle_at_zero(const Query_data<NT> &q) {
   return ball_meets_triangle(x[0], r2d2, {{x[1], x[2], x[3]}});
 }
 
+// The query over [0, u] reparametrized to [0, 1] (for the filters of a bounded search).
+Query_data<Interval> restricted(const Query_data<Interval> &q, double u) {
+  Query_data<Interval> r = q;
+  const Interval zero(0.0), end(u);
+  for (auto &p : r.p)
+    for (int a = 0; a < 3; ++a) p[a] = poly::reparametrize(p[a], zero, end);
+  if (!r.scale.c.empty()) r.scale = poly::reparametrize(r.scale, zero, end);
+  return r;
+}
+
 void set_contact_at_zero(Contact_result &out, int stage) {
   out.collides = out.exact = true;
   out.lo = out.hi = 0;
@@ -74,6 +84,21 @@ Contact_result solve(const Query_data<Interval> &iq,
   if (bernstein_excludes(iq)) {
     out.stage = PCCD_STAGE_BERNSTEIN;
     return out;
+  }
+  // Only contacts up to `until` are wanted: the same filters over [0, u], u >= until.
+  if (opt.want_time && opt.until < 1) {
+    const double u = arith::enclose(opt.until).hi;
+    if (u < 1) {
+      const Query_data<Interval> r = restricted(iq, u);
+      if (bounds_separate(r)) {
+        out.stage = PCCD_STAGE_BOUNDS;
+        return out;
+      }
+      if (bernstein_excludes(r)) {
+        out.stage = PCCD_STAGE_BERNSTEIN;
+        return out;
+      }
+    }
   }
   if (iq.kind == SPHERE_TRIANGLE) {
     bool meets;

@@ -388,9 +388,15 @@ def _draw(ax, fig, placed, features, center, half, *, max_triangles, labels, zoo
         ax.scatter(p[:, 0], p[:, 1], p[:, 2], s=60 if zoomed else 30, c=HIGHLIGHT,
                    edgecolors="black", linewidths=1.0, depthshade=False, zorder=7)
     for b, k, c, r in balls:
-        ax.scatter([c[0]], [c[1]], [c[2]], s=(r * ppu) ** 2 * np.pi, c=HIGHLIGHT,
-                   edgecolors="black", linewidths=1.2, alpha=0.95, depthshade=False,
-                   zorder=7)
+        if zoomed:  # true balls in data units, so tangency shows as tangency
+            u, v = np.meshgrid(np.linspace(0, 2 * np.pi, 32), np.linspace(0, np.pi, 16))
+            ax.plot_surface(c[0] + r * np.cos(u) * np.sin(v), c[1] + r * np.sin(u) * np.sin(v),
+                            c[2] + r * np.cos(v), color=HIGHLIGHT, alpha=0.9, linewidth=0,
+                            shade=True, zorder=7)
+        else:
+            ax.scatter([c[0]], [c[1]], [c[2]], s=(r * ppu) ** 2 * np.pi, c=HIGHLIGHT,
+                       edgecolors="black", linewidths=1.2, alpha=0.95, depthshade=False,
+                       zorder=7)
         if zoomed and labels is not None and labels.get(b) is not None:
             ax.text(c[0], c[1], c[2] + r * 1.1, f" {labels[b](k)}", fontsize=8, zorder=8)
     for body, path in zip(placed, paths or ()):
