@@ -166,6 +166,20 @@ def _expect_at(value, path):
     return Expect(collides, first)
 
 
+def options_and_labels(top):
+    """The options.time_tolerance text of a case (None when absent), after checking
+    the optional "name" and "source" labels are strings."""
+    tolerance = None
+    if "options" in top:
+        options = _object_at(top["options"], "options")
+        if "time_tolerance" in options:
+            tolerance = number_at(options["time_tolerance"], "options.time_tolerance")
+    for key in ("name", "source"):
+        if key in top:
+            _string_at(top[key], key)
+    return tolerance
+
+
 def query_case(doc):
     """Validates a parsed query document (formats.md, polyccd-query/1)."""
     top = _object_at(doc, "(top level)")
@@ -197,14 +211,7 @@ def query_case(doc):
                  for k, r in enumerate(_list_at(top["radii"], "radii", "[ra, rb]", 2))]
     elif "radii" in top:
         raise InputError(f"radii: only sphere-sphere queries have radii, not {kind}")
-    tolerance = None
-    if "options" in top:
-        options = _object_at(top["options"], "options")
-        if "time_tolerance" in options:
-            tolerance = number_at(options["time_tolerance"], "options.time_tolerance")
-    for key in ("name", "source"):
-        if key in top:
-            _string_at(top[key], key)
+    tolerance = options_and_labels(top)
     expect = _expect_at(top["expect"], "expect") if "expect" in top else None
     return QueryCase(kind, points, radii, tolerance, expect)
 

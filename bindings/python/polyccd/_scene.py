@@ -12,7 +12,7 @@ from typing import Optional, Tuple
 from ._body import Mesh, Spheres
 from ._errors import InputError, check, error_for, last_error
 from ._json import (SCENE_FORMAT, _expect_at, _list_at, _object_at, _string_at, describe, load,
-                    number_at)
+                    number_at, options_and_labels)
 from ._motion import Motion
 from ._numbers import fraction_from_text, show
 from ._pccd import ffi, lib
@@ -186,6 +186,13 @@ def _traj_lists(value, path, count, what):
             for k, comp in enumerate(comps)]
 
 
+def _points_at(value, path):
+    """The number texts of a list of [x, y, z]."""
+    return [[number_at(c, f"{path}[{i}][{a}]") for a, c in
+             enumerate(_list_at(v, f"{path}[{i}]", "[x, y, z]", 3))]
+            for i, v in enumerate(_list_at(value, path, "a list of [x, y, z]"))]
+
+
 def _with_place(path, fn, *args):
     """Runs a constructor; an InputError gets the JSON path in front."""
     try:
@@ -206,10 +213,7 @@ def _body_at(value, path, index):
         for key in ("vertices", "triangles"):
             if key not in m:
                 raise InputError(f"{path}.mesh.{key}: missing")
-        verts = [[number_at(c, f"{path}.mesh.vertices[{i}][{a}]") for a, c in
-                  enumerate(_list_at(v, f"{path}.mesh.vertices[{i}]", "[x, y, z]", 3))]
-                 for i, v in enumerate(_list_at(m["vertices"], f"{path}.mesh.vertices",
-                                                "a list of [x, y, z]"))]
+        verts = _points_at(m["vertices"], f"{path}.mesh.vertices")
         tris = []
         for i, t in enumerate(_list_at(m["triangles"], f"{path}.mesh.triangles", "a list of [i, j, k]")):
             row = []
@@ -226,10 +230,7 @@ def _body_at(value, path, index):
         for key in ("centers", "radii"):
             if key not in s:
                 raise InputError(f"{path}.spheres.{key}: missing")
-        centers = [[number_at(c, f"{path}.spheres.centers[{i}][{a}]") for a, c in
-                    enumerate(_list_at(v, f"{path}.spheres.centers[{i}]", "[x, y, z]", 3))]
-                   for i, v in enumerate(_list_at(s["centers"], f"{path}.spheres.centers",
-                                                  "a list of [x, y, z]"))]
+        centers = _points_at(s["centers"], f"{path}.spheres.centers")
         radii = [number_at(r, f"{path}.spheres.radii[{i}]")
                  for i, r in enumerate(_list_at(s["radii"], f"{path}.spheres.radii", "a list of radii"))]
         shape = _with_place(f"{path}.spheres", Spheres, centers, radii)
@@ -260,14 +261,7 @@ def scene_from_doc(doc):
             raise InputError(f"bodies[{i}].name: \"{n}\" is used by bodies[{names.index(n)}] too")
     if len(bodies) < 2:
         raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
-    tolerance = None
-    if "options" in top:
-        options = _object_at(top["options"], "options")
-        if "time_tolerance" in options:
-            tolerance = number_at(options["time_tolerance"], "options.time_tolerance")
-    for key in ("name", "source"):
-        if key in top:
-            _string_at(top[key], key)
+    tolerance = options_and_labels(top)
     expect = None
     if "expect" in top:
         expect = _expect_at(top["expect"], "expect")
