@@ -4,16 +4,17 @@ namespace pccd::broad {
 
 using arith::Rational;
 
-First_contact first_contact(std::vector<const pred::Contact_result *> res,
-                            const std::function<const pred::Contact_result *(size_t)> &refine) {
+First_contact first_contact(
+    std::vector<const pred::Contact_result *> res,
+    const std::function<const pred::Contact_result *(size_t, const Rational &)> &refine) {
   First_contact out;
-  std::vector<size_t> found;
-  for (size_t i = 0; i < res.size(); ++i)
-    if (res[i]->collides) found.push_back(i);
-  if (found.empty()) return out;
-  out.collides = true;
   constexpr int kMax_rounds = 64;
   for (int round = 0;; ++round) {
+    std::vector<size_t> found;
+    for (size_t i = 0; i < res.size(); ++i)
+      if (res[i]->collides) found.push_back(i);
+    if (found.empty()) return out;  // only before the first round (E's owner stays)
+    out.collides = true;
     const pred::Contact_result *lo_owner = nullptr, *hi_owner = nullptr, *exact_min = nullptr;
     for (size_t i : found) {
       const pred::Contact_result *r = res[i];
@@ -45,7 +46,7 @@ First_contact first_contact(std::vector<const pred::Contact_result *> res,
         return out;
       }
       if (!below && round < kMax_rounds) {
-        for (size_t i : straddle) res[i] = refine(i);
+        for (size_t i : straddle) res[i] = refine(i, E);
         continue;
       }
     }

@@ -24,8 +24,10 @@ struct First_contact {
   std::vector<size_t> which;  // the results touching first (exact) or possibly first
 };
 
-// results[i] may be replaced by refine(i) (a finer re-solve of the same pair).
-First_contact first_contact(std::vector<const pred::Contact_result *> results,
-                            const std::function<const pred::Contact_result *(size_t)> &refine);
+// results[i] may be replaced by refine(i, E): a finer re-solve of the same pair, which
+// may also answer "no contact up to E" (then t_i > E, and the pair drops out).
+First_contact first_contact(
+    std::vector<const pred::Contact_result *> results,
+    const std::function<const pred::Contact_result *(size_t, const arith::Rational &)> &refine);
 
 }  // namespace pccd::broad

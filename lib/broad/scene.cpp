@@ -16,12 +16,11 @@ bool contact_less(const Contact_report &x, const Contact_report &y) {
   return x.b < y.b;
 }
 
-// One body pair's outcome with the storage that combine.h refinements need.
+// One body pair's outcome.
 struct Pair_work {
   size_t i, j;
   std::unique_ptr<Pair_ctx> ctx;
   Pair_outcome out;
-  std::vector<std::unique_ptr<Solved_pair>> refined;
 };
 
 // First contact over a set of solved pairs (possibly of several body pairs).
@@ -30,12 +29,18 @@ First_contact combine(std::vector<std::pair<Pair_work *, size_t>> items, const S
   std::vector<const pred::Contact_result *> res;
   for (auto &it : items) res.push_back(&it.first->out.solved[it.second]->result);
   std::vector<int> rounds(items.size(), 0);
-  return first_contact(res, [&](size_t k) {
+  return first_contact(res, [&](size_t k, const Rational &E) {
+    // The finer result replaces the old one, so a later combine (the scene's, after the
+    // pair's) starts from it.
     Pair_work *w = items[k].first;
-    const Solved_pair &cur = *w->out.solved[items[k].second];
-    w->refined.push_back(refine_pair(*w->ctx, cur, opt.solve, rounds[k]++));
+    std::unique_ptr<Solved_pair> &cur = w->out.solved[items[k].second];
+    // First-contact mode only needs contacts up to E (a pair found beyond drops out of
+    // this combine); all_contacts keeps each pair's own first time.
+    pred::Solve_options o = opt.solve;
+    if (!opt.all_contacts) o.until = E;
+    cur = refine_pair(*w->ctx, *cur, o, rounds[k]++);
     ++stats.refined;
-    return &w->refined.back()->result;
+    return &cur->result;
   });
 }
 
