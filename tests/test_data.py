@@ -376,6 +376,14 @@ def test_run_demo_scenes(tmp_path):
         assert _png_size(png) == (1600, 800) and png.stat().st_size > 30000
         ct = result.first_contact
         assert ct.lo <= ct.hi and ct.hi - ct.lo <= Fraction(1, 10 ** 12)
+    # leaving from the crystal pose: the van der Waals balls already overlap (t = 0),
+    # e.g. Asp25 OD1 of chain B with O18 (2.54 A apart, radii 1.52 + 1.52)
+    leave = results["ligand_leaving"][0]
+    assert leave.first_contact.exact == 0
+    protease, ligand = _demo_scenes.ligand_scene("leave")[0]
+    labels = {(protease.shape.info.label(c.a[1]), ligand.shape.info.label(c.b[1]))
+              for c in leave.first[0].contacts}
+    assert any(a == "B:ASP25 OD1" and b.endswith(" O18") for a, b in labels), labels
     # the exact answers agree with float estimates of the same scenes
     mech = results["mechanical"][0].first_contact
     bodies, _ = _demo_scenes.mechanical_scene()
