@@ -3,7 +3,7 @@ renderer (polyccd._render) and the demo scenes (polyccd._demo_scenes).
 
 The CGAL files come from Debian's libcgal-demo package, installed with apt-get when it
 is missing and the tests run as root, and extracted into $POLYCCD_DATA_DIR (default
-build/data). The float checks of the demo scenes (python-fcl through trimesh, numpy
+build/data). The float checks of the demo scenes (python-fcl, numpy
 distances) only check how the scenes were built; they decide no contact.
 """
 import os
@@ -282,11 +282,19 @@ def test_render_scene_needs_float_geometry(tmp_path):
 
 # ---------------------------------------------------------------------- demo scenes ---
 
-def _transform(motion, t):
-    R, o = _render._float_pose(motion, t)
-    T = np.eye(4)
-    T[:3, :3], T[:3, 3] = R, o
-    return T
+def _fcl_state(mesh, motion_a, motion_b, t):
+    """(overlap, distance) of two copies of mesh at their float poses at t, by python-fcl
+    directly (trimesh's collision manager would also need scipy)."""
+    import fcl
+    model = fcl.BVHModel()
+    model.beginModel(len(mesh.triangles), len(mesh.vertices))
+    model.addSubModel(np.asarray(mesh.vertices, float), np.asarray(mesh.triangles, np.int32))
+    model.endModel()
+    objects = [fcl.CollisionObject(model, fcl.Transform(*_render._float_pose(m, t)))
+               for m in (motion_a, motion_b)]
+    hit = fcl.collide(*objects, fcl.CollisionRequest(), fcl.CollisionResult()) > 0
+    distance = fcl.distance(*objects, fcl.DistanceRequest(), fcl.DistanceResult())
+    return hit, distance
 
 
 def test_mechanical_scene_apart_at_0_overlapping_at_1():
@@ -297,14 +305,10 @@ def test_mechanical_scene_apart_at_0_overlapping_at_1():
         body.motion.validate()
     a, b = bodies
     mesh = a.shape
-    tm = trimesh.Trimesh(mesh.vertices, mesh.triangles, process=False)
-    assert tm.is_watertight
+    assert trimesh.Trimesh(mesh.vertices, mesh.triangles, process=False).is_watertight
 
     def state(t):
-        manager = trimesh.collision.CollisionManager()
-        manager.add_object("a", tm, _transform(a.motion, t))
-        return (manager.in_collision_single(tm, _transform(b.motion, t)),
-                manager.min_distance_single(tm, _transform(b.motion, t)))
+        return _fcl_state(mesh, a.motion, b.motion, t)
 
     hit0, d0 = state(0)
     assert not hit0 and d0 > 1.0  # clearly apart
@@ -387,12 +391,9 @@ def test_run_demo_scenes(tmp_path):
     # the exact answers agree with float estimates of the same scenes
     mech = results["mechanical"][0].first_contact
     bodies, _ = _demo_scenes.mechanical_scene()
-    tm = trimesh.Trimesh(bodies[0].shape.vertices, bodies[0].shape.triangles, process=False)
 
     def hit(t):
-        manager = trimesh.collision.CollisionManager()
-        manager.add_object("a", tm, _transform(bodies[0].motion, t))
-        return manager.in_collision_single(tm, _transform(bodies[1].motion, t))
+        return _fcl_state(bodies[0].shape, bodies[0].motion, bodies[1].motion, t)[0]
     assert not hit(mech.approx - 1e-4) and hit(mech.approx + 1e-4)
     lig = results["ligand"][0]
     estimate = _float_first_contact_ligand(_demo_scenes.ligand_scene()[0])

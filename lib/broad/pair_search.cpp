@@ -24,18 +24,25 @@ namespace {
 constexpr int kMax_depth = 24;       // pieces of width 2^-24 at most
 constexpr double kLeaf_pairs = 64;   // |active A| * |active B| at most: intersect now
 
-// Boxes of one side's points, cached per piece by a stamp.
+// Boxes of one side's points, cached per piece by a stamp (meshes: each vertex is
+// shared by several triangles and edges; a ball's box is used once per piece, so sphere
+// sets keep no cache and allocate nothing per query).
 struct Side {
   const Moving_body *b = nullptr;
   std::vector<Box> vbox;
   std::vector<uint32_t> vstamp, vlisted, elisted;
   uint32_t stamp = 0;
 
-  explicit Side(const Moving_body &body)
-      : b(&body), vbox(body.n_points()), vstamp(body.n_points(), 0),
-        vlisted(body.n_points(), 0), elisted(body.is_mesh() ? body.mesh->edges().size() : 0, 0) {}
+  explicit Side(const Moving_body &body) : b(&body) {
+    if (!body.is_mesh()) return;
+    vbox.resize(body.n_points());
+    vstamp.assign(body.n_points(), 0);
+    vlisted.assign(body.n_points(), 0);
+    elisted.assign(body.mesh->edges().size(), 0);
+  }
 
-  const Box &point(const Pose_piece &pose, uint32_t k) {
+  Box point(const Pose_piece &pose, uint32_t k) {
+    if (vstamp.empty()) return point_box(pose, b->data->pts[k], b->data->pt_err);
     if (vstamp[k] != stamp) {
       vbox[k] = point_box(pose, b->data->pts[k], b->data->pt_err);
       vstamp[k] = stamp;
