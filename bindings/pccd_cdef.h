@@ -150,7 +150,8 @@ typedef enum pccd_feature {
 
 typedef enum pccd_broad_phase {
   PCCD_BROAD_BOXES = ...,
-  PCCD_BROAD_BRUTE = ...
+  PCCD_BROAD_BRUTE = ...,
+  PCCD_BROAD_RANGE = ...
 } pccd_broad_phase;
 
 typedef struct pccd_scene pccd_scene;

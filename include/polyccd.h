@@ -407,10 +407,12 @@ typedef enum pccd_feature {
   PCCD_FEATURE_SPHERE = 3
 } pccd_feature;
 
-/* How candidate feature pairs are found. Both give identical answers. */
+/* How candidate feature pairs are found. All give identical answers. */
 typedef enum pccd_broad_phase {
   PCCD_BROAD_BOXES = 0, /* time pieces + CGAL box intersection (default) */
-  PCCD_BROAD_BRUTE = 1  /* every feature pair (a reference; quadratic) */
+  PCCD_BROAD_BRUTE = 1, /* every feature pair (a reference; quadratic) */
+  PCCD_BROAD_RANGE = 2  /* linearized contact conditions, lifted points in CGAL kd-trees
+                           searched with halfspace queries (the paper's section 3) */
 } pccd_broad_phase;
 
 typedef struct pccd_scene pccd_scene;

@@ -8,8 +8,8 @@ one and be no wider than the case's time tolerance, and must not claim to be exa
 pairs (every body pair in contact; for two bodies, the one pair exactly when they
 collide); features (the touching features the oracle found unambiguous must be among
 the reported contacts of that pair, which must be one of the scene's first pairs).
-Each case is also run with threads=2 and with broad_phase="brute": the answers must be
-identical. A last test goes beyond EXPECT and asks the oracle itself: every reported
+Each case is also run with threads=2 and with broad_phase="brute" and "range": the answers
+must be identical. A last test goes beyond EXPECT and asks the oracle itself: every reported
 pair's enclosure must hold that pair's exact first time, and every reported contact must
 really touch then (for mesh-mesh at t* > 0 and sphere sets: exactly the oracle's set).
 This file needs polyccd.check: without it every case FAILS (no skip).
@@ -125,10 +125,11 @@ def test_polyccd_meets_expectation(path):
 
 
 @pytest.mark.parametrize("path", FILES, ids=[str(p.relative_to(CORPUS)) for p in FILES])
-def test_threads_and_brute_force_agree(path):
+def test_threads_and_broad_phases_agree(path):
     _, tol, bodies, res = run(path)
     base = summary(res)
-    for kw in ({"threads": 2}, {"broad_phase": "brute"}, {"threads": 2, "broad_phase": "brute"}):
+    for kw in ({"threads": 2}, {"broad_phase": "brute"}, {"threads": 2, "broad_phase": "brute"},
+               {"broad_phase": "range"}, {"threads": 2, "broad_phase": "range"}):
         other = summary(polyccd.check(bodies, time_tolerance=tol, **kw))
         assert other == base, "%s differs from threads=1, boxes:\n%r\n%r" % (kw, other, base)
 

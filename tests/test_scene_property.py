@@ -1,6 +1,7 @@
-"""Property tests of scenes: the broad phase (time pieces + CGAL boxes) gives exactly the
-answers of brute force over every feature pair, for any thread count, in first-contact
-and all-contacts modes. Bodies and motions are random but built on a coarse rational
+"""Property tests of scenes: both broad phases (time pieces + CGAL boxes; the range
+structure of linearized conditions in CGAL kd-trees) give exactly the answers of brute
+force over every feature pair, for any thread count, in first-contact and all-contacts
+modes. Bodies and motions are random but built on a coarse rational
 grid so that touching, grazing and simultaneous contacts are common.
 
 POLYCCD_SCENE_SEED and POLYCCD_SCENE_COUNT change the seed and the number of scenes.
@@ -87,16 +88,17 @@ def summary(r):
 
 
 @pytest.mark.parametrize("k", range(COUNT))
-def test_broad_phase_equals_brute_force(k):
+def test_broad_phases_equal_brute_force(k):
     rng = random.Random(SEED * 1000 + k)
     bodies = random_scene(rng)
     for all_contacts in (False, True):
         brute = summary(P.check(bodies, broad_phase="brute", all_contacts=all_contacts,
                                 time_tolerance="1e-9"))
-        for threads in (1, 2, 3):
-            got = summary(P.check(bodies, threads=threads, all_contacts=all_contacts,
-                                  time_tolerance="1e-9"))
-            assert got == brute, (k, all_contacts, threads)
+        for broad_phase in ("boxes", "range"):
+            for threads in (1, 2, 3):
+                got = summary(P.check(bodies, threads=threads, all_contacts=all_contacts,
+                                      broad_phase=broad_phase, time_tolerance="1e-9"))
+                assert got == brute, (k, all_contacts, broad_phase, threads)
 
 
 def test_scenes_collide_often_enough():

@@ -66,12 +66,14 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
         throw Input_error("opt->threads is " + std::to_string(opt->threads) + "; expected 1 to 1024");
       if (opt->all_contacts != 0 && opt->all_contacts != 1)
         throw Input_error("opt->all_contacts is " + std::to_string(opt->all_contacts) + "; expected 0 or 1");
-      if (opt->broad_phase != PCCD_BROAD_BOXES && opt->broad_phase != PCCD_BROAD_BRUTE)
+      if (opt->broad_phase != PCCD_BROAD_BOXES && opt->broad_phase != PCCD_BROAD_BRUTE &&
+          opt->broad_phase != PCCD_BROAD_RANGE)
         throw Input_error("opt->broad_phase is " + std::to_string(opt->broad_phase) +
-                          "; expected PCCD_BROAD_BOXES (0) or PCCD_BROAD_BRUTE (1)");
+                          "; expected PCCD_BROAD_BOXES (0), PCCD_BROAD_BRUTE (1) or PCCD_BROAD_RANGE (2)");
       so.threads = opt->threads;
       so.all_contacts = opt->all_contacts == 1;
       so.brute = opt->broad_phase == PCCD_BROAD_BRUTE;
+      so.range = opt->broad_phase == PCCD_BROAD_RANGE;
     }
     rep->solved = false;
     rep->r = pccd::broad::solve_scene(s->bodies, so);

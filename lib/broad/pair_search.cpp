@@ -4,6 +4,7 @@
 #include <unordered_set>
 
 #include "broad/boxes.h"
+#include "broad/range_index.h"
 
 namespace pccd::broad {
 
@@ -74,6 +75,7 @@ class Searcher {
       if (found_any_ && !opt_.all_contacts) return;
     }
     if (opt_.brute) return brute();
+    if (opt_.range) return range_pieces();
     std::vector<uint32_t> all[2];
     for (int s = 0; s < 2; ++s) {
       all[s].resize(side_[s].n_elements());
@@ -175,6 +177,26 @@ class Searcher {
       for (auto &p : pairs) cand.push_back({TT, p.first, p.second});
     }
     solve(std::move(cand));
+  }
+
+  // The range broad phase (broad/range_index.h): the side with more elements is stored;
+  // its pieces are visited in time order and pruned like the boxes' pieces.
+  void range_pieces() {
+    const int stored = side_[0].n_elements() >= side_[1].n_elements() ? 0 : 1;
+    const Range_index index(ctx_, stored);
+    const int n = index.pieces();
+    for (int k = 0; k < n; ++k) {
+      const double a = double(k) / n, b = double(k + 1) / n;  // exact: n is a power of 2
+      if (pruned(a)) break;
+      ++out_.stats.pieces;
+      std::vector<Prim_pair> cand = index.candidates(a, b, pool_);
+      if (cand.empty()) continue;
+      ++out_.stats.leaves;
+      out_.stats.candidates += cand.size();
+      piece_lo_ = a;
+      piece_hi_ = b;
+      solve_in_time_order(std::move(cand));
+    }
   }
 
   // Every feature pair of the body types.
@@ -295,7 +317,7 @@ class Searcher {
       box_pairs(elem[0], elem[1], pairs);
       emit(!mA && !mB ? SS : !mA ? ST : TS, actA, actB);
     }
-    solve_in_time_order(pose, std::move(cand));
+    solve_in_time_order(std::move(cand));
   }
 
   // The box of one side's primitive of a pair over a pose (vertex, edge, triangle, ball).
@@ -321,7 +343,7 @@ class Searcher {
   // order of that bound, in batches of fixed, growing sizes; a batch starts only with pairs whose
   // bound is <= the best upper bound so far, and each pair is asked only for contacts
   // up to that bound (pred::Solve_options::until). Batches do not depend on threads.
-  void solve_in_time_order(const Pose_piece pose[2], std::vector<Prim_pair> cand) {
+  void solve_in_time_order(std::vector<Prim_pair> cand) {
     std::vector<Prim_pair> fresh = fresh_of(std::move(cand));
     if (fresh.empty()) return;
     constexpr int kSub = 8;

@@ -39,6 +39,7 @@ struct Search_options {
   pred::Solve_options solve;
   bool all_contacts = false;  // solve every candidate (no time pruning)
   bool brute = false;         // every feature pair, no boxes
+  bool range = false;         // the range structure (broad/range_index.h) instead of boxes
 };
 
 struct Search_stats {

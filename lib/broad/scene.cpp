@@ -62,6 +62,7 @@ Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_opti
   so.solve = opt.solve;
   so.all_contacts = opt.all_contacts;
   so.brute = opt.brute;
+  so.range = opt.range;
 
   std::vector<std::unique_ptr<Pair_work>> work;
   Scene_report rep;

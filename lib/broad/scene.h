@@ -17,6 +17,7 @@ struct Scene_options {
   pred::Solve_options solve;
   bool all_contacts = false;
   bool brute = false;
+  bool range = false;  // broad/range_index.h (ignored when brute)
   unsigned threads = 1;
 };
 

@@ -20,7 +20,8 @@ from ._results import ContactTime
 from ._solve import _config
 
 FEATURES = ("vertex", "edge", "triangle", "sphere")
-BROAD_PHASES = {"boxes": lib.PCCD_BROAD_BOXES, "brute": lib.PCCD_BROAD_BRUTE}
+BROAD_PHASES = {"boxes": lib.PCCD_BROAD_BOXES, "brute": lib.PCCD_BROAD_BRUTE,
+                "range": lib.PCCD_BROAD_RANGE}
 
 
 class Body:
@@ -115,7 +116,7 @@ def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1
     if len(bodies) < 2:
         raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
     if broad_phase not in BROAD_PHASES:
-        raise InputError(f"broad_phase: expected \"boxes\" or \"brute\", got {show(broad_phase)}")
+        raise InputError(f"broad_phase: expected \"boxes\", \"brute\" or \"range\", got {show(broad_phase)}")
     if isinstance(threads, bool) or not isinstance(threads, int) or not 1 <= threads <= 1024:
         raise InputError(f"threads: expected an integer from 1 to 1024, got {show(threads)}")
     if all_contacts not in (True, False):

@@ -1,0 +1,88 @@
+// Linearizations of the contact conditions (paper section 3; derivations in
+// broad/LINEARIZATION.md): a stored body's primitives become lifted points, a query
+// primitive over a time piece becomes a conjunction of clauses of closed halfspaces
+// (broad/halfspaces.h) that every lifted point of a stored primitive it may touch
+// during the piece satisfies.
+//
+// The query body moves relative to the stored body's frame:
+//   y(t) = R_S(t)^T (x_Q(t) - o_S(t)) = (M(t) p + u(t)) / w(t),
+//   M = Rn_S^T W_S Rn_Q,  u = Rn_S^T (W_S O_Q - W_Q O_S),  w = W_S^2 W_Q > 0,
+// (x = (Rn p + O) / W for both bodies, Rn = W R). Stored primitives are constant in
+// that frame. Each contact condition is a polynomial in t that is LINEAR in the lifted
+// point s of the stored primitive, f(t) = sum_k s_k c_k(t) + c_0(t); on a piece its
+// Bernstein coefficients beta_j = sum_k s_k B(c_k)_j + B(c_0)_j are linear in s too,
+// and f can vanish (be >= 0, <= 0) somewhere on the piece only if
+// min_j beta_j <= 0 <= max_j beta_j (some beta_j >= 0, <= 0): clauses of halfspaces.
+//
+// Lifted points (body frame of the stored body; D = dimension):
+//   vertex p                   (p)                                      D = 3
+//   triangle a0 a1 a2          (n, n . a0, lo, hi)                      D = 10
+//   edge a0 a1                 (a1 - a0, a0 x a1, lo, hi)               D = 12
+//   ball c, r                  (c, |c|^2 - r^2, r)                      D = 5
+// with n = (a1 - a0) x (a2 - a0) and lo, hi the corners of the primitive's box.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "broad/halfspaces.h"
+#include "broad/moving_body.h"
+
+namespace pccd::broad {
+
+constexpr int kDimVertex = 3, kDimTriangle = 10, kDimEdge = 12, kDimBall = 5;
+
+using IPoly = poly::Poly<Interval>;
+
+// Interval boxes of the exact lifted points, indexed like the body's primitives
+// (vertices: only those listed in `ids`, in that order).
+std::vector<std::array<Interval, kDimVertex>> lift_vertices(const Body_data &b,
+                                                           const std::vector<uint32_t> &ids);
+std::vector<std::array<Interval, kDimTriangle>> lift_triangles(const Body_data &b);
+std::vector<std::array<Interval, kDimEdge>> lift_edges(const Body_data &b);
+std::vector<std::array<Interval, kDimBall>> lift_balls(const Body_data &b);
+
+// The query body's homogeneous motion in the stored body's frame, in t.
+struct Relative_motion {
+  std::array<std::array<IPoly, 3>, 3> M;
+  std::array<IPoly, 3> u;
+  IPoly w;
+  Relative_motion(const Moving_body &stored, const Moving_body &query);
+  // Float estimate of the position of body point p at t (for choosing pieces only).
+  std::array<double, 3> approx(const std::array<double, 3> &p, double t) const;
+};
+
+// The query primitives of one body over one time piece [a, b] (reparametrized to
+// s in [0, 1]). Each query has two stages: *_boxes gives the cheap clauses (the stored
+// primitive's box meets the query primitive's, at the same time); add_* appends the
+// contact conditions (the costly polynomial products) to them. The caller may test the
+// cheap clauses against the whole tree first (Range_tree::may_hit).
+class Piece_query {
+ public:
+  Piece_query(const Relative_motion &rel, const Moving_body &query, double a, double b);
+
+  // query triangle, stored vertices
+  Cnf<kDimVertex> triangle_vs_vertices_boxes(uint32_t tri) const;
+  void add_triangle_vs_vertices(uint32_t tri, Cnf<kDimVertex> &q) const;
+  // query vertex, stored triangles
+  Cnf<kDimTriangle> vertex_vs_triangles_boxes(uint32_t v) const;
+  void add_vertex_vs_triangles(uint32_t v, Cnf<kDimTriangle> &q) const;
+  // query edge, stored edges
+  Cnf<kDimEdge> edge_vs_edges_boxes(uint32_t e) const;
+  void add_edge_vs_edges(uint32_t e, Cnf<kDimEdge> &q) const;
+  // query ball, stored balls
+  Cnf<kDimBall> ball_vs_balls_boxes(uint32_t k) const;
+  void add_ball_vs_balls(uint32_t k, Cnf<kDimBall> &q) const;
+  // ball and triangle: boxes only (the distance to a plane is not linear in it)
+  Cnf<kDimBall> triangle_vs_balls_boxes(uint32_t tri) const;
+  Cnf<kDimTriangle> ball_vs_triangles_boxes(uint32_t k) const;
+
+ private:
+  const Moving_body &q_;
+  std::vector<Interval> w_, w2_;  // scaled Bernstein forms (broad/scaled_bernstein.h)
+  std::vector<std::array<std::vector<Interval>, 3>> H_;  // homogeneous trajectory of every query point
+
+  const std::array<std::vector<Interval>, 3> &H(uint32_t point) const { return H_[point]; }
+};
+
+}  // namespace pccd::broad

@@ -1,0 +1,121 @@
+#include "broad/range_index.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pccd::broad {
+
+namespace {
+constexpr int kMax_log_pieces = 6;
+constexpr size_t kChunk = 64;  // query primitives per parallel task
+}  // namespace
+
+Range_index::Range_index(const Pair_ctx &ctx, int stored)
+    : ctx_(ctx), s_(stored), rel_(ctx.side(stored), ctx.side(1 - stored)) {
+  const Moving_body &S = ctx.side(s_), &Q = ctx.side(1 - s_);
+  const Body_data &d = *S.data;
+  if (S.is_mesh() && Q.is_mesh()) {
+    vertices_ = std::make_unique<Range_tree<kDimVertex>>(lift_vertices(d, d.surface_vertices));
+    triangles_ = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d));
+    edges_ = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d));
+  } else if (S.is_mesh()) {
+    triangles_ = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d));
+  } else {
+    balls_ = std::make_unique<Range_tree<kDimBall>>(lift_balls(d));
+  }
+  // Pieces: the relative path length of the query body's box corners, in feature sizes.
+  const Body_data &qd = *Q.data;
+  double path = 0;
+  for (int corner = 0; corner < 8; ++corner) {
+    std::array<double, 3> p;
+    for (int a = 0; a < 3; ++a) p[a] = qd.box_c[a] + ((corner >> a) & 1 ? qd.box_h[a] : -qd.box_h[a]);
+    std::array<double, 3> prev = rel_.approx(p, 0.0);
+    double len = 0;
+    for (int i = 1; i <= 16; ++i) {
+      const std::array<double, 3> y = rel_.approx(p, i / 16.0);
+      len += std::sqrt((y[0] - prev[0]) * (y[0] - prev[0]) + (y[1] - prev[1]) * (y[1] - prev[1]) +
+                       (y[2] - prev[2]) * (y[2] - prev[2]));
+      prev = y;
+    }
+    path = std::max(path, len);
+  }
+  const double feature = std::min(d.feature, qd.feature);
+  int k = 0;
+  while (k < kMax_log_pieces && path > feature * double(1 << k)) ++k;
+  if (!std::isfinite(path)) k = kMax_log_pieces;
+  pieces_ = 1 << k;
+}
+
+Prim_pair Range_index::pair(uint8_t if_a, uint8_t if_b, uint32_t stored, uint32_t query) const {
+  return s_ == 0 ? Prim_pair{if_a, stored, query} : Prim_pair{if_b, query, stored};
+}
+
+size_t Range_index::query_items() const {
+  const Moving_body &Q = ctx_.side(1 - s_);
+  if (vertices_) return Q.data->surface_vertices.size() + Q.mesh->triangles().size() + Q.mesh->edges().size();
+  return Q.is_mesh() ? Q.mesh->triangles().size() : Q.spheres->centers().size();
+}
+
+void Range_index::query_one(const Piece_query &pq, size_t item, std::vector<Prim_pair> &out,
+                            std::vector<uint32_t> &ids) const {
+  const Moving_body &S = ctx_.side(s_), &Q = ctx_.side(1 - s_);
+  ids.clear();
+  // Cheap box clauses against the hull of all stored points first, then the contact
+  // conditions and the tree search.
+  auto run = [&](const auto &tree, auto boxes, auto add) {
+    auto q = boxes();
+    if (!tree->may_hit(q)) return false;
+    add(q);
+    tree->search(q, ids);
+    return true;
+  };
+  if (vertices_) {  // meshes
+    const size_t nv = Q.data->surface_vertices.size(), nt = Q.mesh->triangles().size();
+    if (item < nv) {
+      const uint32_t v = Q.data->surface_vertices[item];
+      run(triangles_, [&] { return pq.vertex_vs_triangles_boxes(v); },
+          [&](auto &q) { pq.add_vertex_vs_triangles(v, q); });
+      for (uint32_t t : ids) out.push_back(pair(FV, VF, t, v));
+    } else if (item < nv + nt) {
+      const uint32_t t = static_cast<uint32_t>(item - nv);
+      run(vertices_, [&] { return pq.triangle_vs_vertices_boxes(t); },
+          [&](auto &q) { pq.add_triangle_vs_vertices(t, q); });
+      for (uint32_t i : ids) out.push_back(pair(VF, FV, S.data->surface_vertices[i], t));
+    } else {
+      const uint32_t e = static_cast<uint32_t>(item - nv - nt);
+      run(edges_, [&] { return pq.edge_vs_edges_boxes(e); },
+          [&](auto &q) { pq.add_edge_vs_edges(e, q); });
+      for (uint32_t f : ids) out.push_back(pair(EE, EE, f, e));
+    }
+    return;
+  }
+  const uint32_t k = static_cast<uint32_t>(item);
+  auto none = [](auto &) {};
+  if (balls_ && !Q.is_mesh()) {
+    run(balls_, [&] { return pq.ball_vs_balls_boxes(k); }, [&](auto &q) { pq.add_ball_vs_balls(k, q); });
+    for (uint32_t b : ids) out.push_back(pair(SS, SS, b, k));
+  } else if (balls_) {
+    run(balls_, [&] { return pq.triangle_vs_balls_boxes(k); }, none);
+    for (uint32_t b : ids) out.push_back(pair(ST, TS, b, k));
+  } else {
+    run(triangles_, [&] { return pq.ball_vs_triangles_boxes(k); }, none);
+    for (uint32_t t : ids) out.push_back(pair(TS, ST, t, k));
+  }
+}
+
+std::vector<Prim_pair> Range_index::candidates(double a, double b, Thread_pool &pool) const {
+  const Piece_query pq(rel_, ctx_.side(1 - s_), a, b);
+  const size_t n = query_items(), chunks = (n + kChunk - 1) / kChunk;
+  std::vector<std::vector<Prim_pair>> parts(chunks);
+  pool.parallel_for(chunks, [&](size_t c) {
+    std::vector<uint32_t> ids;
+    for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) query_one(pq, i, parts[c], ids);
+  });
+  std::vector<Prim_pair> out;
+  for (auto &p : parts) out.insert(out.end(), p.begin(), p.end());
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace pccd::broad
