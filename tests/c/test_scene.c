@@ -181,6 +181,7 @@ int main(void)
   for (t = 1; t <= 3; ++t) {
     two_cubes(t, PCCD_BROAD_BOXES);
     two_cubes(t, PCCD_BROAD_BRUTE);
+    two_cubes(t, PCCD_BROAD_RANGE);
   }
   errors();
   printf("%d passed, %d failed\n", g_pass, g_fail);
