@@ -74,13 +74,13 @@ $(BUILD)/test_motion: tests/c/test_motion.c include/polyccd.h $(LIB)
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
 
 # The scene C test (pccd_scene_*, pccd_report_*), linked against the shared library.
-$(BUILD)/test_scene: tests/c/test_scene.c include/polyccd.h $(LIB)
+$(BUILD)/test_scene: tests/c/test_scene.c tests/c/check.h include/polyccd.h $(LIB)
 	@mkdir -p $(BUILD)
 	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_scene.c \
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
 
 # The body C test (pccd_body_*), linked against the shared library.
-$(BUILD)/test_body: tests/c/test_body.c include/polyccd.h $(LIB)
+$(BUILD)/test_body: tests/c/test_body.c tests/c/check.h include/polyccd.h $(LIB)
 	@mkdir -p $(BUILD)
 	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_body.c \
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm

@@ -34,12 +34,12 @@ struct Cnf {
   bool empty() const { return clause_end.empty(); }
 };
 
-// Upper bound of a . x + a0 over the intervals x (outward rounded).
+// An enclosure of a . x + a0 over the intervals x (outward rounded).
 template <int D>
-double upper_bound(const Halfspace<D> &h, const Interval *x) {
+Interval evaluate(const Halfspace<D> &h, const Interval *x) {
   Interval s = h.a0;
   for (int k = 0; k < D; ++k) s = s + h.a[k] * x[k];
-  return s.hi;
+  return s;
 }
 
 // Whether some point of the interval box x may satisfy every clause (a necessary test:
@@ -49,7 +49,7 @@ bool cnf_possible(const Cnf<D> &q, const Interval *x) {
   uint32_t start = 0;
   for (uint32_t end : q.clause_end) {
     bool any = false;
-    for (uint32_t i = start; i < end && !any; ++i) any = upper_bound(q.hs[i], x) >= 0;
+    for (uint32_t i = start; i < end && !any; ++i) any = evaluate(q.hs[i], x).hi >= 0;
     if (!any) return false;
     start = end;
   }
@@ -63,11 +63,7 @@ bool cnf_certain(const Cnf<D> &q, const Interval *x) {
   uint32_t start = 0;
   for (uint32_t end : q.clause_end) {
     bool any = false;
-    for (uint32_t i = start; i < end && !any; ++i) {
-      Interval s = q.hs[i].a0;
-      for (int k = 0; k < D; ++k) s = s + q.hs[i].a[k] * x[k];
-      any = s.lo >= 0;
-    }
+    for (uint32_t i = start; i < end && !any; ++i) any = evaluate(q.hs[i], x).lo >= 0;
     if (!any) return false;
     start = end;
   }

@@ -1,7 +1,6 @@
 #include "broad/linearize.h"
 
 #include <algorithm>
-#include <unordered_map>
 
 #include "arith/convert.h"
 #include "broad/scaled_bernstein.h"

@@ -14,24 +14,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static int g_pass, g_fail;
-
-static int check_(int ok, const char *expr, int line)
-{
-  if (ok) {
-    g_pass++;
-  } else {
-    g_fail++;
-    printf("FAIL line %d: %s\n", line, expr);
-    printf("     last error: %s\n", pccd_last_error());
-  }
-  return ok;
-}
-#define CHECK(cond) check_((cond) ? 1 : 0, #cond, __LINE__)
-#define OK(call) CHECK((call) == PCCD_OK && fegetround() == FE_TONEAREST)
-/* A call that must fail with status rc and a message containing `word`. */
-#define FAILS(call, rc, word) \
-  CHECK((call) == (rc) && strstr(pccd_last_error(), (word)) != NULL)
+#include "check.h"
 
 /* The closed unit tetrahedron: V - E + F = 4 - 6 + 4 = 2. Sorted edges (a < b):
  * 01 02 03 12 13 23; each edge lies on exactly the two faces containing both ends. */

@@ -13,23 +13,7 @@
 #include <stdio.h>
 #include <string.h>
 
-static int g_pass, g_fail;
-
-static int check_(int ok, const char *expr, int line)
-{
-  if (ok) {
-    g_pass++;
-  } else {
-    g_fail++;
-    printf("FAIL line %d: %s\n", line, expr);
-    printf("     last error: %s\n", pccd_last_error());
-  }
-  return ok;
-}
-#define CHECK(cond) check_((cond) ? 1 : 0, #cond, __LINE__)
-#define OK(call) CHECK((call) == PCCD_OK && fegetround() == FE_TONEAREST)
-#define FAILS(call, rc, word) \
-  CHECK((call) == (rc) && strstr(pccd_last_error(), (word)) != NULL)
+#include "check.h"
 
 /* The unit cube [0,1]^3 as 12 outward triangles. */
 static const double kCubeV[24] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
