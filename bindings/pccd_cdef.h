@@ -151,7 +151,8 @@ typedef enum pccd_feature {
 typedef enum pccd_broad_phase {
   PCCD_BROAD_BOXES = ...,
   PCCD_BROAD_BRUTE = ...,
-  PCCD_BROAD_RANGE = ...
+  PCCD_BROAD_RANGE = ...,
+  PCCD_BROAD_AUTO = ...
 } pccd_broad_phase;
 
 typedef struct pccd_scene pccd_scene;
@@ -186,6 +187,13 @@ int pccd_report_pair(const pccd_report *rep, size_t pair, size_t *body_i, size_t
 int pccd_report_contact_count(const pccd_report *rep, size_t pair, size_t *count);
 int pccd_report_contact(const pccd_report *rep, size_t pair, size_t contact, int *feature_i,
                         size_t *index_i, int *feature_j, size_t *index_j);
+
+/* On-line index */
+typedef struct pccd_index pccd_index;
+int pccd_index_new(pccd_index **out, const pccd_body *body, const pccd_motion *motion);
+void pccd_index_free(pccd_index *ix);
+int pccd_index_query(const pccd_index *ix, const pccd_body *body, const pccd_motion *motion,
+                     const pccd_config *cfg, const pccd_scene_options *opt, pccd_report *rep);
 
 typedef struct pccd_scene_stats {
   unsigned long long pieces, leaves, candidates, solved, static_tests, refined;

@@ -409,10 +409,12 @@ typedef enum pccd_feature {
 
 /* How candidate feature pairs are found. All give identical answers. */
 typedef enum pccd_broad_phase {
-  PCCD_BROAD_BOXES = 0, /* time pieces + CGAL box intersection (default) */
+  PCCD_BROAD_BOXES = 0, /* time pieces + CGAL box intersection */
   PCCD_BROAD_BRUTE = 1, /* every feature pair (a reference; quadratic) */
-  PCCD_BROAD_RANGE = 2  /* linearized contact conditions, lifted points in CGAL kd-trees
+  PCCD_BROAD_RANGE = 2, /* linearized contact conditions, lifted points in CGAL kd-trees
                            searched with halfspace queries (the paper's section 3) */
+  PCCD_BROAD_AUTO = 3   /* the default: the phase the benchmarks measured fastest for
+                           the kind of problem (README, "Broad phases") */
 } pccd_broad_phase;
 
 typedef struct pccd_scene pccd_scene;
@@ -433,7 +435,7 @@ typedef struct pccd_scene_options {
   unsigned threads;       /* worker threads, >= 1 (default 1); answers do not depend on it */
   int all_contacts;       /* 0 (default): the feature pairs touching first;
                              1: every touching feature pair with its own first time */
-  int broad_phase;        /* a pccd_broad_phase (default PCCD_BROAD_BOXES) */
+  int broad_phase;        /* a pccd_broad_phase (default PCCD_BROAD_AUTO) */
 } pccd_scene_options;
 
 PCCD_API int pccd_scene_options_init(pccd_scene_options *opt);
@@ -468,6 +470,34 @@ PCCD_API int pccd_report_contact_count(const pccd_report *rep, size_t pair, size
 PCCD_API int pccd_report_contact(const pccd_report *rep, size_t pair, size_t contact,
                                  int *feature_i, size_t *index_i, int *feature_j,
                                  size_t *index_j);
+
+/* ------------------------------------------------------------------------------------
+ * The on-line collision problem (the paper's section 3): one body on its motion is
+ * preprocessed once (its vertices, edges and triangles, or its balls, as lifted points
+ * in range trees); then any number of query bodies on their own motions are checked
+ * against it. A single query primitive is a body of one triangle or one ball.
+ * ---------------------------------------------------------------------------------- */
+typedef struct pccd_index pccd_index;
+
+/* Preprocesses body on motion (NULL: stationary); the index keeps its own reference to
+ * the body and a copy of the motion. PCCD_EINVAL: out or body NULL, or the motion's
+ * quaternion vanishes on [0, 1] ("motion: ..."); *out is NULL on error. Release with
+ * pccd_index_free; pccd_index_free(NULL) does nothing. */
+PCCD_API int pccd_index_new(pccd_index **out, const pccd_body *body, const pccd_motion *motion);
+PCCD_API void pccd_index_free(pccd_index *ix);
+
+/* Checks body on motion (NULL: stationary) against the indexed body over [0, 1] and
+ * writes the answer to rep as a two-body scene: body 0 is the indexed body, body 1 the
+ * query (so pccd_report_contact's feature_i is a feature of the indexed body). cfg and
+ * opt may be NULL (defaults); opt as for pccd_scene_solve: PCCD_BROAD_AUTO and
+ * PCCD_BROAD_RANGE search the index's trees, PCCD_BROAD_BOXES and PCCD_BROAD_BRUTE
+ * solve the pair like a scene (same answers; for comparison). The index is only read:
+ * several threads may query one index at once, each with its own report.
+ * PCCD_EINVAL: ix, body or rep NULL, bad options (as pccd_scene_solve), or the query
+ * motion's quaternion vanishes on [0, 1] ("motion: ..."). */
+PCCD_API int pccd_index_query(const pccd_index *ix, const pccd_body *body,
+                              const pccd_motion *motion, const pccd_config *cfg,
+                              const pccd_scene_options *opt, pccd_report *rep);
 
 /* Work counters of the last solve (for benchmarks). */
 typedef struct pccd_scene_stats {

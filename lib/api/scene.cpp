@@ -46,7 +46,7 @@ PCCD_API int pccd_scene_options_init(pccd_scene_options *opt) {
     opt->struct_size = sizeof(pccd_scene_options);
     opt->threads = 1;
     opt->all_contacts = 0;
-    opt->broad_phase = PCCD_BROAD_BOXES;
+    opt->broad_phase = PCCD_BROAD_AUTO;
     return PCCD_OK;
   });
 }
@@ -56,25 +56,7 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
   return guard("pccd_scene_solve", [&] {
     require(s, "scene");
     require(rep, "report");
-    pccd::broad::Scene_options so;
-    so.solve = pccd::api::read_config(cfg);
-    if (opt) {
-      if (opt->struct_size != sizeof(pccd_scene_options))
-        throw Input_error("opt->struct_size is " + std::to_string(opt->struct_size) +
-                          "; initialise the options with pccd_scene_options_init");
-      if (opt->threads < 1 || opt->threads > 1024)
-        throw Input_error("opt->threads is " + std::to_string(opt->threads) + "; expected 1 to 1024");
-      if (opt->all_contacts != 0 && opt->all_contacts != 1)
-        throw Input_error("opt->all_contacts is " + std::to_string(opt->all_contacts) + "; expected 0 or 1");
-      if (opt->broad_phase != PCCD_BROAD_BOXES && opt->broad_phase != PCCD_BROAD_BRUTE &&
-          opt->broad_phase != PCCD_BROAD_RANGE)
-        throw Input_error("opt->broad_phase is " + std::to_string(opt->broad_phase) +
-                          "; expected PCCD_BROAD_BOXES (0), PCCD_BROAD_BRUTE (1) or PCCD_BROAD_RANGE (2)");
-      so.threads = opt->threads;
-      so.all_contacts = opt->all_contacts == 1;
-      so.brute = opt->broad_phase == PCCD_BROAD_BRUTE;
-      so.range = opt->broad_phase == PCCD_BROAD_RANGE;
-    }
+    const pccd::broad::Scene_options so = pccd::api::read_scene_options(cfg, opt);
     rep->solved = false;
     rep->r = pccd::broad::solve_scene(s->bodies, so);
     rep->solved = true;
@@ -83,3 +65,30 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
 }
 
 }  // extern "C"
+
+namespace pccd::api {
+
+broad::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt) {
+  broad::Scene_options so;
+  so.solve = read_config(cfg);
+  if (!opt) return so;
+  if (opt->struct_size != sizeof(pccd_scene_options))
+    throw Input_error("opt->struct_size is " + std::to_string(opt->struct_size) +
+                      "; initialise the options with pccd_scene_options_init");
+  if (opt->threads < 1 || opt->threads > 1024)
+    throw Input_error("opt->threads is " + std::to_string(opt->threads) + "; expected 1 to 1024");
+  if (opt->all_contacts != 0 && opt->all_contacts != 1)
+    throw Input_error("opt->all_contacts is " + std::to_string(opt->all_contacts) + "; expected 0 or 1");
+  if (opt->broad_phase < PCCD_BROAD_BOXES || opt->broad_phase > PCCD_BROAD_AUTO)
+    throw Input_error("opt->broad_phase is " + std::to_string(opt->broad_phase) +
+                      "; expected PCCD_BROAD_BOXES (0), PCCD_BROAD_BRUTE (1), PCCD_BROAD_RANGE (2) "
+                      "or PCCD_BROAD_AUTO (3)");
+  so.threads = opt->threads;
+  so.all_contacts = opt->all_contacts == 1;
+  so.automatic = opt->broad_phase == PCCD_BROAD_AUTO;
+  so.brute = opt->broad_phase == PCCD_BROAD_BRUTE;
+  so.range = opt->broad_phase == PCCD_BROAD_RANGE;
+  return so;
+}
+
+}  // namespace pccd::api

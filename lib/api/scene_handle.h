@@ -1,14 +1,29 @@
-// The opaque pccd_scene and pccd_report handles behind polyccd.h.
+// The opaque pccd_scene, pccd_index and pccd_report handles behind polyccd.h.
 #pragma once
+#include <memory>
 #include <vector>
 
+#include "broad/online_index.h"
 #include "broad/scene.h"
+#include "polyccd.h"
 
 struct pccd_scene {
   std::vector<pccd::broad::Scene_body> bodies;  // shared bodies, copied motions
+};
+
+struct pccd_index {
+  std::unique_ptr<const pccd::broad::Online_index> ix;
 };
 
 struct pccd_report {
   bool solved = false;
   pccd::broad::Scene_report r;
 };
+
+namespace pccd::api {
+
+// The scene options of pccd_scene_solve and pccd_index_query (NULL: defaults);
+// Input_error naming the bad field.
+broad::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt);
+
+}  // namespace pccd::api

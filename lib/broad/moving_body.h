@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "motion/body.h"
@@ -14,6 +15,8 @@ namespace pccd::broad {
 using arith::Interval;
 using arith::Rational;
 using motion::Poly_q;
+
+struct Stored_trees;  // broad/range_index.h
 
 // Motion-independent data of a body, derived once per body (pccd_body keeps it).
 struct Body_data {
@@ -31,6 +34,11 @@ struct Body_data {
   double reach = 0;    // upper bound of max_k |pts_k|_inf (+ radius): for the spread
   double feature = 0;  // typical feature size (median triangle box diagonal / diameter)
   std::array<double, 3> box_c{}, box_h{};  // body-frame box of all points (+ radii)
+  // The range structure of this body as a stored side (lifted points in kd-trees), built
+  // on first use by stored_trees() (broad/range_index.h) and kept with the body: lifted
+  // points live in the body frame, so any motion and any number of queries share it.
+  mutable std::once_flag trees_once;
+  mutable std::shared_ptr<const Stored_trees> trees;
 };
 
 std::shared_ptr<const Body_data> make_body_data(std::shared_ptr<const motion::Mesh_body> mesh,

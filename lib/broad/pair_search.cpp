@@ -179,10 +179,12 @@ class Searcher {
     solve(std::move(cand));
   }
 
-  // The range broad phase (broad/range_index.h): the side with more elements is stored;
-  // its pieces are visited in time order and pruned like the boxes' pieces.
+  // The range broad phase (broad/range_index.h): the side opt_.stored, or by default
+  // the one with more elements, is stored; pieces are visited in time order and pruned
+  // like the boxes' pieces.
   void range_pieces() {
-    const int stored = side_[0].n_elements() >= side_[1].n_elements() ? 0 : 1;
+    const int stored = opt_.stored >= 0 ? opt_.stored
+                                        : side_[0].n_elements() >= side_[1].n_elements() ? 0 : 1;
     const Range_index index(ctx_, stored);
     const int n = index.pieces();
     for (int k = 0; k < n; ++k) {

@@ -40,6 +40,7 @@ struct Search_options {
   bool all_contacts = false;  // solve every candidate (no time pruning)
   bool brute = false;         // every feature pair, no boxes
   bool range = false;         // the range structure (broad/range_index.h) instead of boxes
+  int stored = -1;            // range: the side (0, 1) held in the trees; -1: the larger
 };
 
 struct Search_stats {

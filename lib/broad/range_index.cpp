@@ -10,19 +10,26 @@ constexpr int kMax_log_pieces = 6;
 constexpr size_t kChunk = 64;  // query primitives per parallel task
 }  // namespace
 
+Stored_trees::Stored_trees(const Body_data &d) {
+  if (d.mesh) {
+    vertices = std::make_unique<Range_tree<kDimVertex>>(lift_vertices(d, d.surface_vertices));
+    triangles = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d));
+    edges = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d));
+  } else {
+    balls = std::make_unique<Range_tree<kDimBall>>(lift_balls(d));
+  }
+}
+
+const Stored_trees &stored_trees(const Body_data &d) {
+  std::call_once(d.trees_once, [&] { d.trees = std::make_shared<const Stored_trees>(d); });
+  return *d.trees;
+}
+
 Range_index::Range_index(const Pair_ctx &ctx, int stored)
-    : ctx_(ctx), s_(stored), rel_(ctx.side(stored), ctx.side(1 - stored)) {
+    : ctx_(ctx), s_(stored), rel_(ctx.side(stored), ctx.side(1 - stored)),
+      trees_(stored_trees(*ctx.side(stored).data)) {
   const Moving_body &S = ctx.side(s_), &Q = ctx.side(1 - s_);
   const Body_data &d = *S.data;
-  if (S.is_mesh() && Q.is_mesh()) {
-    vertices_ = std::make_unique<Range_tree<kDimVertex>>(lift_vertices(d, d.surface_vertices));
-    triangles_ = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d));
-    edges_ = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d));
-  } else if (S.is_mesh()) {
-    triangles_ = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d));
-  } else {
-    balls_ = std::make_unique<Range_tree<kDimBall>>(lift_balls(d));
-  }
   // Pieces: the relative path length of the query body's box corners, in feature sizes.
   const Body_data &qd = *Q.data;
   double path = 0;
@@ -52,7 +59,7 @@ Prim_pair Range_index::pair(uint8_t if_a, uint8_t if_b, uint32_t stored, uint32_
 
 size_t Range_index::query_items() const {
   const Moving_body &Q = ctx_.side(1 - s_);
-  if (vertices_) return Q.data->surface_vertices.size() + Q.mesh->triangles().size() + Q.mesh->edges().size();
+  if (Q.is_mesh() && ctx_.side(s_).is_mesh()) return Q.data->surface_vertices.size() + Q.mesh->triangles().size() + Q.mesh->edges().size();
   return Q.is_mesh() ? Q.mesh->triangles().size() : Q.spheres->centers().size();
 }
 
@@ -69,21 +76,21 @@ void Range_index::query_one(const Piece_query &pq, size_t item, std::vector<Prim
     tree->search(q, ids);
     return true;
   };
-  if (vertices_) {  // meshes
+  if (S.is_mesh() && Q.is_mesh()) {
     const size_t nv = Q.data->surface_vertices.size(), nt = Q.mesh->triangles().size();
     if (item < nv) {
       const uint32_t v = Q.data->surface_vertices[item];
-      run(triangles_, [&] { return pq.vertex_vs_triangles_boxes(v); },
+      run(trees_.triangles, [&] { return pq.vertex_vs_triangles_boxes(v); },
           [&](auto &q) { pq.add_vertex_vs_triangles(v, q); });
       for (uint32_t t : ids) out.push_back(pair(FV, VF, t, v));
     } else if (item < nv + nt) {
       const uint32_t t = static_cast<uint32_t>(item - nv);
-      run(vertices_, [&] { return pq.triangle_vs_vertices_boxes(t); },
+      run(trees_.vertices, [&] { return pq.triangle_vs_vertices_boxes(t); },
           [&](auto &q) { pq.add_triangle_vs_vertices(t, q); });
       for (uint32_t i : ids) out.push_back(pair(VF, FV, S.data->surface_vertices[i], t));
     } else {
       const uint32_t e = static_cast<uint32_t>(item - nv - nt);
-      run(edges_, [&] { return pq.edge_vs_edges_boxes(e); },
+      run(trees_.edges, [&] { return pq.edge_vs_edges_boxes(e); },
           [&](auto &q) { pq.add_edge_vs_edges(e, q); });
       for (uint32_t f : ids) out.push_back(pair(EE, EE, f, e));
     }
@@ -91,14 +98,14 @@ void Range_index::query_one(const Piece_query &pq, size_t item, std::vector<Prim
   }
   const uint32_t k = static_cast<uint32_t>(item);
   auto none = [](auto &) {};
-  if (balls_ && !Q.is_mesh()) {
-    run(balls_, [&] { return pq.ball_vs_balls_boxes(k); }, [&](auto &q) { pq.add_ball_vs_balls(k, q); });
+  if (!S.is_mesh() && !Q.is_mesh()) {
+    run(trees_.balls, [&] { return pq.ball_vs_balls_boxes(k); }, [&](auto &q) { pq.add_ball_vs_balls(k, q); });
     for (uint32_t b : ids) out.push_back(pair(SS, SS, b, k));
-  } else if (balls_) {
-    run(balls_, [&] { return pq.triangle_vs_balls_boxes(k); }, none);
+  } else if (!S.is_mesh()) {
+    run(trees_.balls, [&] { return pq.triangle_vs_balls_boxes(k); }, none);
     for (uint32_t b : ids) out.push_back(pair(ST, TS, b, k));
   } else {
-    run(triangles_, [&] { return pq.ball_vs_triangles_boxes(k); }, none);
+    run(trees_.triangles, [&] { return pq.ball_vs_triangles_boxes(k); }, none);
     for (uint32_t t : ids) out.push_back(pair(TS, ST, t, k));
   }
 }

@@ -23,6 +23,21 @@
 
 namespace pccd::broad {
 
+// A body's primitives as lifted points (broad/linearize.h) in range trees: vertices,
+// triangles and edges of a mesh, or the balls of a sphere set. Depends on the body
+// only (lifted points are in the body frame), so it is built once per body.
+struct Stored_trees {
+  std::unique_ptr<Range_tree<kDimVertex>> vertices;
+  std::unique_ptr<Range_tree<kDimTriangle>> triangles;
+  std::unique_ptr<Range_tree<kDimEdge>> edges;
+  std::unique_ptr<Range_tree<kDimBall>> balls;
+  explicit Stored_trees(const Body_data &d);
+};
+
+// The trees of a body: built on the first call (thread-safe), then shared
+// (Body_data::trees).
+const Stored_trees &stored_trees(const Body_data &d);
+
 class Range_index {
  public:
   // stored: 0 or 1, the side whose primitives go into the trees.
@@ -37,10 +52,7 @@ class Range_index {
   const Pair_ctx &ctx_;
   int s_;  // stored side
   Relative_motion rel_;
-  std::unique_ptr<Range_tree<kDimVertex>> vertices_;
-  std::unique_ptr<Range_tree<kDimTriangle>> triangles_;
-  std::unique_ptr<Range_tree<kDimEdge>> edges_;
-  std::unique_ptr<Range_tree<kDimBall>> balls_;
+  const Stored_trees &trees_;
   int pieces_ = 1;
 
   Prim_pair pair(uint8_t stored_is_a_type, uint8_t stored_is_b_type, uint32_t stored,

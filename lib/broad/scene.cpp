@@ -4,6 +4,8 @@
 #include <map>
 #include <string>
 
+#include "broad/choose.h"
+
 namespace pccd::broad {
 
 using arith::Rational;
@@ -57,25 +59,34 @@ Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_opti
       throw arith::Input_error("bodies[" + std::to_string(k) + "].motion: " + e.what());
     }
   }
+  std::vector<std::pair<size_t, size_t>> pairs;
+  for (size_t i = 0; i < mb.size(); ++i)
+    for (size_t j = i + 1; j < mb.size(); ++j) pairs.push_back({i, j});
+  return solve_prepared(mb, pairs, opt, -1);
+}
+
+Scene_report solve_prepared(const std::vector<Moving_body> &mb,
+                            const std::vector<std::pair<size_t, size_t>> &pairs,
+                            const Scene_options &opt, int stored) {
   Thread_pool pool(std::max(1u, opt.threads));
   Search_options so;
   so.solve = opt.solve;
   so.all_contacts = opt.all_contacts;
-  so.brute = opt.brute;
-  so.range = opt.range;
+  so.brute = opt.brute && !opt.automatic;
+  so.range = opt.automatic ? choose_range(stored >= 0) : opt.range;
+  so.stored = stored;
 
   std::vector<std::unique_ptr<Pair_work>> work;
   Scene_report rep;
-  for (size_t i = 0; i < mb.size(); ++i)
-    for (size_t j = i + 1; j < mb.size(); ++j) {
-      auto w = std::make_unique<Pair_work>();
-      w->i = i;
-      w->j = j;
-      w->ctx = std::make_unique<Pair_ctx>(mb[i], mb[j]);
-      w->out = search_pair(*w->ctx, so, pool);
-      rep.stats.add(w->out.stats);
-      work.push_back(std::move(w));
-    }
+  for (const auto &ij : pairs) {
+    auto w = std::make_unique<Pair_work>();
+    w->i = ij.first;
+    w->j = ij.second;
+    w->ctx = std::make_unique<Pair_ctx>(mb[w->i], mb[w->j]);
+    w->out = search_pair(*w->ctx, so, pool);
+    rep.stats.add(w->out.stats);
+    work.push_back(std::move(w));
+  }
 
   std::vector<std::pair<Pair_work *, size_t>> everything;
   for (auto &w : work) {

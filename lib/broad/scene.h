@@ -18,6 +18,7 @@ struct Scene_options {
   bool all_contacts = false;
   bool brute = false;
   bool range = false;  // broad/range_index.h (ignored when brute)
+  bool automatic = true;  // the measured choice (broad/choose.h); overrides brute and range
   unsigned threads = 1;
 };
 
@@ -45,5 +46,12 @@ struct Scene_report {
 
 // Input_error naming "bodies[k].motion" when a motion's quaternion vanishes on [0, 1].
 Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt);
+
+// The report of the body pairs (i, j), i < j, of bodies already on their (validated)
+// motions: solve_scene's work after validation, also behind the on-line index
+// (broad/online_index.h). stored: Search_options::stored of every pair (range phase).
+Scene_report solve_prepared(const std::vector<Moving_body> &mb,
+                            const std::vector<std::pair<size_t, size_t>> &pairs,
+                            const Scene_options &opt, int stored);
 
 }  // namespace pccd::broad

@@ -31,8 +31,9 @@ from ._motion import Motion  # noqa: E402
 from ._body import Mesh, Spheres  # noqa: E402
 from ._scene import Body, Contact, PairResult, SceneResult, load_scene  # noqa: E402
 from ._scene import check_scene as check  # noqa: E402
+from ._index import Index  # noqa: E402
 
 __all__ = ["__version__", "KINDS", "solve", "solve_linear", "collides_linear", "Result",
-           "ContactTime", "Feature", "Motion", "Mesh", "Spheres", "Body", "check", "load_scene",
+           "ContactTime", "Feature", "Motion", "Mesh", "Spheres", "Body", "check", "load_scene", "Index",
            "SceneResult", "PairResult", "Contact", "Error", "InputError",
            "LimitError", "InternalError"]

@@ -20,8 +20,8 @@ from ._results import ContactTime
 from ._solve import _config
 
 FEATURES = ("vertex", "edge", "triangle", "sphere")
-BROAD_PHASES = {"boxes": lib.PCCD_BROAD_BOXES, "brute": lib.PCCD_BROAD_BRUTE,
-                "range": lib.PCCD_BROAD_RANGE}
+BROAD_PHASES = {"auto": lib.PCCD_BROAD_AUTO, "boxes": lib.PCCD_BROAD_BOXES,
+                "brute": lib.PCCD_BROAD_BRUTE, "range": lib.PCCD_BROAD_RANGE}
 
 
 class Body:
@@ -103,9 +103,7 @@ def _names(bodies):
     return [b.name if b.name is not None else f"body{i}" for i, b in enumerate(bodies)]
 
 
-def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-                broad_phase="boxes", want_exact=True):
-    """Every body pair in contact and the scene's first contact (API.md, Scenes)."""
+def _bodies_list(bodies):
     try:
         bodies = list(bodies)
     except TypeError:
@@ -113,29 +111,49 @@ def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1
     for i, b in enumerate(bodies):
         if not isinstance(b, Body):
             raise InputError(f"bodies[{i}]: expected a polyccd.Body, got {show(b)}")
-    if len(bodies) < 2:
-        raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
+    return bodies
+
+
+def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact):
+    """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query."""
     if broad_phase not in BROAD_PHASES:
-        raise InputError(f"broad_phase: expected \"boxes\", \"brute\" or \"range\", got {show(broad_phase)}")
+        raise InputError("broad_phase: expected \"auto\", \"boxes\", \"brute\" or \"range\", "
+                         f"got {show(broad_phase)}")
     if isinstance(threads, bool) or not isinstance(threads, int) or not 1 <= threads <= 1024:
         raise InputError(f"threads: expected an integer from 1 to 1024, got {show(threads)}")
     if all_contacts not in (True, False):
         raise InputError(f"all_contacts: expected True or False, got {show(all_contacts)}")
-    scene = _new("scene")
-    for b in bodies:
-        check(lib.pccd_scene_add(scene, b.shape._handle,
-                                 b.motion._handle if b.motion is not None else ffi.NULL, ffi.NULL))
-    cfg, _keep = _config(time_tolerance, True, want_exact, "time_tolerance")
+    cfg, keep = _config(time_tolerance, True, want_exact, "time_tolerance")
     opt = ffi.new("pccd_scene_options *")
     check(lib.pccd_scene_options_init(opt))
     opt.threads = threads
     opt.all_contacts = 1 if all_contacts else 0
     opt.broad_phase = BROAD_PHASES[broad_phase]
-    rep = _new("report")
-    rc = lib.pccd_scene_solve(scene, cfg, opt, rep)
+    return cfg, keep, opt
+
+
+def _motion_handle(motion):
+    return motion._handle if motion is not None else ffi.NULL
+
+
+def _solved(rc):
+    """Raises the error of a failed solve (the message without the C function's name)."""
     if rc != 0:
-        message = last_error().split(": ", 1)[-1]
-        raise error_for(rc, message)
+        raise error_for(rc, last_error().split(": ", 1)[-1])
+
+
+def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
+                broad_phase="auto", want_exact=True):
+    """Every body pair in contact and the scene's first contact (API.md, Scenes)."""
+    bodies = _bodies_list(bodies)
+    if len(bodies) < 2:
+        raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
+    cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact)
+    scene = _new("scene")
+    for b in bodies:
+        check(lib.pccd_scene_add(scene, b.shape._handle, _motion_handle(b.motion), ffi.NULL))
+    rep = _new("report")
+    _solved(lib.pccd_scene_solve(scene, cfg, opt, rep))
     return _read(rep, _names(bodies))
 
 
