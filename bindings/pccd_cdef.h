@@ -194,6 +194,9 @@ int pccd_index_new(pccd_index **out, const pccd_body *body, const pccd_motion *m
 void pccd_index_free(pccd_index *ix);
 int pccd_index_query(const pccd_index *ix, const pccd_body *body, const pccd_motion *motion,
                      const pccd_config *cfg, const pccd_scene_options *opt, pccd_report *rep);
+int pccd_index_query_many(const pccd_index *ix, const pccd_body *const *bodies,
+                          const pccd_motion *const *motions, size_t n, const pccd_config *cfg,
+                          const pccd_scene_options *opt, pccd_report *const *reports);
 
 typedef struct pccd_scene_stats {
   unsigned long long pieces, leaves, candidates, solved, static_tests, refined;

@@ -1,4 +1,7 @@
 // pccd_index_*: the on-line collision problem (broad/online_index.h).
+#include <string>
+#include <vector>
+
 #include "api/body_handle.h"
 #include "api/guard.h"
 #include "api/handles.h"
@@ -46,6 +49,34 @@ PCCD_API int pccd_index_query(const pccd_index *ix, const pccd_body *body,
     rep->solved = false;
     rep->r = ix->ix->query(scene_body(body, motion), so);
     rep->solved = true;
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const *bodies,
+                                   const pccd_motion *const *motions, size_t n,
+                                   const pccd_config *cfg, const pccd_scene_options *opt,
+                                   pccd_report *const *reports) {
+  return guard("pccd_index_query_many", [&] {
+    require(ix, "index");
+    if (n == 0) return PCCD_OK;
+    require(bodies, "bodies");
+    require(reports, "reports");
+    const pccd::broad::Scene_options so = pccd::api::read_scene_options(cfg, opt);
+    std::vector<pccd::broad::Scene_body> qs(n);
+    for (size_t k = 0; k < n; ++k) {
+      const std::string at = "[" + std::to_string(k) + "]";
+      require(bodies[k], ("bodies" + at).c_str());
+      require(reports[k], ("reports" + at).c_str());
+      qs[k] = scene_body(bodies[k], motions ? motions[k] : nullptr);
+    }
+    for (size_t k = 0; k < n; ++k) reports[k]->solved = false;
+    std::vector<pccd::broad::Scene_report> out;
+    ix->ix->query_many(qs, so, out);
+    for (size_t k = 0; k < n; ++k) {
+      reports[k]->r = std::move(out[k]);
+      reports[k]->solved = true;
+    }
     return PCCD_OK;
   });
 }

@@ -24,6 +24,12 @@ class Online_index {
   // Input_error "motion: ..." when the query motion's quaternion vanishes on [0, 1].
   Scene_report query(const Scene_body &q, const Scene_options &opt) const;
 
+  // Every query of qs, into out[k] (resized). The queries are shared by opt.threads
+  // workers, each query solved on one thread; answers equal those of query(). Input
+  // errors are found before any query is solved ("queries[k].motion: ...").
+  void query_many(const std::vector<Scene_body> &qs, const Scene_options &opt,
+                  std::vector<Scene_report> &out) const;
+
   const Moving_body &stored() const { return stored_; }
 
  private:

@@ -40,3 +40,23 @@ class Index:
         _solved(lib.pccd_index_query(self._handle, body.shape._handle, _motion_handle(body.motion),
                                      cfg, opt, rep))
         return _read(rep, _names([self.body, body]))
+
+    def query_many(self, bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
+                   broad_phase="auto", want_exact=True):
+        """The SceneResults of every query body, in order (one C call; `threads` workers
+        share the queries, each query solved on one thread)."""
+        try:
+            bodies = list(bodies)
+        except TypeError:
+            raise InputError(f"bodies: expected a sequence of polyccd.Body, got {show(bodies)}") from None
+        for i, b in enumerate(bodies):
+            if not isinstance(b, Body):
+                raise InputError(f"bodies[{i}]: expected a polyccd.Body, got {show(b)}")
+        cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact)
+        n = len(bodies)
+        shapes = ffi.new("pccd_body *[]", [b.shape._handle for b in bodies] or 1)
+        motions = ffi.new("pccd_motion *[]", [_motion_handle(b.motion) for b in bodies] or 1)
+        reps = [_new("report") for _ in range(n)]
+        rep_array = ffi.new("pccd_report *[]", reps or 1)
+        _solved(lib.pccd_index_query_many(self._handle, shapes, motions, n, cfg, opt, rep_array))
+        return [_read(r, _names([self.body, b])) for r, b in zip(reps, bodies)]
