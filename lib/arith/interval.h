@@ -19,6 +19,8 @@
 // a nonzero error gives a one-ulp interval on the side it points to.
 #pragma once
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 #include "arith/errors.h"
 
@@ -32,8 +34,21 @@ struct Interval {
   bool is_point_zero() const { return lo == 0 && hi == 0; }
 };
 
-inline double round_down(double x) { return std::nextafter(x, -HUGE_VAL); }
-inline double round_up(double x) { return std::nextafter(x, HUGE_VAL); }
+// One ulp up / down: std::nextafter(x, +-HUGE_VAL) without the library call (the hot
+// path of every interval operation). Stepping the bit pattern by one moves a finite
+// nonzero double one ulp away from / towards zero (IEEE-754 binary64 orders the
+// magnitudes of same-signed doubles like their bit patterns); -inf steps to -DBL_MAX,
+// +inf and NaN stay, +-0 steps to +-DBL_TRUE_MIN. Independent of the rounding mode.
+inline double round_up(double x) {
+  if (!(x < HUGE_VAL)) return x;  // +inf, NaN
+  if (x == 0) return 0x1p-1074;
+  uint64_t b;
+  std::memcpy(&b, &x, sizeof b);
+  b = x > 0 ? b + 1 : b - 1;
+  std::memcpy(&x, &b, sizeof b);
+  return x;
+}
+inline double round_down(double x) { return -round_up(-x); }
 
 // Whether this thread runs in round-to-nearest (set by Nearest_scope).
 inline thread_local bool tl_nearest = false;
