@@ -79,11 +79,27 @@ $(BUILD)/test_scene: tests/c/test_scene.c tests/c/check.h include/polyccd.h $(LI
 	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_scene.c \
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
 
+# The on-line index C test (pccd_index_*), linked against the shared library.
+$(BUILD)/test_index: tests/c/test_index.c tests/c/check.h include/polyccd.h $(LIB)
+	@mkdir -p $(BUILD)
+	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_index.c \
+	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
+
 # The body C test (pccd_body_*), linked against the shared library.
 $(BUILD)/test_body: tests/c/test_body.c tests/c/check.h include/polyccd.h $(LIB)
 	@mkdir -p $(BUILD)
 	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_body.c \
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
+
+# Internal test of the interval layer's ulp steps (links no library code: header only).
+$(BUILD)/test_ulp: tests/cpp/test_ulp.cpp lib/arith/interval.h
+	@mkdir -p $(BUILD)
+	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/test_ulp.cpp
+
+# Internal test of the range tree's clause bounds against exact rationals.
+$(BUILD)/test_halfspace_bounds: tests/cpp/test_halfspace_bounds.cpp lib/broad/halfspaces.h lib/arith/interval.h
+	@mkdir -p $(BUILD)
+	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/test_halfspace_bounds.cpp $(LDLIBS)
 
 check-header:
 	@echo '#include "polyccd.h"' > $(BUILD)/hdr.c
@@ -95,11 +111,12 @@ check-symbols: $(LIB)
 	if [ -n "$$bad" ]; then echo "exported symbols without pccd_ prefix:"; echo "$$bad"; exit 1; fi; \
 	echo "nm -D: only pccd_ symbols exported ($$(nm -D --defined-only $(LIB) | grep -c ' T pccd_') functions)"
 
-test-c: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene check-header check-symbols
+test-c: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index check-header check-symbols
 	$(BUILD)/test_api
 	$(BUILD)/test_motion
 	$(BUILD)/test_body
 	$(BUILD)/test_scene
+	$(BUILD)/test_index
 
 test-py: all $(BUILD)/poly_probe
 	POLYCCD_QUERY_DIR=$${POLYCCD_QUERY_DIR:-../shared/data/ccd-queries} $(VPY) -m pytest -q tests
@@ -107,7 +124,7 @@ test-py: all $(BUILD)/poly_probe
 test: all test-c test-py
 
 # Memory checks: the C test and the corpus under valgrind (see tests/c/run_valgrind.sh).
-valgrind: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene
+valgrind: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index
 	bash tests/c/run_valgrind.sh
 
 # ASan + UBSan build of the library and the C test (tests/c/run_sanitizers.sh).
