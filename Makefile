@@ -111,7 +111,9 @@ check-symbols: $(LIB)
 	if [ -n "$$bad" ]; then echo "exported symbols without pccd_ prefix:"; echo "$$bad"; exit 1; fi; \
 	echo "nm -D: only pccd_ symbols exported ($$(nm -D --defined-only $(LIB) | grep -c ' T pccd_') functions)"
 
-test-c: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index check-header check-symbols
+test-c: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index $(BUILD)/test_ulp $(BUILD)/test_halfspace_bounds check-header check-symbols
+	$(BUILD)/test_ulp
+	$(BUILD)/test_halfspace_bounds
 	$(BUILD)/test_api
 	$(BUILD)/test_motion
 	$(BUILD)/test_body
