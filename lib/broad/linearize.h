@@ -31,6 +31,9 @@
 namespace pccd::broad {
 
 constexpr int kDimVertex = 3, kDimTriangle = 10, kDimEdge = 12, kDimBall = 5;
+// Plücker coordinates (direction, moment) of a triangle's three sides a0a1, a1a2, a2a0:
+// the second level of the stored triangles under a linear translation (not in the tree).
+constexpr int kDimSides = 18;
 
 using IPoly = poly::Poly<Interval>;
 
@@ -41,12 +44,18 @@ std::vector<std::array<Interval, kDimVertex>> lift_vertices(const Body_data &b,
 std::vector<std::array<Interval, kDimTriangle>> lift_triangles(const Body_data &b);
 std::vector<std::array<Interval, kDimEdge>> lift_edges(const Body_data &b);
 std::vector<std::array<Interval, kDimBall>> lift_balls(const Body_data &b);
+std::vector<std::array<Interval, kDimSides>> lift_triangle_sides(const Body_data &b);
 
 // The query body's homogeneous motion in the stored body's frame, in t.
 struct Relative_motion {
   std::array<std::array<IPoly, 3>, 3> M;
   std::array<IPoly, 3> u;
   IPoly w;
+  // Exactly (from the rational motions): both rotations and W constant, both
+  // translations of degree <= 1. Then every query point moves on a segment relative to
+  // the stored body, all by the same vector, and Piece_query adds the exact conditions
+  // of the translation linearization (LINEARIZATION.md, "Linear translations").
+  bool linear_translation = false;
   Relative_motion(const Moving_body &stored, const Moving_body &query);
   // Float estimate of the position of body point p at t (for choosing pieces only).
   std::array<double, 3> approx(const std::array<double, 3> &p, double t) const;
@@ -73,16 +82,31 @@ class Piece_query {
   // query ball, stored balls
   Cnf<kDimBall> ball_vs_balls_boxes(uint32_t k) const;
   void add_ball_vs_balls(uint32_t k, Cnf<kDimBall> &q) const;
+  // Linear translations only (Relative_motion::linear_translation): the Plücker side
+  // conditions, "the line of the relative motion meets the closed triangle /
+  // parallelogram", as clauses "all sides >= 0 or all sides <= 0".
+  // query triangle, stored vertices (3-D, appended to q):
+  void add_translation_sides_vs_vertices(uint32_t tri, Cnf<kDimVertex> &q) const;
+  // query vertex, stored triangles' sides (lift_triangle_sides; a second level):
+  Cnf<kDimSides> translation_sides_vs_triangles(uint32_t v) const;
+  // query edge, stored edges (Plücker coordinates 0..5 of the edge lift, appended to q):
+  void add_translation_sides_vs_edges(uint32_t e, Cnf<kDimEdge> &q) const;
+  bool linear_translation() const { return translation_; }
+
   // ball and triangle: boxes only (the distance to a plane is not linear in it)
   Cnf<kDimBall> triangle_vs_balls_boxes(uint32_t tri) const;
   Cnf<kDimTriangle> ball_vs_triangles_boxes(uint32_t k) const;
 
  private:
   const Moving_body &q_;
+  bool translation_ = false;
   std::vector<Interval> w_, w2_;  // scaled Bernstein forms (broad/scaled_bernstein.h)
   std::vector<std::array<std::vector<Interval>, 3>> H_;  // homogeneous trajectory of every query point
 
   const std::array<std::vector<Interval>, 3> &H(uint32_t point) const { return H_[point]; }
+  // Homogeneous position (weight w_[0]) of a query point at the piece's start (end).
+  std::array<Interval, 3> start(uint32_t point) const;
+  std::array<Interval, 3> end(uint32_t point) const;
 };
 
 }  // namespace pccd::broad

@@ -15,6 +15,7 @@ Stored_trees::Stored_trees(const Body_data &d) {
     vertices = std::make_unique<Range_tree<kDimVertex>>(lift_vertices(d, d.surface_vertices));
     triangles = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d));
     edges = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d));
+    triangle_sides = lift_triangle_sides(d);
   } else {
     balls = std::make_unique<Range_tree<kDimBall>>(lift_balls(d));
   }
@@ -82,16 +83,28 @@ void Range_index::query_one(const Piece_query &pq, size_t item, std::vector<Prim
       const uint32_t v = Q.data->surface_vertices[item];
       run(trees_.triangles, [&] { return pq.vertex_vs_triangles_boxes(v); },
           [&](auto &q) { pq.add_vertex_vs_triangles(v, q); });
+      if (pq.linear_translation() && !ids.empty()) {  // second level: the triangle's sides
+        const Cnf<kDimSides> sides = pq.translation_sides_vs_triangles(v);
+        for (uint32_t t : ids)
+          if (cnf_possible(sides, trees_.triangle_sides[t].data())) out.push_back(pair(FV, VF, t, v));
+        return;
+      }
       for (uint32_t t : ids) out.push_back(pair(FV, VF, t, v));
     } else if (item < nv + nt) {
       const uint32_t t = static_cast<uint32_t>(item - nv);
       run(trees_.vertices, [&] { return pq.triangle_vs_vertices_boxes(t); },
-          [&](auto &q) { pq.add_triangle_vs_vertices(t, q); });
+          [&](auto &q) {
+            pq.add_triangle_vs_vertices(t, q);
+            if (pq.linear_translation()) pq.add_translation_sides_vs_vertices(t, q);
+          });
       for (uint32_t i : ids) out.push_back(pair(VF, FV, S.data->surface_vertices[i], t));
     } else {
       const uint32_t e = static_cast<uint32_t>(item - nv - nt);
       run(trees_.edges, [&] { return pq.edge_vs_edges_boxes(e); },
-          [&](auto &q) { pq.add_edge_vs_edges(e, q); });
+          [&](auto &q) {
+            pq.add_edge_vs_edges(e, q);
+            if (pq.linear_translation()) pq.add_translation_sides_vs_edges(e, q);
+          });
       for (uint32_t f : ids) out.push_back(pair(EE, EE, f, e));
     }
     return;

@@ -31,6 +31,9 @@ struct Stored_trees {
   std::unique_ptr<Range_tree<kDimTriangle>> triangles;
   std::unique_ptr<Range_tree<kDimEdge>> edges;
   std::unique_ptr<Range_tree<kDimBall>> balls;
+  // Meshes: the Plücker coordinates of each triangle's sides, tested on the triangles the
+  // tree reports for a query vertex under a linear translation (a second level).
+  std::vector<std::array<Interval, kDimSides>> triangle_sides;
   explicit Stored_trees(const Body_data &d);
 };
 
