@@ -27,13 +27,22 @@ struct Halfspace {
   Interval a0;
 };
 
+// A bound on one coordinate, s_k <= v (upper) or s_k >= v: a one-halfspace clause with a
+// unit normal, kept apart because it costs one comparison (the box conditions).
+struct Bound {
+  uint8_t k = 0;
+  bool upper = false;
+  double v = 0;
+};
+
 template <int D>
 struct Cnf {
+  std::vector<Bound> bounds;
   std::vector<Halfspace<D>> hs;
   std::vector<uint32_t> clause_end;  // clause c is hs[clause_end[c-1] .. clause_end[c])
 
   void end_clause() { clause_end.push_back(static_cast<uint32_t>(hs.size())); }
-  bool empty() const { return clause_end.empty(); }
+  bool empty() const { return clause_end.empty() && bounds.empty(); }
 };
 
 // Bounds of a . x + a0 over every coefficient in h and every point in the box x, for
@@ -77,6 +86,8 @@ double lower_bound(const Halfspace<D> &h, const Interval *x) {
 // each clause separately has a halfspace that meets the box).
 template <int D>
 bool cnf_possible(const Cnf<D> &q, const Interval *x) {
+  for (const Bound &b : q.bounds)
+    if (b.upper ? !(x[b.k].lo <= b.v) : !(x[b.k].hi >= b.v)) return false;
   uint32_t start = 0;
   for (uint32_t end : q.clause_end) {
     bool any = false;
@@ -91,6 +102,8 @@ bool cnf_possible(const Cnf<D> &q, const Interval *x) {
 // is reported without testing its points; only a shortcut, reporting more is safe).
 template <int D>
 bool cnf_certain(const Cnf<D> &q, const Interval *x) {
+  for (const Bound &b : q.bounds)
+    if (b.upper ? !(x[b.k].hi <= b.v) : !(x[b.k].lo >= b.v)) return false;
   uint32_t start = 0;
   for (uint32_t end : q.clause_end) {
     bool any = false;

@@ -1,6 +1,7 @@
 #include "broad/linearize.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "arith/convert.h"
 #include "broad/scaled_bernstein.h"
@@ -250,26 +251,57 @@ Piece_query::Piece_query(const Relative_motion &rel, const Moving_body &query, d
       H_[k][i] = std::move(h);
     }
   }
+  bool positive = true;
+  for (const Interval &x : w_) positive = positive && x.lo > 0;
+  if (!positive) return;
+  ybox_.resize(H_.size());
+  for (size_t k = 0; k < H_.size(); ++k)
+    for (int i = 0; i < 3; ++i) {
+      Interval b(HUGE_VAL, -HUGE_VAL);
+      for (size_t j = 0; j <= n; ++j) {
+        const Interval y = H_[k][i][j] / w_[j];
+        b = Interval(std::min(b.lo, y.lo), std::max(b.hi, y.hi));
+      }
+      ybox_[k][i] = b;
+    }
 }
 
-namespace {
-
-// Clauses "max_i H_i,k >= lo_k w" and "min_i H_i,k <= hi_k w" for k = 0..2: the stored
-// primitive's box [lo, hi] (lifted coordinates lo_at + k, hi_at + k) meets the box of the
-// query points h (each grown by rho w).
+// Conditions "the stored primitive's box [lo, hi] (lifted coordinates lo_at + k,
+// hi_at + k) meets the box of the query points pts, each grown by rho, at the same time".
+// When every Bernstein coefficient of w is certainly > 0, y_k = H_k / w lies between the
+// least and the largest ratio A_j / W_j of its coefficients (rational Bernstein convex
+// hull: y(s) = sum A_j b_j(s) / sum W_j b_j(s) is a convex combination of them), so the
+// conditions are the bounds lo_k <= max + rho and hi_k >= min - rho (ybox_, rounded
+// outward). Otherwise the clauses "some coefficient of H_i,k + rho w - lo_k w is >= 0"
+// and "some coefficient of hi_k w + rho w - H_i,k is >= 0" over the points i.
 template <int D>
-void box_clauses(Cnf<D> &q, const std::vector<const S3 *> &h, const Sb &w, int lo_at, int hi_at,
-                 const Sb *rho_w = nullptr) {
+void Piece_query::box_conditions(Cnf<D> &q, std::initializer_list<uint32_t> pts, int lo_at,
+                                 int hi_at, const Interval *rho) const {
+  if (!ybox_.empty()) {
+    const double r = rho ? rho->hi : 0.0;
+    for (int k = 0; k < 3; ++k) {
+      double mn = HUGE_VAL, mx = -HUGE_VAL;
+      for (uint32_t p : pts) {
+        mn = std::min(mn, ybox_[p][k].lo);
+        mx = std::max(mx, ybox_[p][k].hi);
+      }
+      q.bounds.push_back({static_cast<uint8_t>(lo_at + k), true, r ? arith::round_up(mx + r) : mx});
+      q.bounds.push_back({static_cast<uint8_t>(hi_at + k), false, r ? arith::round_down(mn - r) : mn});
+    }
+    return;
+  }
+  const Sb rho_w = rho ? sb_scale(*rho, w_) : Sb();
   for (int k = 0; k < 3; ++k)
     for (int side = 0; side < 2; ++side) {
-      for (const S3 *p : h) {
+      for (uint32_t p : pts) {
+        const Sb &h = H(p)[k];
         Lin<D> g;
         if (side == 0) {  // H_k + rho w - lo_k w >= 0
-          g.c[lo_at + k] = sb_neg(w);
-          g.c0 = rho_w ? sb_add((*p)[k], *rho_w) : (*p)[k];
+          g.c[lo_at + k] = sb_neg(w_);
+          g.c0 = rho ? sb_add(h, rho_w) : h;
         } else {  // hi_k w + rho w - H_k >= 0
-          g.c[hi_at + k] = w;
-          g.c0 = rho_w ? sb_sub(*rho_w, (*p)[k]) : sb_neg((*p)[k]);
+          g.c[hi_at + k] = w_;
+          g.c0 = rho ? sb_sub(rho_w, h) : sb_neg(h);
         }
         add_halfspaces(q, g, +1);
       }
@@ -277,13 +309,11 @@ void box_clauses(Cnf<D> &q, const std::vector<const S3 *> &h, const Sb &w, int l
     }
 }
 
-}  // namespace
-
 Cnf<kDimVertex> Piece_query::triangle_vs_vertices_boxes(uint32_t tri) const {
   const auto &t = q_.mesh->triangles()[tri];
   Cnf<kDimVertex> q;
   // the stored vertex p is its own box: lo = hi = p (coordinates 0..2)
-  box_clauses(q, {&H(t[0]), &H(t[1]), &H(t[2])}, w_, 0, 0);
+  box_conditions(q, {t[0], t[1], t[2]}, 0, 0);
   return q;
 }
 
@@ -308,7 +338,7 @@ void Piece_query::add_triangle_vs_vertices(uint32_t tri, Cnf<kDimVertex> &q) con
 
 Cnf<kDimTriangle> Piece_query::vertex_vs_triangles_boxes(uint32_t v) const {
   Cnf<kDimTriangle> q;
-  box_clauses(q, {&H(v)}, w_, 4, 7);
+  box_conditions(q, {v}, 4, 7);
   return q;
 }
 
@@ -323,7 +353,7 @@ void Piece_query::add_vertex_vs_triangles(uint32_t v, Cnf<kDimTriangle> &q) cons
 Cnf<kDimEdge> Piece_query::edge_vs_edges_boxes(uint32_t e) const {
   const auto &E = q_.mesh->edges()[e];
   Cnf<kDimEdge> q;
-  box_clauses(q, {&H(E[0]), &H(E[1])}, w_, 6, 9);
+  box_conditions(q, {E[0], E[1]}, 6, 9);
   return q;
 }
 
@@ -389,9 +419,9 @@ Cnf<kDimBall> Piece_query::triangle_vs_balls_boxes(uint32_t tri) const {
 }
 
 Cnf<kDimTriangle> Piece_query::ball_vs_triangles_boxes(uint32_t k) const {
-  const Sb rho_w = sb_scale(arith::enclose(q_.spheres->radii()[k]), w_);
+  const Interval rho = arith::enclose(q_.spheres->radii()[k]);
   Cnf<kDimTriangle> q;
-  box_clauses(q, {&H(k)}, w_, 4, 7, &rho_w);
+  box_conditions(q, {k}, 4, 7, &rho);
   return q;
 }
 

@@ -23,6 +23,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 #include "broad/halfspaces.h"
@@ -103,7 +104,14 @@ class Piece_query {
   std::vector<Interval> w_, w2_;  // scaled Bernstein forms (broad/scaled_bernstein.h)
   std::vector<std::array<std::vector<Interval>, 3>> H_;  // homogeneous trajectory of every query point
 
+  // Per query point, an enclosure of each coordinate of its position over the piece
+  // (empty when some Bernstein coefficient of w is not certainly > 0).
+  std::vector<std::array<Interval, 3>> ybox_;
+
   const std::array<std::vector<Interval>, 3> &H(uint32_t point) const { return H_[point]; }
+  template <int D>
+  void box_conditions(Cnf<D> &q, std::initializer_list<uint32_t> pts, int lo_at, int hi_at,
+                      const Interval *rho = nullptr) const;
   // Homogeneous position (weight w_[0]) of a query point at the piece's start (end).
   std::array<Interval, 3> start(uint32_t point) const;
   std::array<Interval, 3> end(uint32_t point) const;
