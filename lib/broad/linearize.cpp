@@ -205,15 +205,14 @@ Relative_motion::Relative_motion(const Moving_body &S, const Moving_body &Q) {
   w = S.W_i * S.W_i * Q.W_i;
 }
 
-std::array<double, 3> Relative_motion::approx(const std::array<double, 3> &p, double t) const {
-  std::array<double, 3> y;
-  const double wt = approx_eval(w, t);
+Relative_motion::Pose Relative_motion::approx(double t) const {
+  Pose p;
+  p.w = approx_eval(w, t);
   for (int i = 0; i < 3; ++i) {
-    double s = approx_eval(u[i], t);
-    for (int j = 0; j < 3; ++j) s += approx_eval(M[i][j], t) * p[j];
-    y[i] = s / wt;
+    p.u[i] = approx_eval(u[i], t);
+    for (int j = 0; j < 3; ++j) p.M[i][j] = approx_eval(M[i][j], t);
   }
-  return y;
+  return p;
 }
 
 Piece_query::Piece_query(const Relative_motion &rel, const Moving_body &query, double a, double b)

@@ -58,8 +58,16 @@ struct Relative_motion {
   // of the translation linearization (LINEARIZATION.md, "Linear translations").
   bool linear_translation = false;
   Relative_motion(const Moving_body &stored, const Moving_body &query);
-  // Float estimate of the position of body point p at t (for choosing pieces only).
-  std::array<double, 3> approx(const std::array<double, 3> &p, double t) const;
+  // Float estimate of the relative pose at t (for choosing pieces only).
+  struct Pose {
+    double M[3][3], u[3], w;
+    std::array<double, 3> apply(const std::array<double, 3> &p) const {
+      std::array<double, 3> y;
+      for (int i = 0; i < 3; ++i) y[i] = (M[i][0] * p[0] + M[i][1] * p[1] + M[i][2] * p[2] + u[i]) / w;
+      return y;
+    }
+  };
+  Pose approx(double t) const;
 };
 
 // The query primitives of one body over one time piece [a, b] (reparametrized to

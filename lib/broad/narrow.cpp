@@ -10,7 +10,15 @@ namespace pccd::broad {
 using motion::Point_traj;
 using poly::Poly;
 
-Pair_ctx::Pair_ctx(const Moving_body &a, const Moving_body &b) : A_(a), B_(b) {
+Pair_ctx::Pair_ctx(const Moving_body &a, const Moving_body &b) : A_(a), B_(b) {}
+
+// The common-denominator trajectories, on the first solve (a pair the broad phase
+// finds no candidate for never needs them; call_once: solves run in parallel).
+void Pair_ctx::init() const {
+  std::call_once(once_, [this] { compute(); });
+}
+
+void Pair_ctx::compute() const {
   const Moving_body *sides[2] = {&A_, &B_};
   for (int s = 0; s < 2; ++s) {
     const Moving_body &me = *sides[s], &other = *sides[1 - s];
@@ -28,6 +36,7 @@ Pair_ctx::Pair_ctx(const Moving_body &a, const Moving_body &b) : A_(a), B_(b) {
 }
 
 Point_traj<Rational> Pair_ctx::traj_q(int s, uint32_t k) const {
+  init();
   const motion::Point3_q &p = side(s).point(k);
   Point_traj<Rational> x;
   for (int i = 0; i < 3; ++i) {
@@ -40,6 +49,7 @@ Point_traj<Rational> Pair_ctx::traj_q(int s, uint32_t k) const {
 }
 
 Point_traj<Interval> Pair_ctx::traj_i(int s, uint32_t k) const {
+  init();
   const motion::Point3_q &p = side(s).point(k);
   Interval q[3];
   for (int j = 0; j < 3; ++j) q[j] = arith::enclose(p[j]);
@@ -106,6 +116,7 @@ pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p) const {
       throw arith::Internal_error("Pair_ctx::query: not a time-dependent feature pair");
   }
   if (p.type == SS || p.type == ST || p.type == TS) {
+    init();
     if constexpr (std::is_same_v<NT, Rational>) q.scale = D_;
     else q.scale = Di_;
   }

@@ -13,6 +13,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <mutex>
 #include <vector>
 
 #include "broad/moving_body.h"
@@ -63,12 +64,17 @@ class Pair_ctx {
 
  private:
   const Moving_body &A_, &B_;
-  std::array<motion::Mat3_poly, 2> M_;  // Rn_s W_other
-  std::array<motion::Vec3p<Rational>, 2> N_;  // O_s W_other
-  std::array<std::array<std::array<poly::Poly<Interval>, 3>, 3>, 2> Mi_;
-  std::array<motion::Vec3p<Interval>, 2> Ni_;
-  Poly_q D_;
-  poly::Poly<Interval> Di_;
+  // Set once by init() (lazily; see narrow.cpp).
+  mutable std::once_flag once_;
+  mutable std::array<motion::Mat3_poly, 2> M_;  // Rn_s W_other
+  mutable std::array<motion::Vec3p<Rational>, 2> N_;  // O_s W_other
+  mutable std::array<std::array<std::array<poly::Poly<Interval>, 3>, 3>, 2> Mi_;
+  mutable std::array<motion::Vec3p<Interval>, 2> Ni_;
+  mutable Poly_q D_;
+  mutable poly::Poly<Interval> Di_;
+
+  void init() const;
+  void compute() const;
 
   template <class NT> pred::Query_data<NT> query(const Prim_pair &p) const;
   std::array<uint32_t, 3> triangle(int s, uint32_t t) const;

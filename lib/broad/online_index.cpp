@@ -24,8 +24,8 @@ Online_index::Online_index(const Scene_body &stored) : stored_(prepare(stored)) 
 }
 
 Scene_report Online_index::query(const Scene_body &q, const Scene_options &opt) const {
-  const std::vector<Moving_body> mb = {stored_, prepare(q)};
-  return solve_prepared(mb, {{0, 1}}, opt, 0);
+  const Moving_body query = prepare(q);
+  return solve_prepared({&stored_, &query}, {{0, 1}}, opt, 0);
 }
 
 void Online_index::query_many(const std::vector<Scene_body> &qs, const Scene_options &opt,
@@ -39,7 +39,7 @@ void Online_index::query_many(const std::vector<Scene_body> &qs, const Scene_opt
   out.assign(qs.size(), Scene_report());
   Thread_pool pool(std::max(1u, opt.threads));
   pool.parallel_for(qs.size(), [&](size_t k) {
-    out[k] = solve_prepared({stored_, prepared[k]}, {{0, 1}}, one, 0);
+    out[k] = solve_prepared({&stored_, &prepared[k]}, {{0, 1}}, one, 0);
   });
 }
 

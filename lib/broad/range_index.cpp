@@ -33,20 +33,22 @@ Range_index::Range_index(const Pair_ctx &ctx, int stored)
   const Body_data &d = *S.data;
   // Pieces: the relative path length of the query body's box corners, in feature sizes.
   const Body_data &qd = *Q.data;
-  double path = 0;
-  for (int corner = 0; corner < 8; ++corner) {
-    std::array<double, 3> p;
-    for (int a = 0; a < 3; ++a) p[a] = qd.box_c[a] + ((corner >> a) & 1 ? qd.box_h[a] : -qd.box_h[a]);
-    std::array<double, 3> prev = rel_.approx(p, 0.0);
-    double len = 0;
-    for (int i = 1; i <= 16; ++i) {
-      const std::array<double, 3> y = rel_.approx(p, i / 16.0);
-      len += std::sqrt((y[0] - prev[0]) * (y[0] - prev[0]) + (y[1] - prev[1]) * (y[1] - prev[1]) +
-                       (y[2] - prev[2]) * (y[2] - prev[2]));
-      prev = y;
+  std::array<std::array<double, 3>, 8> corner;
+  for (int c = 0; c < 8; ++c)
+    for (int a = 0; a < 3; ++a) corner[c][a] = qd.box_c[a] + ((c >> a) & 1 ? qd.box_h[a] : -qd.box_h[a]);
+  std::array<double, 8> len{};
+  std::array<std::array<double, 3>, 8> prev;
+  for (int i = 0; i <= 16; ++i) {
+    const Relative_motion::Pose pose = rel_.approx(i / 16.0);
+    for (int c = 0; c < 8; ++c) {
+      const std::array<double, 3> y = pose.apply(corner[c]);
+      if (i > 0)
+        len[c] += std::sqrt((y[0] - prev[c][0]) * (y[0] - prev[c][0]) + (y[1] - prev[c][1]) * (y[1] - prev[c][1]) +
+                            (y[2] - prev[c][2]) * (y[2] - prev[c][2]));
+      prev[c] = y;
     }
-    path = std::max(path, len);
   }
+  const double path = *std::max_element(len.begin(), len.end());
   const double feature = std::min(d.feature, qd.feature);
   int k = 0;
   while (k < kMax_log_pieces && path > feature * double(1 << k)) ++k;

@@ -62,10 +62,12 @@ Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_opti
   std::vector<std::pair<size_t, size_t>> pairs;
   for (size_t i = 0; i < mb.size(); ++i)
     for (size_t j = i + 1; j < mb.size(); ++j) pairs.push_back({i, j});
-  return solve_prepared(mb, pairs, opt, -1);
+  std::vector<const Moving_body *> ptr;
+  for (const Moving_body &b : mb) ptr.push_back(&b);
+  return solve_prepared(ptr, pairs, opt, -1);
 }
 
-Scene_report solve_prepared(const std::vector<Moving_body> &mb,
+Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
                             const std::vector<std::pair<size_t, size_t>> &pairs,
                             const Scene_options &opt, int stored) {
   Thread_pool pool(std::max(1u, opt.threads));
@@ -82,7 +84,7 @@ Scene_report solve_prepared(const std::vector<Moving_body> &mb,
     auto w = std::make_unique<Pair_work>();
     w->i = ij.first;
     w->j = ij.second;
-    w->ctx = std::make_unique<Pair_ctx>(mb[w->i], mb[w->j]);
+    w->ctx = std::make_unique<Pair_ctx>(*mb[w->i], *mb[w->j]);
     w->out = search_pair(*w->ctx, so, pool);
     rep.stats.add(w->out.stats);
     work.push_back(std::move(w));

@@ -50,7 +50,7 @@ Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_opti
 // The report of the body pairs (i, j), i < j, of bodies already on their (validated)
 // motions: solve_scene's work after validation, also behind the on-line index
 // (broad/online_index.h). stored: Search_options::stored of every pair (range phase).
-Scene_report solve_prepared(const std::vector<Moving_body> &mb,
+Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
                             const std::vector<std::pair<size_t, size_t>> &pairs,
                             const Scene_options &opt, int stored);
 
