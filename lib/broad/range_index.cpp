@@ -10,14 +10,16 @@ constexpr int kMax_log_pieces = 6;
 constexpr size_t kChunk = 64;  // query primitives per parallel task
 }  // namespace
 
+// The trees split on the box coordinates only (Range_tree): the point of a vertex, the
+// box corners lo, hi of a triangle (4..9) or an edge (6..11), the centre of a ball.
 Stored_trees::Stored_trees(const Body_data &d) {
   if (d.mesh) {
-    vertices = std::make_unique<Range_tree<kDimVertex>>(lift_vertices(d, d.surface_vertices));
-    triangles = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d));
-    edges = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d));
+    vertices = std::make_unique<Range_tree<kDimVertex>>(lift_vertices(d, d.surface_vertices), 0x7u);
+    triangles = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d), 0x3f0u);
+    edges = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d), 0xfc0u);
     triangle_sides = lift_triangle_sides(d);
   } else {
-    balls = std::make_unique<Range_tree<kDimBall>>(lift_balls(d));
+    balls = std::make_unique<Range_tree<kDimBall>>(lift_balls(d), 0x7u);
   }
 }
 
