@@ -335,6 +335,13 @@ void Piece_query::add_triangle_vs_vertices(uint32_t tri, Cnf<kDimVertex> &q) con
   }
 }
 
+Cnf<kDimTriangle> Piece_query::triangle_vs_triangles_boxes(uint32_t tri) const {
+  const auto &t = q_.mesh->triangles()[tri];
+  Cnf<kDimTriangle> q;
+  box_conditions(q, {t[0], t[1], t[2]}, 4, 7);
+  return q;
+}
+
 Cnf<kDimTriangle> Piece_query::vertex_vs_triangles_boxes(uint32_t v) const {
   Cnf<kDimTriangle> q;
   box_conditions(q, {v}, 4, 7);

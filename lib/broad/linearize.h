@@ -102,6 +102,9 @@ class Piece_query {
   void add_translation_sides_vs_edges(uint32_t e, Cnf<kDimEdge> &q) const;
   bool linear_translation() const { return translation_; }
 
+  // query triangle, stored triangles: their boxes meet (for the static test at t = 0)
+  Cnf<kDimTriangle> triangle_vs_triangles_boxes(uint32_t tri) const;
+
   // ball and triangle: boxes only (the distance to a plane is not linear in it)
   Cnf<kDimBall> triangle_vs_balls_boxes(uint32_t tri) const;
   Cnf<kDimTriangle> ball_vs_triangles_boxes(uint32_t k) const;

@@ -34,16 +34,21 @@ struct Side {
   std::vector<uint32_t> vstamp, vlisted, elisted;
   uint32_t stamp = 0;
 
-  explicit Side(const Moving_body &body) : b(&body) {
-    if (!body.is_mesh()) return;
-    vbox.resize(body.n_points());
-    vstamp.assign(body.n_points(), 0);
-    vlisted.assign(body.n_points(), 0);
-    elisted.assign(body.mesh->edges().size(), 0);
+  // The caches are allocated on first use: the range phase never uses them, and an
+  // on-line query must not pay for the stored body's size.
+  explicit Side(const Moving_body &body) : b(&body) {}
+
+  void allocate() {
+    if (!b->is_mesh() || !vstamp.empty()) return;
+    vbox.resize(b->n_points());
+    vstamp.assign(b->n_points(), 0);
+    vlisted.assign(b->n_points(), 0);
+    elisted.assign(b->mesh->edges().size(), 0);
   }
 
   Box point(const Pose_piece &pose, uint32_t k) {
-    if (vstamp.empty()) return point_box(pose, b->data->pts[k], b->data->pt_err);
+    if (!b->is_mesh()) return point_box(pose, b->data->pts[k], b->data->pt_err);
+    allocate();
     if (vstamp[k] != stamp) {
       vbox[k] = point_box(pose, b->data->pts[k], b->data->pt_err);
       vstamp[k] = stamp;
@@ -70,12 +75,19 @@ class Searcher {
 
   void run() {
     const bool meshes = ctx_.side(0).is_mesh() && ctx_.side(1).is_mesh();
+    std::unique_ptr<Range_index> index;
+    if (opt_.range && !opt_.brute) {
+      // The side opt_.stored, or by default the one with more elements, is stored.
+      const int stored = opt_.stored >= 0 ? opt_.stored
+                                          : side_[0].n_elements() >= side_[1].n_elements() ? 0 : 1;
+      index = std::make_unique<Range_index>(ctx_, stored);
+    }
     if (meshes) {
-      static_pass();
+      static_pass(index.get());
       if (found_any_ && !opt_.all_contacts) return;
     }
     if (opt_.brute) return brute();
-    if (opt_.range) return range_pieces();
+    if (index) return range_pieces(*index);
     std::vector<uint32_t> all[2];
     for (int s = 0; s < 2; ++s) {
       all[s].resize(side_[s].n_elements());
@@ -159,10 +171,14 @@ class Searcher {
 
   void solve(std::vector<Prim_pair> cand) { solve_batch(fresh_of(std::move(cand))); }
 
-  void static_pass() {
+  // TT at t = 0: every pair of triangles (brute), the triangles whose box meets a query
+  // triangle's (range: a search of the stored triangles' tree), or box intersection.
+  void static_pass(const Range_index *index) {
     std::vector<Prim_pair> cand;
     const size_t na = side_[0].n_elements(), nb = side_[1].n_elements();
-    if (opt_.brute) {
+    if (index) {
+      cand = index->static_candidates(pool_);
+    } else if (opt_.brute) {
       for (uint32_t a = 0; a < na; ++a)
         for (uint32_t b = 0; b < nb; ++b) cand.push_back({TT, a, b});
     } else {
@@ -179,13 +195,9 @@ class Searcher {
     solve(std::move(cand));
   }
 
-  // The range broad phase (broad/range_index.h): the side opt_.stored, or by default
-  // the one with more elements, is stored; pieces are visited in time order and pruned
-  // like the boxes' pieces.
-  void range_pieces() {
-    const int stored = opt_.stored >= 0 ? opt_.stored
-                                        : side_[0].n_elements() >= side_[1].n_elements() ? 0 : 1;
-    const Range_index index(ctx_, stored);
+  // The range broad phase (broad/range_index.h): pieces are visited in time order and
+  // pruned like the boxes' pieces.
+  void range_pieces(const Range_index &index) {
     const int n = index.pieces();
     for (int k = 0; k < n; ++k) {
       const double a = double(k) / n, b = double(k + 1) / n;  // exact: n is a power of 2
@@ -268,6 +280,7 @@ class Searcher {
   void parts(int s, const std::vector<uint32_t> &tris, std::vector<uint32_t> &verts,
              std::vector<uint32_t> &edges) {
     Side &sd = side_[s];
+    sd.allocate();
     const auto &T = sd.b->mesh->triangles();
     for (uint32_t t : tris)
       for (int k = 0; k < 3; ++k) {

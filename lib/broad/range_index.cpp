@@ -142,4 +142,24 @@ std::vector<Prim_pair> Range_index::candidates(double a, double b, Thread_pool &
   return out;
 }
 
+std::vector<Prim_pair> Range_index::static_candidates(Thread_pool &pool) const {
+  const Piece_query pq(rel_, ctx_.side(1 - s_), 0.0, 0.0);
+  const size_t n = ctx_.side(1 - s_).mesh->triangles().size(), chunks = (n + kChunk - 1) / kChunk;
+  std::vector<std::vector<Prim_pair>> parts(chunks);
+  pool.parallel_for(chunks, [&](size_t c) {
+    std::vector<uint32_t> ids;
+    for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+      const uint32_t t = static_cast<uint32_t>(i);
+      const Cnf<kDimTriangle> q = pq.triangle_vs_triangles_boxes(t);
+      if (!trees_.triangles->may_hit(q)) continue;
+      ids.clear();
+      trees_.triangles->search(q, ids);
+      for (uint32_t f : ids) parts[c].push_back(pair(TT, TT, f, t));
+    }
+  });
+  std::vector<Prim_pair> out;
+  for (auto &p : parts) out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
 }  // namespace pccd::broad
