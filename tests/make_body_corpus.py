@@ -700,6 +700,18 @@ case(MO, "translation-degree4-irrational-double-root",
      feat=vt("A", "B", ("triangle", 0), ("vertex", 0)), options={"time_tolerance": "1e-24"})
 
 
+# Regression (bug found in review of issue 4): boxes.cpp's enclose_pose read
+# Pose_piece::orad before setting it when W = |r|^2 was not certainly positive on a time
+# piece (valgrind). r(t) = (1 - 2t, 0, 0, 1/1000) turns the cube by almost a half turn
+# about z through t = 1/2, where W = (1 - 2t)^2 + 10^-6 is tiny, while it falls onto the
+# plate; its bottom z = 2 - 3t reaches the plate at t = 2/3 (rotations about z keep z).
+case(MO, "bug-boxes-pose-unset-offset-radius",
+     [body("A", plate(0, -3, 3, -3, 3)),
+      body("B", cube([F(-1, 2), F(-1, 2), 0]), translation=[[0], [0], [2, -3]],
+           rotation=[[1, -2], [0], [0], [F(1, 1000)]])],
+     F(2, 3))
+
+
 # ---------------------------------------------------------------- building files
 
 def expectation(res, n_bodies):

@@ -574,7 +574,7 @@ def _union(boxes, grow=F0):
 
 def _may_meet(bx, by):
     for p, q in zip(bx, by):
-        if p is None or q is None:
+        if p is None or q is None or None in p or None in q:   # no bound on this piece
             return True
         if all(p[i][0] <= q[i][1] and q[i][0] <= p[i][1] for i in range(3)):
             return True

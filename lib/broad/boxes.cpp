@@ -71,10 +71,10 @@ Pose_piece enclose_pose(const Moving_body &b, double a, double t1) {
     if (w_pos) {
       mid_rad(range_on(b.O_i[i], a, t1) / W, p.om[i], p.orad[i]);
       p.finite = p.finite && std::isfinite(p.om[i]) && std::isfinite(p.orad[i]);
+      max_or = std::fmax(max_or, p.orad[i]);
     } else {
-      p.finite = false;
+      p.finite = false;  // om, orad stay 0 and unused (spread and boxes are unbounded)
     }
-    max_or = std::fmax(max_or, p.orad[i]);
   }
   p.spread = p.finite ? 3 * max_rr * b.data->reach + max_or : kInf;
   return p;

@@ -44,7 +44,7 @@ Box empty_box();                    // hull identity
 // The motion of one body over a time piece, in midpoint-radius form.
 struct Pose_piece {
   double Rm[3][3], Rr[3][3];
-  double om[3], orad[3];
+  double om[3] = {0, 0, 0}, orad[3] = {0, 0, 0};
   bool finite = true;  // false when W(I) was not certainly positive: boxes are unbounded
   // Half-width the motion adds to the box of a point of the body (bounded by `reach`).
   double spread = 0;
