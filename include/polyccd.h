@@ -503,7 +503,7 @@ PCCD_API int pccd_index_query(const pccd_index *ix, const pccd_body *body,
  * (motions NULL: all stationary; motions[k] NULL: body k stationary). opt->threads
  * workers share the queries, each query solved on one thread; every answer equals that
  * of pccd_index_query. Every query motion is validated before any query is solved:
- * PCCD_EINVAL "queries[k].motion: ..." (or "bodies[k] is NULL", "reports[k] is NULL")
+ * PCCD_EINVAL "bodies[k].motion: ..." (or "bodies[k] is NULL", "reports[k] is NULL")
  * leaves every report unsolved. PCCD_EINVAL also when ix, or bodies or reports with
  * n > 0, is NULL, or on bad options. n = 0 does nothing. */
 PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const *bodies,

@@ -228,3 +228,120 @@ def test_demo(run_cli):
     assert p.returncode == 0, p.stdout + p.stderr
     assert "MISMATCH" not in p.stdout and p.stdout.count("\n   OK\n") >= 5
     assert "not found" in p.stdout
+
+
+# ---------------------------------------------------------------- polyccd index
+
+CUBE = {"vertices": [[i & 1, (i >> 1) & 1, i >> 2] for i in range(8)],
+        "triangles": [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
+                      [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]}
+# A: the unit cube, standing. B: a unit cube sliding x = 3 - 3t (meets A at t = 2/3).
+# C: a ball of radius 1/2 over A's top falling z = 3 - 2t (meets A's top at t = 3/4).
+# D: a ball of radius 1/2 at x = 3 - 4t^2 (meets A's face x = 1 at t = sqrt(3/8)).
+# E: a ball far away (meets nothing).
+INDEX_SCENE = {"format": "polyccd/1", "options": {"time_tolerance": "1e-20"}, "bodies": [
+    {"name": "A", "mesh": CUBE},
+    {"name": "B", "mesh": CUBE, "motion": {"translation": [[3, -3], [0], [0]]}},
+    {"name": "C", "spheres": {"centers": [["1/2", "1/2", 3]], "radii": ["1/2"]},
+     "motion": {"translation": [[0], [0], [0, -2]]}},
+    {"name": "D", "spheres": {"centers": [[3, "1/4", "1/2"]], "radii": ["1/2"]},
+     "motion": {"translation": [[0, 0, -4], [0], [0]]}},
+    {"name": "E", "spheres": {"centers": [[10, 10, 10]], "radii": [1]}},
+]}
+
+
+def index_lines(p):
+    assert p.returncode == 0 and p.stderr == "", p.stderr
+    return [json.loads(line) for line in p.stdout.splitlines()]
+
+
+@pytest.mark.parametrize("stored", [None, "B"])
+def test_index_equals_check_of_each_pair(tmp_path, run_cli, stored):
+    write(tmp_path, "s.json", INDEX_SCENE)
+    lines = index_lines(run_cli("index", "s.json", *(["--stored", stored] if stored else [])))
+    names = [b["name"] for b in INDEX_SCENE["bodies"]]
+    s = stored or "A"
+    assert [(x["stored"], x["query"]) for x in lines] == [(s, n) for n in names if n != s]
+    for line in lines:
+        assert list(line) == ["stored", "query", "collides", "first_contact", "features"]
+        pair = {**INDEX_SCENE, "bodies": [b for n in (s, line["query"])
+                                          for b in INDEX_SCENE["bodies"] if b["name"] == n]}
+        write(tmp_path, "pair.json", pair)
+        p = run_cli("check", "pair.json")
+        assert p.returncode == 0, p.stderr
+        want = json.loads(p.stdout)
+        for key in ("collides", "first_contact", "features"):
+            assert line[key] == want[key], (line["query"], key)
+        assert want["bodies"] == ([s, line["query"]] if want["collides"] else None)
+    hits = {x["query"]: x["first_contact"] for x in lines if x["collides"]}
+    if stored is None:  # the hand-derived times of the scene's comment
+        assert hits["B"]["exact"] == "2/3" and hits["C"]["exact"] == "3/4"
+        d = hits["D"]
+        assert d["exact"] is None and Fraction(d["lo"]) ** 2 <= Fraction(3, 8) <= Fraction(d["hi"]) ** 2
+        assert Fraction(d["hi"]) - Fraction(d["lo"]) <= Fraction(1, 10 ** 20)
+        assert set(hits) == {"B", "C", "D"}  # not E
+
+
+def test_index_options_do_not_change_answers(tmp_path, run_cli):
+    import polyccd
+    write(tmp_path, "s.json", INDEX_SCENE)
+    base = run_cli("index", "s.json")
+    for extra in (["--broad-phase", "brute"], ["--broad-phase", "boxes", "--threads", "3"]):
+        p = run_cli("index", "s.json", *extra)
+        assert (p.returncode, p.stdout) == (0, base.stdout), extra
+    # --all-contacts: every touching feature pair with its own time, as the Python API
+    # gives for the two-body scene.
+    from polyccd._results import time_json
+    bodies = polyccd.load_scene(str(tmp_path / "s.json"))[0]
+    lines = index_lines(run_cli("index", "s.json", "--all-contacts", "--broad-phase", "range"))
+    for line, q in zip(lines, bodies[1:]):
+        r = polyccd.check([bodies[0], q], all_contacts=True, broad_phase="brute",
+                          time_tolerance="1e-20")
+        want = [{"bodies": list(p.names), "a": list(c.a), "b": list(c.b),
+                 "first_contact": time_json(c.first_contact)} for p in r.pairs for c in p.contacts]
+        assert line["features"] == want and line["collides"] == r.collides
+    b = lines[0]["features"]
+    assert len(b) > len(index_lines(base)[0]["features"])
+
+
+def test_index_two_body_corpus_case_equals_check(run_cli):
+    # An irrational first contact (a rotating edge): lo < t* < hi, the case's tolerance.
+    import pathlib
+    path = pathlib.Path(__file__).resolve().parent.parent / "corpus" / "bodies" / "mesh-mesh" / \
+        "edge-edge-irrational-rotation.json"
+    (line,) = index_lines(run_cli("index", path))
+    want = json.loads(run_cli("check", path).stdout)
+    assert line["first_contact"]["exact"] is None and line["collides"]
+    for key in ("collides", "first_contact", "features"):
+        assert line[key] == want[key]
+
+
+VANISHING_MOTION = {"rotation": [[1, -2], [0], [0], [0]]}  # r(t) = 1 - 2t: zero at t = 1/2
+
+
+@pytest.mark.parametrize("args, content, words", [
+    (["--stored", "X"], INDEX_SCENE, '--stored: no body is named "X" (the bodies are "A", "B"'),
+    ([], "{", "invalid JSON"),
+    ([], query(), 'format: expected "polyccd/1"'),
+    ([], {"format": "polyccd/1", "bodies": [{"name": "A", "mesh": CUBE}]},
+     "bodies: a scene needs at least 2 bodies"),
+    ([], {**INDEX_SCENE, "bodies": [{**INDEX_SCENE["bodies"][0], "motion": VANISHING_MOTION}]
+          + INDEX_SCENE["bodies"][1:]}, "bodies[0].motion: the rotation quaternion"),
+    (["--stored", "B"], {**INDEX_SCENE, "bodies": INDEX_SCENE["bodies"][:2] + [
+        {**INDEX_SCENE["bodies"][2], "motion": VANISHING_MOTION}]}, "bodies[2].motion: "),
+], ids=["stored", "json", "query-file", "one-body", "stored-motion", "query-motion"])
+def test_index_input_errors_exit_2(tmp_path, run_cli, args, content, words):
+    write(tmp_path, "s.json", content)
+    p = run_cli("index", "s.json", *args)
+    assert p.returncode == 2 and p.stdout == "", (p.stdout, p.stderr)
+    assert p.stderr.startswith("polyccd: s.json: ") and words in p.stderr, p.stderr
+    assert "Traceback" not in p.stderr
+
+
+def test_index_usage_errors_exit_2(tmp_path, run_cli):
+    write(tmp_path, "s.json", INDEX_SCENE)
+    p = run_cli("index", "nowhere.json")
+    assert p.returncode == 2 and "polyccd: nowhere.json: cannot read" in p.stderr
+    for args in (["--threads", "0"], ["--threads", "x"], ["--broad-phase", "kd"], []):
+        p = run_cli("index", *(["s.json"] if args else []), *args)
+        assert p.returncode == 2 and "usage: polyccd index" in p.stderr, (args, p.stderr)

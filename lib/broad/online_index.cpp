@@ -33,7 +33,7 @@ void Online_index::query_many(const std::vector<Scene_body> &qs, const Scene_opt
   std::vector<Moving_body> prepared;
   prepared.reserve(qs.size());
   for (size_t k = 0; k < qs.size(); ++k)
-    prepared.push_back(prepare(qs[k], "queries[" + std::to_string(k) + "]."));
+    prepared.push_back(prepare(qs[k], "bodies[" + std::to_string(k) + "]."));
   Scene_options one = opt;
   one.threads = 1;
   out.assign(qs.size(), Scene_report());

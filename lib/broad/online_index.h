@@ -26,7 +26,7 @@ class Online_index {
 
   // Every query of qs, into out[k] (resized). The queries are shared by opt.threads
   // workers, each query solved on one thread; answers equal those of query(). Input
-  // errors are found before any query is solved ("queries[k].motion: ...").
+  // errors are found before any query is solved ("bodies[k].motion: ...").
   void query_many(const std::vector<Scene_body> &qs, const Scene_options &opt,
                   std::vector<Scene_report> &out) const;
 

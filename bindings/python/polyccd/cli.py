@@ -8,12 +8,15 @@ import json
 import sys
 
 from . import __version__
-from ._corpus import check_case, files_under, read_case, solve_case, solve_scene_case
+from ._corpus import (DEFAULT_TOLERANCE, check_case, files_under, read_case, solve_case,
+                      solve_scene_case)
 from ._csv import CSV_KINDS
 from ._demo import query_dir, run_cases
 from ._errors import Error, InputError
+from ._index import Index
 from ._queries import mismatch_lines, run_file
 from ._results import result_json, time_json
+from ._scene import BROAD_PHASES, load_scene
 
 OK, FAILED, BAD_INPUT = 0, 1, 2
 
@@ -55,6 +58,52 @@ def scene_json(r):
         "pairs": [{"bodies": list(p.names), "first_contact": time_json(p.first_contact),
                    "features": [_contact_json(p, c) for c in p.contacts]} for p in r.pairs],
     }
+
+
+def index_json(stored_name, query_name, r, all_contacts=False):
+    """The JSON line of one query of `polyccd index`: the fields of `polyccd check` of the
+    two-body scene (stored, query); with all_contacts, "features" lists every touching
+    feature pair with its own first time."""
+    out = scene_json(r)
+    features = ([_contact_json(p, c) for p in r.pairs for c in p.contacts] if all_contacts
+                else out["features"])
+    return {"stored": stored_name, "query": query_name, "collides": out["collides"],
+            "first_contact": out["first_contact"], "features": features}
+
+
+def cmd_index(args):
+    """Indexes one body of a scene file (--stored, default the first) and checks every
+    other body against the index; one JSON line per query body, in file order."""
+    try:
+        bodies, options, _ = load_scene(args.file)
+        names = [b.name for b in bodies]
+        stored = 0
+        if args.stored is not None:
+            if args.stored not in names:
+                raise InputError(f"--stored: no body is named \"{args.stored}\" (the bodies are "
+                                 + ", ".join(f'"{n}"' for n in names) + ")")
+            stored = names.index(args.stored)
+        tolerance = options.time_tolerance or DEFAULT_TOLERANCE
+        try:
+            ix = Index(bodies[stored])
+        except InputError as e:
+            raise InputError(f"bodies[{stored}].{e}") from None
+        lines = []
+        for k, body in enumerate(bodies):
+            if k == stored:
+                continue
+            try:
+                r = ix.query(body, time_tolerance=tolerance, all_contacts=args.all_contacts,
+                             threads=args.threads, broad_phase=args.broad_phase)
+            except InputError as e:
+                raise InputError(f"bodies[{k}].{e}" if str(e).startswith("motion:") else str(e)) from None
+            lines.append(json.dumps(index_json(names[stored], names[k], r, args.all_contacts)))
+    except InputError as e:
+        _error(f"{args.file}: {e}")
+        return BAD_INPUT
+    for line in lines:
+        print(line)
+    return OK
 
 
 def cmd_corpus(args):
@@ -130,6 +179,16 @@ def cmd_demo(args):
     return max(status, run_queries([folder], root=folder))
 
 
+def _threads(text):
+    try:
+        n = int(text)
+    except ValueError:
+        n = 0
+    if not 1 <= n <= 1024:
+        raise argparse.ArgumentTypeError(f"expected an integer from 1 to 1024, got {text!r}")
+    return n
+
+
 def parser():
     p = argparse.ArgumentParser(
         prog="polyccd", description="Exact continuous collision detection of moving "
@@ -140,6 +199,18 @@ def parser():
     c.add_argument("file", metavar="FILE.json")
     c.add_argument("--threads", type=int, default=1, help="worker threads for scenes (default 1)")
     c.set_defaults(run=cmd_check)
+    c = sub.add_parser("index", help="index one body of a scene file and check every other "
+                       "body against it (one JSON line per query body)")
+    c.add_argument("file", metavar="SCENE.json")
+    c.add_argument("--stored", metavar="NAME", help="the body to index (default: the first)")
+    c.add_argument("--broad-phase", choices=sorted(BROAD_PHASES), default="auto",
+                   help="how candidate feature pairs are found (default auto; all give the "
+                   "same answers)")
+    c.add_argument("--all-contacts", action="store_true",
+                   help="list every touching feature pair with its own first time")
+    c.add_argument("--threads", type=_threads, default=1, help="worker threads, 1 to 1024 "
+                   "(default 1)")
+    c.set_defaults(run=cmd_index)
     c = sub.add_parser("corpus", help="check every *.json case under the paths "
                        "against its expect block")
     c.add_argument("paths", nargs="+", metavar="PATH")
