@@ -137,9 +137,14 @@ def _motion_handle(motion):
 
 
 def _solved(rc):
-    """Raises the error of a failed solve (the message without the C function's name)."""
+    """Raises the error of a failed solve (the message without the C function's name; a
+    bad tolerance is named by its keyword argument, as solve() names it, not by the C
+    field config.time_tolerance)."""
     if rc != 0:
-        raise error_for(rc, last_error().split(": ", 1)[-1])
+        message = last_error().split(": ", 1)[-1]
+        if message.startswith("config.time_tolerance:"):
+            message = message[len("config."):]
+        raise error_for(rc, message)
 
 
 def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
