@@ -441,7 +441,9 @@ typedef struct pccd_scene_options {
 PCCD_API int pccd_scene_options_init(pccd_scene_options *opt);
 
 /* Solves the scene (>= 2 bodies) into rep. cfg and opt may be NULL (defaults).
- * PCCD_EINVAL when a motion's quaternion vanishes on [0, 1] ("bodies[2].motion: ..."). */
+ * PCCD_EINVAL when a motion's quaternion vanishes on [0, 1] ("bodies[2].motion: ..."),
+ * or on bad options ("opt->threads is 0; ..."). On any error rep holds no answer
+ * (pccd_report_* return PCCD_ESTATE), whatever it held before. */
 PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
                               const pccd_scene_options *opt, pccd_report *rep);
 

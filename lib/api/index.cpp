@@ -45,8 +45,8 @@ PCCD_API int pccd_index_query(const pccd_index *ix, const pccd_body *body,
     require(ix, "index");
     require(body, "body");
     require(rep, "report");
+    rep->solved = false;  // a failed call leaves no earlier answer readable
     const pccd::broad::Scene_options so = pccd::api::read_scene_options(cfg, opt);
-    rep->solved = false;
     rep->r = ix->ix->query(scene_body(body, motion), so);
     rep->solved = true;
     return PCCD_OK;
@@ -62,15 +62,15 @@ PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const 
     if (n == 0) return PCCD_OK;
     require(bodies, "bodies");
     require(reports, "reports");
+    for (size_t k = 0; k < n; ++k)
+      require(reports[k], ("reports[" + std::to_string(k) + "]").c_str());
+    for (size_t k = 0; k < n; ++k) reports[k]->solved = false;  // no earlier answer readable
     const pccd::broad::Scene_options so = pccd::api::read_scene_options(cfg, opt);
     std::vector<pccd::broad::Scene_body> qs(n);
     for (size_t k = 0; k < n; ++k) {
-      const std::string at = "[" + std::to_string(k) + "]";
-      require(bodies[k], ("bodies" + at).c_str());
-      require(reports[k], ("reports" + at).c_str());
+      require(bodies[k], ("bodies[" + std::to_string(k) + "]").c_str());
       qs[k] = scene_body(bodies[k], motions ? motions[k] : nullptr);
     }
-    for (size_t k = 0; k < n; ++k) reports[k]->solved = false;
     std::vector<pccd::broad::Scene_report> out;
     ix->ix->query_many(qs, so, out);
     for (size_t k = 0; k < n; ++k) {

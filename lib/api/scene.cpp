@@ -56,8 +56,8 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
   return guard("pccd_scene_solve", [&] {
     require(s, "scene");
     require(rep, "report");
+    rep->solved = false;  // a failed call leaves no earlier answer readable
     const pccd::broad::Scene_options so = pccd::api::read_scene_options(cfg, opt);
-    rep->solved = false;
     rep->r = pccd::broad::solve_scene(s->bodies, so);
     rep->solved = true;
     return PCCD_OK;

@@ -322,6 +322,13 @@ static void errors(void)
   cfg.time_tolerance = "0";
   FAILS(pccd_index_query(ix, cube, m, &cfg, NULL, rep), PCCD_EINVAL, "time_tolerance");
   FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "no scene has been solved");
+  /* A failed call leaves no earlier answer readable: solve, then fail on bad options. */
+  OK(pccd_index_query(ix, cube, m, NULL, NULL, rep));
+  OK(pccd_report_collides(rep, &v));
+  OK(pccd_scene_options_init(&opt));
+  opt.threads = 0;
+  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt->threads is 0");
+  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "no scene has been solved");
   /* The defaults of pccd_scene_options_init: PCCD_BROAD_AUTO, 1 thread, first contacts. */
   OK(pccd_scene_options_init(&opt));
   CHECK(opt.broad_phase == PCCD_BROAD_AUTO && opt.threads == 1 && opt.all_contacts == 0 &&
