@@ -31,6 +31,14 @@ def test_python_scene_example_runs(tmp_path):
     assert out.stdout == "3/4 [(('edge', 10), ('sphere', 0))]\n", out.stdout
 
 
+def test_python_index_example_runs(tmp_path):
+    script = tmp_path / "index.py"
+    script.write_text(_block("python", 2))
+    out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, cwd=ROOT)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout == "['1', '3/4']\n", out.stdout
+
+
 def test_c_example_runs(tmp_path):
     src = tmp_path / "ex.c"
     src.write_text(_block("c"))
