@@ -74,13 +74,13 @@ $(BUILD)/test_motion: tests/c/test_motion.c include/polyccd.h $(LIB)
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
 
 # The scene C test (pccd_scene_*, pccd_report_*), linked against the shared library.
-$(BUILD)/test_scene: tests/c/test_scene.c tests/c/check.h include/polyccd.h $(LIB)
+$(BUILD)/test_scene: tests/c/test_scene.c tests/c/check.h tests/c/scene_fixtures.h include/polyccd.h $(LIB)
 	@mkdir -p $(BUILD)
 	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_scene.c \
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
 
 # The on-line index C test (pccd_index_*), linked against the shared library.
-$(BUILD)/test_index: tests/c/test_index.c tests/c/check.h include/polyccd.h $(LIB)
+$(BUILD)/test_index: tests/c/test_index.c tests/c/check.h tests/c/scene_fixtures.h include/polyccd.h $(LIB)
 	@mkdir -p $(BUILD)
 	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_index.c \
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
@@ -137,6 +137,7 @@ bench: all
 	$(VENV)/bin/pip install -q -r tests/bench/requirements.txt
 	$(VPY) tests/bench/bench_queries.py
 	$(VPY) tests/bench/bench_bodies.py
+	$(VPY) tests/bench/bench_online.py
 
 demo: all
 	$(VENV)/bin/polyccd demo

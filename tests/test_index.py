@@ -27,7 +27,7 @@ from pathlib import Path
 import pytest
 
 import polyccd as P
-from test_scene_corpus import check_time, expected_time, read, exact
+from test_scene_corpus import check_time, exact, expected_time, read, summary
 from test_scene_property import grid, random_mesh, random_spheres
 
 SEED = int(os.environ.get("POLYCCD_INDEX_SEED", "20261123"))
@@ -103,16 +103,6 @@ def random_pair(k):
     rng = random.Random(SEED * 1000 + k)
     family = FAMILIES[k % len(FAMILIES)]
     return family, random_body(rng, family, "S"), random_body(rng, family, "Q")
-
-
-def summary(r):
-    """Everything a SceneResult says (stats aside), as comparable values."""
-    def t(ct):
-        return None if ct is None else (ct.lo, ct.hi, ct.exact)
-    return (r.collides, t(r.first_contact),
-            tuple((p.bodies, p.names, t(p.first_contact),
-                   tuple((c.a, c.b, t(c.first_contact)) for c in p.contacts)) for p in r.pairs),
-            tuple(p.bodies for p in r.first))
 
 
 def brute(stored, query, **kw):

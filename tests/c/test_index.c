@@ -18,36 +18,7 @@
 #include <string.h>
 
 #include "check.h"
-
-/* The unit cube [0,1]^3 as 12 outward triangles (as in test_scene.c). Vertex k is
- * (k & 1, (k >> 1) & 1, k >> 2): the face x = 1 has vertices 1, 3, 5, 7 and triangles
- * 10 = (1, 3, 5), 11 = (3, 7, 5); the face x = 0 has vertices 0, 2, 4, 6 and triangles
- * 8 = (0, 4, 2), 9 = (2, 4, 6). */
-static const double kCubeV[24] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
-                                  0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
-static const unsigned int kCubeT[36] = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
-                                        2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
-
-static int time_is(const pccd_report *rep, size_t pair, size_t contact, int which, const char *want)
-{
-  char buf[64];
-  size_t needed = 0;
-  return pccd_report_time(rep, pair, contact, which, buf, sizeof buf, &needed) == PCCD_OK &&
-         strcmp(buf, want) == 0 && needed == strlen(want) + 1;
-}
-
-/* A translation along x from x0 at t = 0 to x1 at t = 1. */
-static pccd_motion *slide_x(double x0, double x1)
-{
-  pccd_motion *m = NULL;
-  const double c[2] = {x0, x1 - x0};
-  if (pccd_motion_new(&m) != PCCD_OK) return NULL;
-  if (pccd_motion_set_translation_d(m, 0, c, 2) != PCCD_OK) {
-    pccd_motion_free(m);
-    return NULL;
-  }
-  return m;
-}
+#include "scene_fixtures.h"
 
 /* A motion whose rotation quaternion r(t) = 1 - 2t vanishes at t = 1/2. */
 static pccd_motion *vanishing(void)

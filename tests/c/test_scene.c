@@ -14,33 +14,7 @@
 #include <string.h>
 
 #include "check.h"
-
-/* The unit cube [0,1]^3 as 12 outward triangles. */
-static const double kCubeV[24] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
-                                  0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
-static const unsigned int kCubeT[36] = {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4,
-                                        2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5};
-
-static int time_is(const pccd_report *rep, size_t pair, size_t contact, int which, const char *want)
-{
-  char buf[64];
-  size_t needed = 0;
-  return pccd_report_time(rep, pair, contact, which, buf, sizeof buf, &needed) == PCCD_OK &&
-         strcmp(buf, want) == 0 && needed == strlen(want) + 1;
-}
-
-/* A translation along x from x0 at t = 0 to x1 at t = 1. */
-static pccd_motion *slide_x(double x0, double x1)
-{
-  pccd_motion *m = NULL;
-  const double c[2] = {x0, x1 - x0};
-  if (pccd_motion_new(&m) != PCCD_OK) return NULL;
-  if (pccd_motion_set_translation_d(m, 0, c, 2) != PCCD_OK) {
-    pccd_motion_free(m);
-    return NULL;
-  }
-  return m;
-}
+#include "scene_fixtures.h"
 
 /* Cube B slides from x = 3 to x = 0 against the fixed cube A: faces x = 1 (A) and
  * x = 3 - 3t (B) meet when 3 - 3t = 1, at t = 2/3 exactly. The fixed ball (centre

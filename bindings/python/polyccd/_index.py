@@ -7,7 +7,7 @@ answers are read back like a two-body scene (body 0 the indexed body, body 1 the
 from ._errors import InputError
 from ._numbers import show
 from ._pccd import ffi, lib
-from ._scene import Body, _motion_handle, _names, _new, _options, _read, _solved
+from ._scene import Body, _bodies_list, _motion_handle, _names, _new, _options, _read, _solved
 
 
 class Index:
@@ -45,13 +45,7 @@ class Index:
                    broad_phase="auto", want_exact=True):
         """The SceneResults of every query body, in order (one C call; `threads` workers
         share the queries, each query solved on one thread)."""
-        try:
-            bodies = list(bodies)
-        except TypeError:
-            raise InputError(f"bodies: expected a sequence of polyccd.Body, got {show(bodies)}") from None
-        for i, b in enumerate(bodies):
-            if not isinstance(b, Body):
-                raise InputError(f"bodies[{i}]: expected a polyccd.Body, got {show(b)}")
+        bodies = _bodies_list(bodies)
         cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact)
         n = len(bodies)
         shapes = ffi.new("pccd_body *[]", [b.shape._handle for b in bodies] or 1)

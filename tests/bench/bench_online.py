@@ -1,0 +1,591 @@
+#!/usr/bin/env python3
+"""Benchmark of the on-line problem: one stored body of n primitives (polyccd.Index), n
+query bodies of one primitive each, at n = 1k, 4k, 16k, 64k (256k on request). Times the
+range structure, the rigid-body broad phase (boxes) and brute force, checks that all three
+give the same answers, and prints the fitted exponents of time against n.
+
+A benchmark, not a test: it never asserts on speed. It does check answers: every query's
+collides and first contact (lo, hi, exact) must be identical for the three broad phases
+(the library's contract); a difference aborts the run with the query written to a
+polyccd/1 scene file, since it would be a bug.
+
+Scene classes (one table per class and motion class):
+  mesh  A bumpy height-field terrain over a k x k grid of unit cells (2 k^2 triangles,
+        k = round(sqrt(n / 2))); heights are two sine bumps (amplitude 1, periods 20 and
+        13 cells) plus uniform noise of +-0.05, on the 2^-16 grid. Queries: one-triangle
+        meshes, vertices 0.4 to 0.8 from their centroid (about a cell), randomly oriented.
+  mol   A slab of balls: a jittered (+-0.3 A) lattice of spacing 3.6 A, 3 layers, 10 % of the
+        sites left empty, columns lifted by a smooth bump (amplitude 2 A); radii 1.2 to
+        2.0 A (k x k columns, k = round(sqrt(n / 2.7))). Queries: one ball of radius 1.2 to
+        2.0 A, its centre 0 to 1.5 A from the body origin (so rotations move it).
+Motions of the queries (body origin from p0 to p1: a horizontal run of 1.5 to 3 cells /
+4 to 8 A and a drop of 0 to 1 cell / 0 to 3 A; every number on the 2^-16 grid, exact):
+  linear    Motion(translation = p0 + (p1 - p0) t), no rotation.
+  rotation  the same translation, r(t) = (1, tau(t) a): a fixed unit axis a through the
+            body origin, tau linear from tau0 in [-0.5, 0.5] by +-[0.5, 1] (up to ~90 deg).
+  poly      translation p0 + (p1 - p0 + B) t - B t^2 (a bend B), rotation a general
+            quadratic quaternion w = 1 + w1 t + w2 t^2 (|w1|, |w2| <= 0.3, so w > 0: it never
+            vanishes), vector part coefficients up to 0.5 / 0.8.
+Placement: each query's path is then shifted vertically (the constant of its z
+translation) so that its closest sampled approach to the surface is a chosen clearance d.
+About 90 % are near misses: d in [0.02, 0.2] cells (meshes) / [0.05, 0.5] A (balls),
+measured conservatively (lowest query vertex over the highest terrain vertex of the cells
+under the query's box; ball centre over the upper envelope of the grown atoms), at 41 / 25
+time samples. About 10 % are placed to hit: d in [-0.4, -0.1] / [-0.8, -0.2] (a sampled
+point of the triangle below the terrain, the ball centre inside a grown atom), starting at
+least 0.02 / 0.05 clear at t = 0 when possible. The hit column counts the exact answers.
+
+Timing: one process, threads = 1 (--threads), gc off; "build" = polyccd.Index(Body(shape))
+on a fresh shape (the index's trees are cached per shape); each method is one
+ix.query_many(queries, broad_phase=X) call, the Python reading of the results included.
+Brute force runs while its time predicted from the previous size (x (n / n_prev)^2; a 20
+query pilot at the first size) fits in --brute-seconds (60 s), otherwise "-". Boxes runs in
+full while its prediction fits in --budget-seconds (120 s); over budget it runs on a fixed
+random sample of (at most) 1000 queries and the total is extrapolated and printed as
+"~T est k/n": never as a measurement, and never used in the fitted exponents.
+
+Usage: python tests/bench/bench_online.py [--sizes 1k,4k,16k,64k] [--classes mesh,mol]
+           [--motions linear,rotation,poly] [--quick] [--budget-seconds 120]
+           [--brute-seconds 60] [--threads 1] [--seed 1] [--dump-dir /tmp]
+"""
+
+import argparse
+import datetime
+import gc
+import json
+import math
+import os
+import platform
+import sys
+import time
+from fractions import Fraction
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_bodies import cpu_model, fit_exponent, loaded_libraries, print_table  # noqa: E402
+
+GRID = 2.0 ** 16                     # every coordinate and coefficient is a multiple of 2^-16
+CLASSES = ("mesh", "mol")
+MOTIONS = ("linear", "rotation", "poly")
+METHODS = ("range", "boxes", "brute")
+DEFAULT_SIZES = "1k,4k,16k,64k"
+QUICK_SIZES = "200,800"
+HIT_FRACTION = 0.10
+SAMPLE_QUERIES = 1000                # boxes over budget: timed on this many queries
+PILOT_QUERIES = 20                   # first size: prediction from this many queries
+MESH_SAMPLES_T = 41                  # time samples for placing a triangle query
+MOL_SAMPLES_T = 25                   # time samples for placing a ball query
+CHUNK = 1024                         # queries per numpy chunk while placing
+
+# terrain and slab parameters (see the docstring)
+BUMP_AMP, BUMP_P1, BUMP_P2, NOISE = 1.0, 20.0, 13.0, 0.05
+MOL_SPACING, MOL_LAYERS, MOL_DROP, MOL_JITTER, MOL_BUMP, MOL_BUMP_P = 3.6, 3, 0.10, 0.3, 2.0, 40.0
+RADII = (1.2, 2.0)
+SCALE = {"mesh": {"run": (1.5, 3.0), "drop": (0.0, 1.0), "bend": 0.6,
+                  "miss": (0.02, 0.2), "hit": (-0.4, -0.1), "start": 0.02},
+         "mol": {"run": (4.0, 8.0), "drop": (0.0, 3.0), "bend": 2.0,
+                 "miss": (0.05, 0.5), "hit": (-0.8, -0.2), "start": 0.05}}
+
+
+def on_grid(x):
+    x = np.asarray(x, dtype=np.float64)
+    assert np.all(np.abs(x) < 2.0 ** 30)
+    return np.round(x * GRID) / GRID
+
+
+def parse_size(s):
+    s = s.strip().lower()
+    mult = 1000 if s.endswith("k") else 1
+    try:
+        v = int(float(s[:-1] if mult > 1 else s) * mult)
+    except ValueError:
+        sys.exit(f"--sizes: cannot read {s!r} (examples: 1k, 4k, 200)")
+    if v < 20:
+        sys.exit(f"--sizes: {s!r} is too small (at least 20)")
+    return v
+
+
+def rng_for(seed, cls, motion, n, what):
+    return np.random.default_rng([seed, CLASSES.index(cls), MOTIONS.index(motion), n, what])
+
+
+# ---------------------------------------------------------------------------------------
+# Stored bodies
+
+
+def terrain(n, rng):
+    """(V (float64, exact), F, H heights (k+1, k+1), k): a height field over [0, k]^2 with
+    unit cells, each cell split along its (i, j)-(i+1, j+1) diagonal."""
+    k = max(2, round(math.sqrt(n / 2)))
+    xs = np.arange(k + 1, dtype=float)
+    gx, gy = np.meshgrid(xs, xs, indexing="ij")
+    ph = rng.uniform(0, 2 * math.pi, 3)
+    H = (BUMP_AMP * np.sin(2 * math.pi * gx / BUMP_P1 + ph[0]) * np.sin(2 * math.pi * gy / BUMP_P1 + ph[1])
+         + 0.5 * BUMP_AMP * np.sin(2 * math.pi * (gx + gy) / BUMP_P2 + ph[2])
+         + rng.uniform(-NOISE, NOISE, gx.shape))
+    H = on_grid(H)
+    V = np.column_stack([gx.ravel(), gy.ravel(), H.ravel()])
+    vid = np.arange((k + 1) ** 2).reshape(k + 1, k + 1)
+    a, b = vid[:-1, :-1].ravel(), vid[1:, :-1].ravel()          # (i, j), (i+1, j)
+    c, d = vid[1:, 1:].ravel(), vid[:-1, 1:].ravel()            # (i+1, j+1), (i, j+1)
+    F = np.concatenate([np.column_stack([a, b, c]), np.column_stack([a, c, d])])
+    return V, F.astype(np.int64), H, k
+
+
+def terrain_height(H, k, x, y):
+    """The terrain's (piecewise linear) height at x, y (clamped into the grid)."""
+    x = np.clip(x, 0.0, k - 1e-9)
+    y = np.clip(y, 0.0, k - 1e-9)
+    i, j = np.floor(x).astype(np.int64), np.floor(y).astype(np.int64)
+    u, v = x - i, y - j
+    h00, h10, h11, h01 = H[i, j], H[i + 1, j], H[i + 1, j + 1], H[i, j + 1]
+    low = h00 + u * (h10 - h00) + v * (h11 - h10)               # triangle (a, b, c): u >= v
+    up = h00 + v * (h01 - h00) + u * (h11 - h01)                # triangle (a, c, d): u < v
+    return np.where(u >= v, low, up)
+
+
+def slab(n, rng):
+    """(centers, radii, grid): a 3-layer jittered lattice of balls with 10 % of the sites
+    empty. grid = (C (k, k, L, 3), R (k, k, L), present (k, k, L)) for placing queries."""
+    k = max(2, round(math.sqrt(n / (MOL_LAYERS * (1 - MOL_DROP)))))
+    a = MOL_SPACING
+    ii, jj, ll = np.meshgrid(np.arange(k), np.arange(k), np.arange(MOL_LAYERS), indexing="ij")
+    ph = rng.uniform(0, 2 * math.pi, 2)
+    lift = MOL_BUMP * np.sin(2 * math.pi * ii * a / MOL_BUMP_P + ph[0]) * np.sin(2 * math.pi * jj * a / MOL_BUMP_P + ph[1])
+    C = np.stack([ii * a, jj * a, ll * a + lift], axis=-1) + rng.uniform(-MOL_JITTER, MOL_JITTER, ii.shape + (3,))
+    C = on_grid(C)
+    R = on_grid(rng.uniform(*RADII, ii.shape))
+    present = rng.random(ii.shape) >= MOL_DROP
+    return C[present], R[present], (C, R, present, k)
+
+
+# ---------------------------------------------------------------------------------------
+# Query motions and placement
+
+
+def rotation_matrices(q):
+    """R(r) of formats.md for quaternions q (..., 4) = (w, x, y, z), any nonzero length."""
+    w, v = q[..., 0], q[..., 1:]
+    n2 = w * w + np.sum(v * v, axis=-1)
+    vv = np.sum(v * v, axis=-1)
+    R = (w * w - vv)[..., None, None] * np.eye(3) + 2 * v[..., :, None] * v[..., None, :]
+    x, y, z = v[..., 0], v[..., 1], v[..., 2]
+    cross = np.stack([np.stack([0 * x, -z, y], -1), np.stack([z, 0 * x, -x], -1),
+                      np.stack([-y, x, 0 * x], -1)], -2)
+    R = R + 2 * w[..., None, None] * cross
+    return R / n2[..., None, None]
+
+
+def polyval(coef, ts):
+    """coef (N, c, d+1) ascending powers; ts (T,) -> (N, T, c)."""
+    powers = ts[None, :] ** np.arange(coef.shape[-1])[:, None]      # (d+1, T)
+    return np.einsum("ncd,dt->ntc", coef, powers)
+
+
+def random_motions(motion, N, span, rng, scale):
+    """trans (N, 3, dt+1), rot (N, 4, dr+1): coefficient arrays on the grid, z constant 0
+    (it is set by the placement). span = ((xlo, xhi), (ylo, yhi)) for the start point."""
+    (xlo, xhi), (ylo, yhi) = span
+    p0 = np.column_stack([rng.uniform(xlo, xhi, N), rng.uniform(ylo, yhi, N), np.zeros(N)])
+    ang = rng.uniform(0, 2 * math.pi, N)
+    run = rng.uniform(*scale["run"], N)
+    d = np.column_stack([run * np.cos(ang), run * np.sin(ang), -rng.uniform(*scale["drop"], N)])
+    if motion == "poly":
+        bend = rng.normal(0, scale["bend"] / math.sqrt(3), (N, 3))
+        trans = np.stack([p0, d + bend, -bend], axis=-1)
+        w = np.column_stack([np.ones(N), rng.uniform(-0.3, 0.3, (N, 2))])
+        v = np.stack([rng.uniform(-0.5, 0.5, (N, 3)), rng.uniform(-0.8, 0.8, (N, 3)),
+                      rng.uniform(-0.8, 0.8, (N, 3))], axis=-1)
+        rot = np.concatenate([w[:, None, :], v], axis=1)
+    else:
+        trans = np.stack([p0, d], axis=-1)
+        if motion == "rotation":
+            axis = rng.normal(size=(N, 3))
+            axis /= np.linalg.norm(axis, axis=1)[:, None]
+            tau0 = rng.uniform(-0.5, 0.5, N)
+            dtau = rng.uniform(0.5, 1.0, N) * rng.choice([-1.0, 1.0], N)
+            rot = np.concatenate([np.column_stack([np.ones(N), np.zeros(N)])[:, None, :],
+                                  np.stack([axis * tau0[:, None], axis * dtau[:, None]], axis=-1)], axis=1)
+        else:
+            rot = np.concatenate([np.ones((N, 1, 1)), np.zeros((N, 3, 1))], axis=1)
+    return on_grid(trans), on_grid(rot)
+
+
+def positions(trans, rot, pts, ts):
+    """Body points pts (N, P, 3) on the motions at times ts: (N, T, P, 3)."""
+    R = rotation_matrices(polyval(rot, ts))                         # (N, T, 3, 3)
+    return np.einsum("ntij,npj->ntpi", R, pts) + polyval(trans, ts)[:, :, None, :]
+
+
+def mesh_clearances(trans, rot, tri, H, k):
+    """Per query: (conservative clearance, the same at t = 0, sampled-point clearance) of a
+    triangle above the terrain, min over time samples. Conservative: lowest vertex z minus the highest terrain
+    vertex of the cells under the triangle's xy box (> 0 at every sample: no contact there).
+    Sampled: least z - terrain(x, y) over 15 points of the triangle (< 0: a point of the
+    triangle below the terrain)."""
+    ts = np.linspace(0.0, 1.0, MESH_SAMPLES_T)
+    bary = np.array([(i, j, 4 - i - j) for i in range(5) for j in range(5 - i)], dtype=float) / 4
+    pts = np.einsum("pv,nvc->npc", bary, tri)                       # (N, 15, 3), vertices included
+    X = positions(trans, rot, pts, ts)                              # (N, T, 15, 3)
+    h = terrain_height(H, k, X[..., 0], X[..., 1])
+    sampled = np.min(X[..., 2] - h, axis=(1, 2))
+    isv = np.max(bary, axis=1) == 1.0
+    V = X[:, :, isv, :]                                             # (N, T, 3, 3)
+    zmin = V[..., 2].min(axis=2)
+    i0 = np.clip(np.floor(V[..., 0].min(axis=2)), 0, k).astype(np.int64)
+    i1 = np.clip(np.ceil(V[..., 0].max(axis=2)), 0, k).astype(np.int64)
+    j0 = np.clip(np.floor(V[..., 1].min(axis=2)), 0, k).astype(np.int64)
+    j1 = np.clip(np.ceil(V[..., 1].max(axis=2)), 0, k).astype(np.int64)
+    hmax = np.full(zmin.shape, -np.inf)
+    for a in range(int((i1 - i0).max()) + 1):
+        for b in range(int((j1 - j0).max()) + 1):
+            ok = (i0 + a <= i1) & (j0 + b <= j1)
+            hv = H[np.minimum(i0 + a, k), np.minimum(j0 + b, k)]
+            hmax = np.where(ok, np.maximum(hmax, hv), hmax)
+    return np.min(zmin - hmax, axis=1), zmin[:, 0] - hmax[:, 0], sampled
+
+
+def mol_clearance(trans, rot, offs, rho, grid):
+    """Per query: (least, at t = 0) vertical clearance, over time samples, of the ball centre above
+    the upper envelope of the stored balls grown by the query's radius (top two layers,
+    5 x 5 columns around it). > 0: apart at every sample; < 0: overlapping at some sample
+    (when below an envelope point by less than that ball's height)."""
+    C, R, present, k = grid
+    ts = np.linspace(0.0, 1.0, MOL_SAMPLES_T)
+    X = positions(trans, rot, offs[:, None, :], ts)[:, :, 0, :]    # (N, T, 3)
+    ci = np.rint(X[..., 0] / MOL_SPACING).astype(np.int64)
+    cj = np.rint(X[..., 1] / MOL_SPACING).astype(np.int64)
+    best = np.full(X.shape[:2], np.inf)
+    for a in range(-2, 3):
+        for b in range(-2, 3):
+            ii, jj = ci + a, cj + b
+            inside = (ii >= 0) & (ii < k) & (jj >= 0) & (jj < k)
+            ii, jj = np.clip(ii, 0, k - 1), np.clip(jj, 0, k - 1)
+            for layer in range(MOL_LAYERS - 2, MOL_LAYERS):
+                c = C[ii, jj, layer]                                 # (N, T, 3)
+                rr = R[ii, jj, layer] + rho[:, None]
+                hor2 = (X[..., 0] - c[..., 0]) ** 2 + (X[..., 1] - c[..., 1]) ** 2
+                ok = inside & present[ii, jj, layer] & (hor2 < rr * rr)
+                top = c[..., 2] + np.sqrt(np.maximum(rr * rr - hor2, 0.0))
+                best = np.where(ok, np.minimum(best, X[..., 2] - top), best)
+    return best.min(axis=1), best[:, 0]
+
+
+def make_queries(polyccd, cls, motion, n, seed, stored):
+    """n query Body objects and a description of each (for the dump of a failing case)."""
+    rng = rng_for(seed, cls, motion, n, 1)
+    scale = SCALE[cls]
+    width = stored["width"]
+    margin = min(scale["run"][1] + 2 * scale["bend"] + 1.0, width / 3)
+    span = ((margin, width - margin), (margin, width - margin))
+    hit = rng.random(n) < HIT_FRACTION
+    target = np.where(hit, rng.uniform(*scale["hit"], n), rng.uniform(*scale["miss"], n))
+    bodies, raw = [], []
+    for s in range(0, n, CHUNK):
+        N = min(CHUNK, n - s)
+        trans, rot = random_motions(motion, N, span, rng, scale)
+        if cls == "mesh":
+            dirs = rng.normal(size=(N, 3, 3))
+            dirs /= np.linalg.norm(dirs, axis=2)[..., None]
+            tri = dirs * rng.uniform(0.4, 0.8, (N, 3, 1))
+            tri = on_grid(tri - tri.mean(axis=1)[:, None, :])
+            cons, cons0, sampled = mesh_clearances(trans, rot, tri, stored["H"], stored["k"])
+            gap, gap0 = np.where(hit[s:s + N], sampled, cons), cons0
+        else:
+            dirs = rng.normal(size=(N, 3))
+            dirs /= np.linalg.norm(dirs, axis=1)[:, None]
+            offs = on_grid(dirs * rng.uniform(0.0, 1.5, (N, 1)))
+            rho = on_grid(rng.uniform(*RADII, N))
+            gap, gap0 = mol_clearance(trans, rot, offs, rho, stored["grid"])
+            gap = np.where(np.isfinite(gap), gap, 0.0)               # no ball under the path at all
+        # misses: the least clearance becomes the target; hits: the deepest sampled point
+        # goes the target below the surface, but the query starts clear of it (>= START_CLEAR)
+        # when that is possible (else it is a near miss or a hit found by the library)
+        shift = target[s:s + N] - gap
+        shift = np.where(hit[s:s + N] & np.isfinite(gap0), np.maximum(shift, scale["start"] - gap0), shift)
+        trans[:, 2, 0] = on_grid(trans[:, 2, 0] + shift)
+        for q in range(N):
+            tr = [[float(c) for c in row] for row in trans[q]]
+            ro = [[float(c) for c in row] for row in rot[q]]
+            m = polyccd.Motion(translation=tr, rotation=ro)
+            if cls == "mesh":
+                shape = polyccd.Mesh(tri[q], [[0, 1, 2]])
+                raw.append({"mesh": {"vertices": tri[q].tolist(), "triangles": [[0, 1, 2]]},
+                            "motion": {"translation": tr, "rotation": ro}})
+            else:
+                shape = polyccd.Spheres(offs[q][None, :], rho[q:q + 1])
+                raw.append({"spheres": {"centers": [offs[q].tolist()], "radii": [float(rho[q])]},
+                            "motion": {"translation": tr, "rotation": ro}})
+            bodies.append(polyccd.Body(shape, m, name=f"q{s + q}"))
+    return bodies, raw
+
+
+def make_stored(polyccd, cls, n, seed):
+    rng = rng_for(seed, cls, MOTIONS[0], n, 0)          # the stored body does not depend on the motion class
+    if cls == "mesh":
+        V, F, H, k = terrain(n, rng)
+        return {"V": V, "F": F, "H": H, "k": k, "width": float(k), "n": len(F),
+                "make": lambda: polyccd.Mesh(V, F),
+                "raw": lambda: {"mesh": {"vertices": V.tolist(), "triangles": F.tolist()}},
+                "text": f"terrain {k} x {k} cells, {len(F)} triangles, heights in "
+                        f"[{H.min():.2f}, {H.max():.2f}]"}
+    C, R, grid = slab(n, rng)
+    k = grid[3]
+    return {"C": C, "R": R, "grid": grid, "width": (k - 1) * MOL_SPACING, "n": len(C),
+            "make": lambda: polyccd.Spheres(C, R),
+            "raw": lambda: {"spheres": {"centers": C.tolist(), "radii": R.tolist()}},
+            "text": f"slab {k} x {k} x {MOL_LAYERS} sites (spacing {MOL_SPACING} A), {len(C)} balls"}
+
+
+# ---------------------------------------------------------------------------------------
+# Running and checking
+
+
+def answer(r):
+    ct = r.first_contact
+    return (r.collides, None if ct is None else (ct.lo, ct.hi, ct.exact))
+
+
+def run_method(ix, queries, method, threads):
+    gc.collect()
+    was = gc.isenabled()
+    gc.disable()
+    try:
+        t0 = time.perf_counter()
+        res = ix.query_many(queries, broad_phase=method, threads=threads)
+        dt = time.perf_counter() - t0
+    finally:
+        if was:
+            gc.enable()
+    return dt, res
+
+
+def exact_json(x):
+    """A number of the benchmark (a double) as an exact fraction string."""
+    return str(Fraction(float(x)))
+
+
+def dump_case(dump_dir, cls, motion, n, q, stored, raw_q, answers):
+    def exact(v):
+        if isinstance(v, list):
+            return [exact(e) for e in v]
+        if isinstance(v, dict):
+            return {key: exact(e) if key != "triangles" else e for key, e in v.items()}
+        return exact_json(v)
+    doc = {"format": "polyccd/1", "name": f"bench_online {cls}/{motion} n={n} query {q}",
+           "source": "tests/bench/bench_online.py: broad phases disagree on this query ("
+                     + "; ".join(f"{m}: {a}" for m, a in answers.items()) + ")",
+           "bodies": [{"name": "stored", **exact(stored["raw"]())}, {"name": f"q{q}", **exact(raw_q)}]}
+    path = Path(dump_dir) / f"bench_online_{cls}_{motion}_{n}_q{q}.json"
+    path.write_text(json.dumps(doc) + "\n")
+    return path
+
+
+def check_same(ref, res, idx, method, ctx):
+    """ref: range answers of all queries; res: answers of method for queries idx."""
+    for r, q in zip(res, idx):
+        a, b = answer(r), ref[q]
+        if a != b:
+            cls, motion, n, stored, raw, dump_dir = ctx
+            try:
+                path = dump_case(dump_dir, cls, motion, n, q, stored, raw[q], {"range": b, method: a})
+                where = f"query {q} written to {path}"
+            except OSError as e:
+                where = f"(could not write the case: {e})"
+            print(f"\nERROR: broad phases disagree ({cls}/{motion}, n = {n}, query {q}):\n"
+                  f"  range: {b}\n  {method}: {a}\n  {where}\n"
+                  "  This is a bug of polyccd (all broad phases must give identical answers).",
+                  flush=True)
+            sys.exit(3)
+
+
+def fmt_s(x):
+    return "-" if x is None else (f"{x:.3f}" if x < 10 else f"{x:.1f}")
+
+
+def run_combo(polyccd, cls, motion, sizes, opts):
+    print(f"== {cls} / {motion}", flush=True)
+    rows, notes, stats_lines = [], [], []
+    measured = {m: [] for m in ("build",) + METHODS}
+    last = {}                                   # method -> (n, total seconds, measured?)
+    for n_req in sizes:
+        stored = make_stored(polyccd, cls, n_req, opts.seed)
+        n = stored["n"]
+        t0 = time.perf_counter()
+        queries, raw = make_queries(polyccd, cls, motion, n, opts.seed, stored)
+        setup = time.perf_counter() - t0
+        shape = stored["make"]()
+        gc.collect()
+        t0 = time.perf_counter()
+        ix = polyccd.Index(polyccd.Body(shape, None, name="stored"))
+        build = time.perf_counter() - t0
+        measured["build"].append((n, build))
+        print(f"   n = {n}: {stored['text']}; {n} queries (setup {setup:.1f} s); build {build:.3f} s",
+              flush=True)
+
+        t_range, res_range = run_method(ix, queries, "range", opts.threads)
+        ref = [answer(r) for r in res_range]
+        measured["range"].append((n, t_range))
+        last["range"] = (n, t_range)
+        hits = sum(1 for a in ref if a[0])
+        at0 = sum(1 for a in ref if a[0] and a[1][1] == 0)
+        ctx = (cls, motion, n, stored, raw, opts.dump_dir)
+        print(f"   range {t_range:.3f} s, {hits} hits ({at0} at t = 0)", flush=True)
+        cells = {"range": (t_range, n, None)}
+        results = {"range": res_range}
+        for method, budget in (("boxes", opts.budget_seconds), ("brute", opts.brute_seconds)):
+            if method in last:
+                pn, pt = last[method]
+                predicted = pt * (n / pn) ** 2
+                how = f"{pt:.3g} s at n = {pn} x (n / {pn})^2"
+            elif method in opts.skip:
+                predicted, how = math.inf, "skipped"
+            else:
+                pilot = list(range(0, n, max(1, n // PILOT_QUERIES)))[:PILOT_QUERIES]
+                tp, rp = run_method(ix, [queries[q] for q in pilot], method, opts.threads)
+                check_same(ref, rp, pilot, method, ctx)
+                predicted = tp * n / len(pilot)
+                how = f"pilot of {len(pilot)} queries"
+            if predicted <= budget:
+                t, res = run_method(ix, queries, method, opts.threads)
+                check_same(ref, res, range(n), method, ctx)
+                cells[method] = (t, n, None)
+                results[method] = res
+                measured[method].append((n, t))
+                last[method] = (n, t)
+                print(f"   {method} {t:.3f} s (predicted {predicted:.3g} s from {how})", flush=True)
+            elif method == "boxes" and predicted < math.inf:
+                # at most SAMPLE_QUERIES, fewer when even those would not fit the budget
+                k = max(min(SAMPLE_QUERIES, n, int(budget * n / predicted)), min(100, n))
+                idx = sorted(np.random.default_rng([opts.seed, n, 7]).choice(n, k, replace=False).tolist())
+                t, res = run_method(ix, [queries[q] for q in idx], method, opts.threads)
+                check_same(ref, res, idx, method, ctx)
+                est = t * n / k
+                cells[method] = (est, n, k)
+                results[method] = res
+                last[method] = (n, est)
+                print(f"   {method}: predicted {predicted:.3g} s ({how}) > budget {budget:g} s: "
+                      f"{t:.3f} s on {k} random queries, est. total {est:.1f} s", flush=True)
+            else:
+                print(f"   {method}: not run (predicted {predicted:.3g} s from {how} > budget {budget:g} s)",
+                      flush=True)
+        # where the time goes: per-query means of the work counters
+        for method, res in results.items():
+            tot = {}
+            for r in res:
+                for key in ("pieces", "candidates", "solved", "static_tests"):
+                    tot[key] = tot.get(key, 0) + r.stats[key]
+            k = len(res)
+            stats_lines.append(f"   n = {n} {method:5} ({k} queries): " + ", ".join(
+                f"{key} {v / k:.3g}/q" for key, v in tot.items())
+                + f", max candidates {max(r.stats['candidates'] for r in res)}")
+
+        def tcell(m):
+            c = cells.get(m)
+            if c is None:
+                return "-"
+            t, _, k = c
+            return fmt_s(t) if k is None else f"~{fmt_s(t)} est {k}/{n}"
+
+        def ratio(m):
+            c = cells.get(m)
+            if c is None:
+                return "-"
+            r = t_range / c[0]
+            return f"{r:.3g}" if c[2] is None else f"~{r:.3g} est"
+
+        def per_q(m):
+            c = cells.get(m)
+            if c is None:
+                return "-"
+            ms = c[0] / n * 1e3
+            return f"{ms:.3g}" if c[2] is None else f"~{ms:.3g} est"
+
+        rows.append([n, fmt_s(build), fmt_s(t_range), tcell("boxes"), tcell("brute"), ratio("boxes"),
+                     ratio("brute"), f"{hits} ({at0} at t=0)", per_q("range"), per_q("boxes"), per_q("brute")])
+        del ix, queries, raw, results, res_range
+    print()
+    print_table(["n", "build s", "range s", "boxes s", "brute s", "range/boxes", "range/brute", "hits",
+                 "range ms/q", "boxes ms/q", "brute ms/q"], rows)
+    print("   work per query (pieces = time pieces, candidates = feature pairs from the broad phase, "
+          "solved = pairs sent to the exact predicates):")
+    for line in stats_lines:
+        print(line)
+    print("   fitted exponent of time vs n (least squares on log-log, measured points only):")
+    for m in ("build",) + METHODS:
+        pts = measured[m]
+        e = fit_exponent(pts)
+        used = ", ".join(str(p[0]) for p in pts) or "none"
+        print(f"     {m:6} " + (f"{e:.2f}" if e is not None else "n/a ") + f"   (sizes {used})"
+              + ("" if e is not None else ": needs two measured sizes"))
+    print(flush=True)
+    return {"class": cls, "motion": motion, "rows": rows,
+            "exponents": {m: fit_exponent(measured[m]) for m in measured}}
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--sizes", default=None, help=f"comma-separated n (default {DEFAULT_SIZES}; 256k allowed)")
+    ap.add_argument("--classes", default=",".join(CLASSES))
+    ap.add_argument("--motions", default=",".join(MOTIONS))
+    ap.add_argument("--quick", action="store_true", help=f"sizes {QUICK_SIZES} (smoke test)")
+    ap.add_argument("--budget-seconds", type=float, default=120.0,
+                    help="boxes: full run only while predicted to fit (else a sample, estimated)")
+    ap.add_argument("--brute-seconds", type=float, default=60.0, help="brute force: run only while predicted to fit")
+    ap.add_argument("--skip", default="", help="methods not to run at all (boxes, brute)")
+    ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--dump-dir", default="/tmp", help="where a disagreeing query is written")
+    opts = ap.parse_args()
+    sizes = [parse_size(s) for s in (opts.sizes or (QUICK_SIZES if opts.quick else DEFAULT_SIZES)).split(",")]
+    classes = [c.strip() for c in opts.classes.split(",") if c.strip()]
+    motions = [m.strip() for m in opts.motions.split(",") if m.strip()]
+    opts.skip = {s.strip() for s in opts.skip.split(",") if s.strip()}
+    for c in classes:
+        if c not in CLASSES:
+            sys.exit(f"--classes: unknown {c!r} (choose from {', '.join(CLASSES)})")
+    for m in motions:
+        if m not in MOTIONS:
+            sys.exit(f"--motions: unknown {m!r} (choose from {', '.join(MOTIONS)})")
+    for s in opts.skip:
+        if s not in ("boxes", "brute"):
+            sys.exit(f"--skip: unknown {s!r} (boxes, brute)")
+    try:
+        import polyccd
+    except ImportError as e:
+        sys.exit(f"cannot import polyccd ({e}); run `make venv`")
+    if not hasattr(polyccd, "Index"):
+        sys.exit("this polyccd has no Index (the on-line index); rebuild with `make`")
+
+    print("polyccd on-line benchmark: one stored body of n primitives, n one-primitive queries "
+          "(Index.query_many), range vs boxes vs brute")
+    print(f"date      {datetime.datetime.now(datetime.timezone.utc).isoformat(timespec='seconds')}")
+    print(f"machine   {cpu_model()}, {os.cpu_count()} logical CPUs, {platform.platform()}")
+    print(f"python    {platform.python_version()}, numpy {np.__version__}")
+    print(f"polyccd   {polyccd.__version__} ({Path(polyccd.__file__).parent})")
+    for path, mtime in loaded_libraries(("_pccd", "libpolyccd")):
+        print(f"          loaded {path} (modified {mtime})")
+    print(f"sizes     {', '.join(map(str, sorted(sizes)))} (requested; the stored body has about n primitives)")
+    print(f"run       classes {', '.join(classes)}; motions {', '.join(motions)}; threads {opts.threads}; "
+          f"seed {opts.seed}; budgets: boxes {opts.budget_seconds:g} s, brute {opts.brute_seconds:g} s"
+          + (f"; skipped: {', '.join(sorted(opts.skip))}" if opts.skip else ""))
+    print(f"queries   ~{HIT_FRACTION:.0%} placed to hit, the rest near misses (see the docstring); "
+          "answers of boxes and brute checked equal to range for every query run")
+    print(flush=True)
+    sizes = sorted(set(sizes))
+    summary = []
+    for cls in classes:
+        for motion in motions:
+            summary.append(run_combo(polyccd, cls, motion, sizes, opts))
+    if len(summary) > 1:
+        print("fitted exponents (measured points only):")
+        print_table(["class", "motion"] + ["build"] + list(METHODS),
+                    [[s["class"], s["motion"]] + [f"{s['exponents'][m]:.2f}" if s["exponents"][m] is not None
+                                                  else "n/a" for m in ("build",) + METHODS] for s in summary])
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
