@@ -59,28 +59,24 @@ struct Cnf {
 // computed sum |t_k| (m >= (1 - 2(D+1)u) sum |t_k|), exceeds it by a factor over 3, so
 // the two additions that apply it, each off by at most 2u of their result, keep it a
 // bound. Overflow gives inf or NaN; NaN answers "possible" and never "certain".
-template <int D>
-double upper_bound(const Halfspace<D> &h, const Interval *x) {
-  double s = h.a0.hi, m = std::fabs(h.a0.hi);
+template <int D, bool Upper>
+double bound(const Halfspace<D> &h, const Interval *x) {
+  double s = Upper ? h.a0.hi : h.a0.lo, m = std::fabs(s);
   for (int k = 0; k < D; ++k) {
     const Interval &a = h.a[k];
-    const double t = std::max(std::max(a.lo * x[k].lo, a.lo * x[k].hi), std::max(a.hi * x[k].lo, a.hi * x[k].hi));
+    const double p0 = a.lo * x[k].lo, p1 = a.lo * x[k].hi, p2 = a.hi * x[k].lo, p3 = a.hi * x[k].hi;
+    const double t = Upper ? std::max(std::max(p0, p1), std::max(p2, p3))
+                           : std::min(std::min(p0, p1), std::min(p2, p3));
     s += t;
     m += std::fabs(t);
   }
-  return s + (m * ((D + 2) * 0x1p-50) + 0x1p-1000);
+  const double margin = m * ((D + 2) * 0x1p-50) + 0x1p-1000;
+  return Upper ? s + margin : s - margin;
 }
 template <int D>
-double lower_bound(const Halfspace<D> &h, const Interval *x) {
-  double s = h.a0.lo, m = std::fabs(h.a0.lo);
-  for (int k = 0; k < D; ++k) {
-    const Interval &a = h.a[k];
-    const double t = std::min(std::min(a.lo * x[k].lo, a.lo * x[k].hi), std::min(a.hi * x[k].lo, a.hi * x[k].hi));
-    s += t;
-    m += std::fabs(t);
-  }
-  return s - (m * ((D + 2) * 0x1p-50) + 0x1p-1000);
-}
+double upper_bound(const Halfspace<D> &h, const Interval *x) { return bound<D, true>(h, x); }
+template <int D>
+double lower_bound(const Halfspace<D> &h, const Interval *x) { return bound<D, false>(h, x); }
 
 // Whether some point of the interval box x may satisfy every clause (a necessary test:
 // each clause separately has a halfspace that meets the box).
