@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Benchmark of the on-line problem: one stored body of n primitives (polyccd.Index), n
-query bodies of one primitive each, at n = 1k, 4k, 16k, 64k, 256k (per motion class up to DEFAULT_MAX). Times the
+query bodies of one primitive each, at n = 1k, 4k, 16k, 64k, 256k (each motion class up to
+DEFAULT_MAX below). Times the
 range structure, the rigid-body broad phase (boxes) and brute force, checks that all three
 give the same answers, and prints the fitted exponents of time against n.
 
