@@ -31,6 +31,15 @@ Sb dot(const S3 &a, const S3 &b) {
   return sb_add(sb_add(sb_mul(a[0], b[0]), sb_mul(a[1], b[1])), sb_mul(a[2], b[2]));
 }
 
+// Plücker coordinates of the segment a -> b, (b - a, a x b), into out[0..5].
+void put_plucker(const I3 &a, const I3 &b, Interval *out) {
+  const I3 d = sub(b, a), m = cross(a, b);
+  for (int k = 0; k < 3; ++k) {
+    out[k] = d[k];
+    out[3 + k] = m[k];
+  }
+}
+
 // Box corners of a primitive's corner points: lo encloses the exact minimum, hi the
 // exact maximum of each coordinate.
 template <size_t N>
@@ -132,12 +141,8 @@ std::vector<std::array<Interval, kDimEdge>> lift_edges(const Body_data &b) {
   out.reserve(b.mesh->edges().size());
   for (const auto &e : b.mesh->edges()) {
     const std::array<I3, 2> c = {enclose_point(V[e[0]]), enclose_point(V[e[1]])};
-    const I3 d = sub(c[1], c[0]), m = cross(c[0], c[1]);
     std::array<Interval, kDimEdge> s;
-    for (int k = 0; k < 3; ++k) {
-      s[k] = d[k];
-      s[3 + k] = m[k];
-    }
+    put_plucker(c[0], c[1], &s[0]);
     box_of(c, &s[6], &s[9]);
     out.push_back(s);
   }
@@ -164,13 +169,7 @@ std::vector<std::array<Interval, kDimSides>> lift_triangle_sides(const Body_data
   for (const auto &t : b.mesh->triangles()) {
     const std::array<I3, 3> c = {enclose_point(V[t[0]]), enclose_point(V[t[1]]), enclose_point(V[t[2]])};
     std::array<Interval, kDimSides> s;
-    for (int i = 0; i < 3; ++i) {
-      const I3 d = sub(c[(i + 1) % 3], c[i]), m = cross(c[i], c[(i + 1) % 3]);
-      for (int k = 0; k < 3; ++k) {
-        s[6 * i + k] = d[k];
-        s[6 * i + 3 + k] = m[k];
-      }
-    }
+    for (int i = 0; i < 3; ++i) put_plucker(c[i], c[(i + 1) % 3], &s[6 * i]);
     out.push_back(s);
   }
   return out;
@@ -495,15 +494,12 @@ Cnf<kDimSides> Piece_query::translation_sides_vs_triangles(uint32_t v) const {
   const Interval w = w_[0];
   const I3 x0 = start(v), d = sub(end(v), x0);
   const I3 m = cross(x0, d), wd = scale3(w, d);
-  std::vector<Halfspace<kDimSides>> side(3);
-  for (int i = 0; i < 3; ++i) {
-    for (auto &c : side[i].a) c = Interval(0.0);
+  std::vector<Halfspace<kDimSides>> side(3);  // coefficients start at 0
+  for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k) {
       side[i].a[6 * i + k] = m[k];
       side[i].a[6 * i + 3 + k] = wd[k];
     }
-    side[i].a0 = Interval(0.0);
-  }
   Cnf<kDimSides> q;
   same_sign(q, side);
   return q;
@@ -516,16 +512,14 @@ void Piece_query::add_translation_sides_vs_edges(uint32_t e, Cnf<kDimEdge> &q) c
   const auto &E = q_.mesh->edges()[e];
   const Interval w = w_[0];
   const I3 c[4] = {start(E[0]), start(E[1]), end(E[1]), end(E[0])};
-  std::vector<Halfspace<kDimEdge>> side(4);
+  std::vector<Halfspace<kDimEdge>> side(4);  // coefficients start at 0
   for (int i = 0; i < 4; ++i) {
     const I3 &x = c[i], &y = c[(i + 1) % 4];
     const I3 mom = cross(x, y), dir = scale3(w, sub(y, x));
-    for (auto &a : side[i].a) a = Interval(0.0);
     for (int k = 0; k < 3; ++k) {
       side[i].a[k] = mom[k];
       side[i].a[3 + k] = dir[k];
     }
-    side[i].a0 = Interval(0.0);
   }
   same_sign(q, side);
 }

@@ -127,16 +127,30 @@ void Range_index::query_one(const Piece_query &pq, size_t item, std::vector<Prim
   }
 }
 
-std::vector<Prim_pair> Range_index::candidates(double a, double b, Thread_pool &pool) const {
-  const Piece_query pq(rel_, ctx_.side(1 - s_), a, b);
-  const size_t n = query_items(), chunks = (n + kChunk - 1) / kChunk;
+namespace {
+
+// fn(i, out, ids) for i in [0, n), in parallel chunks of kChunk; the outputs in index
+// order (independent of the thread count).
+template <class F>
+std::vector<Prim_pair> collect(size_t n, Thread_pool &pool, F fn) {
+  const size_t chunks = (n + kChunk - 1) / kChunk;
   std::vector<std::vector<Prim_pair>> parts(chunks);
   pool.parallel_for(chunks, [&](size_t c) {
     std::vector<uint32_t> ids;
-    for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) query_one(pq, i, parts[c], ids);
+    for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) fn(i, parts[c], ids);
   });
   std::vector<Prim_pair> out;
   for (auto &p : parts) out.insert(out.end(), p.begin(), p.end());
+  return out;
+}
+
+}  // namespace
+
+std::vector<Prim_pair> Range_index::candidates(double a, double b, Thread_pool &pool) const {
+  const Piece_query pq(rel_, ctx_.side(1 - s_), a, b);
+  std::vector<Prim_pair> out = collect(query_items(), pool, [&](size_t i, auto &part, auto &ids) {
+    query_one(pq, i, part, ids);
+  });
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
   return out;
@@ -144,22 +158,15 @@ std::vector<Prim_pair> Range_index::candidates(double a, double b, Thread_pool &
 
 std::vector<Prim_pair> Range_index::static_candidates(Thread_pool &pool) const {
   const Piece_query pq(rel_, ctx_.side(1 - s_), 0.0, 0.0);
-  const size_t n = ctx_.side(1 - s_).mesh->triangles().size(), chunks = (n + kChunk - 1) / kChunk;
-  std::vector<std::vector<Prim_pair>> parts(chunks);
-  pool.parallel_for(chunks, [&](size_t c) {
-    std::vector<uint32_t> ids;
-    for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
-      const uint32_t t = static_cast<uint32_t>(i);
-      const Cnf<kDimTriangle> q = pq.triangle_vs_triangles_boxes(t);
-      if (!trees_.triangles->may_hit(q)) continue;
-      ids.clear();
-      trees_.triangles->search(q, ids);
-      for (uint32_t f : ids) parts[c].push_back(pair(TT, TT, f, t));
-    }
+  const size_t n = ctx_.side(1 - s_).mesh->triangles().size();
+  return collect(n, pool, [&](size_t i, auto &part, auto &ids) {
+    const uint32_t t = static_cast<uint32_t>(i);
+    const Cnf<kDimTriangle> q = pq.triangle_vs_triangles_boxes(t);
+    if (!trees_.triangles->may_hit(q)) return;
+    ids.clear();
+    trees_.triangles->search(q, ids);
+    for (uint32_t f : ids) part.push_back(pair(TT, TT, f, t));
   });
-  std::vector<Prim_pair> out;
-  for (auto &p : parts) out.insert(out.end(), p.begin(), p.end());
-  return out;
 }
 
 }  // namespace pccd::broad
