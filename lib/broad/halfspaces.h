@@ -35,14 +35,31 @@ struct Bound {
   double v = 0;
 };
 
+// A condition on a quadratic q(s) = b0 (1 - s)^2 + 2 b1 s (1 - s) + b2 s^2 over s in
+// [0, 1] whose Bernstein coefficients b_j = f[j] . x + f[j]_0 are linear in the lifted
+// point x (the exact rotation linearization, broad/LINEARIZATION.md):
+//   Root:        q has a root in [0, 1]  <=>  b0 b2 <= 0  or  (b0 b1 <= 0 and b1^2 >= b0 b2);
+//   Nonpositive: q <= 0 somewhere        <=>  b0 <= 0 or b2 <= 0 or (b1 <= 0 and b1^2 >= b0 b2).
+// (If b0, b2 have one strict sign, substitute s = x / (1 + x), x in [0, inf): the roots
+// are those of b0 + 2 b1 x + b2 x^2, positive iff b1 has the other sign and the
+// discriminant 4 (b1^2 - b0 b2) is >= 0.) These are linear in the Veronese lift of x
+// (its degree-2 monomials); they are evaluated here on the interval box of x directly.
+template <int D>
+struct Quadratic {
+  enum Kind : uint8_t { Root, Nonpositive };
+  std::array<Halfspace<D>, 3> f;
+  Kind kind = Root;
+};
+
 template <int D>
 struct Cnf {
   std::vector<Bound> bounds;
   std::vector<Halfspace<D>> hs;
   std::vector<uint32_t> clause_end;  // clause c is hs[clause_end[c-1] .. clause_end[c])
+  std::vector<Quadratic<D>> quads;   // each one clause of its own
 
   void end_clause() { clause_end.push_back(static_cast<uint32_t>(hs.size())); }
-  bool empty() const { return clause_end.empty() && bounds.empty(); }
+  bool empty() const { return clause_end.empty() && bounds.empty() && quads.empty(); }
 };
 
 // Bounds of a . x + a0 over every coefficient in h and every point in the box x, for
@@ -78,6 +95,26 @@ double upper_bound(const Halfspace<D> &h, const Interval *x) { return bound<D, t
 template <int D>
 double lower_bound(const Halfspace<D> &h, const Interval *x) { return bound<D, false>(h, x); }
 
+// Whether the quadratic condition may hold (certainly holds, when certain = true) for
+// some (every) point of the box x. NaN bounds answer "may" and never "certainly".
+template <int D>
+bool quadratic_test(const Quadratic<D> &q, const Interval *x, bool certain) {
+  Interval b[3];
+  for (int j = 0; j < 3; ++j) {
+    b[j] = Interval(lower_bound(q.f[j], x), upper_bound(q.f[j], x));
+    if (!(std::fabs(b[j].lo) < HUGE_VAL && std::fabs(b[j].hi) < HUGE_VAL)) return !certain;
+  }
+  // Products of finite bounds are not NaN; a NaN from inf - inf in disc answers "may".
+  const Interval disc = b[1] * b[1] - b[0] * b[2];
+  if (q.kind == Quadratic<D>::Root) {
+    const Interval p02 = b[0] * b[2], p01 = b[0] * b[1];
+    if (certain) return p02.hi <= 0 || (p01.hi <= 0 && disc.lo >= 0);
+    return !(p02.lo > 0) || (!(p01.lo > 0) && !(disc.hi < 0));
+  }
+  if (certain) return b[0].hi <= 0 || b[2].hi <= 0 || (b[1].hi <= 0 && disc.lo >= 0);
+  return !(b[0].lo > 0) || !(b[2].lo > 0) || (!(b[1].lo > 0) && !(disc.hi < 0));
+}
+
 // Whether some point of the interval box x may satisfy every clause (a necessary test:
 // each clause separately has a halfspace that meets the box).
 template <int D>
@@ -91,6 +128,8 @@ bool cnf_possible(const Cnf<D> &q, const Interval *x) {
     if (!any) return false;
     start = end;
   }
+  for (const Quadratic<D> &c : q.quads)
+    if (!quadratic_test(c, x, false)) return false;
   return true;
 }
 
@@ -107,6 +146,8 @@ bool cnf_certain(const Cnf<D> &q, const Interval *x) {
     if (!any) return false;
     start = end;
   }
+  for (const Quadratic<D> &c : q.quads)
+    if (!quadratic_test(c, x, true)) return false;
   return true;
 }
 

@@ -4,23 +4,17 @@
 #include <cmath>
 
 #include "arith/convert.h"
+#include "broad/ivec.h"
 #include "broad/scaled_bernstein.h"
 
 namespace pccd::broad {
 
 namespace {
 
-using I3 = std::array<Interval, 3>;
-
-I3 enclose_point(const motion::Point3_q &p) {
-  return {arith::enclose(p[0]), arith::enclose(p[1]), arith::enclose(p[2])};
-}
-I3 sub(const I3 &a, const I3 &b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-I3 cross(const I3 &a, const I3 &b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Interval dot(const I3 &a, const I3 &b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
+// The interval-vector operations (broad/ivec.h) and their Bernstein-form twins.
+using broad::cross;
+using broad::dot;
+using broad::sub;
 using S3 = std::array<Sb, 3>;
 S3 sub(const S3 &a, const S3 &b) { return {sb_sub(a[0], b[0]), sb_sub(a[1], b[1]), sb_sub(a[2], b[2])}; }
 Sb det2(const Sb &a, const Sb &b, const Sb &c, const Sb &d) { return sb_sub(sb_mul(a, b), sb_mul(c, d)); }
@@ -192,6 +186,7 @@ bool is_linear_translation(const Moving_body &b) {
 
 Relative_motion::Relative_motion(const Moving_body &S, const Moving_body &Q) {
   linear_translation = is_linear_translation(S) && is_linear_translation(Q);
+  if (!linear_translation) axis_rotation = detect_axis_rotation(S, Q);
   // Rn_S^T W_S, then M = (Rn_S^T W_S) Rn_Q.
   std::array<std::array<IPoly, 3>, 3> A;
   for (int i = 0; i < 3; ++i)
@@ -466,8 +461,6 @@ void same_sign(Cnf<D> &q, const std::vector<Halfspace<D>> &side) {
       q.end_clause();
     }
 }
-
-I3 scale3(const Interval &s, const I3 &a) { return {s * a[0], s * a[1], s * a[2]}; }
 
 }  // namespace
 

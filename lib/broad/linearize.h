@@ -24,8 +24,10 @@
 #include <array>
 #include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <vector>
 
+#include "broad/axis_rotation.h"
 #include "broad/halfspaces.h"
 #include "broad/moving_body.h"
 
@@ -57,6 +59,9 @@ struct Relative_motion {
   // the stored body, all by the same vector, and Piece_query adds the exact conditions
   // of the translation linearization (LINEARIZATION.md, "Linear translations").
   bool linear_translation = false;
+  // Exactly: a rotation about a fixed axis (broad/axis_rotation.h); then Range_index adds
+  // the exact conditions of broad/rotation_query.h.
+  std::optional<Axis_rotation> axis_rotation;
   Relative_motion(const Moving_body &stored, const Moving_body &query);
   // Float estimate of the relative pose at t (for choosing pieces only).
   struct Pose {

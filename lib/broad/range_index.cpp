@@ -18,6 +18,7 @@ Stored_trees::Stored_trees(const Body_data &d) {
     triangles = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d), 0x3f0u);
     edges = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d), 0xfc0u);
     triangle_sides = lift_triangle_sides(d);
+    edge_ends = lift_edge_ends(d);
   } else {
     balls = std::make_unique<Range_tree<kDimBall>>(lift_balls(d), 0x7u);
   }
@@ -68,8 +69,8 @@ size_t Range_index::query_items() const {
   return Q.is_mesh() ? Q.mesh->triangles().size() : Q.spheres->centers().size();
 }
 
-void Range_index::query_one(const Piece_query &pq, size_t item, std::vector<Prim_pair> &out,
-                            std::vector<uint32_t> &ids) const {
+void Range_index::query_one(const Piece_query &pq, const Rotation_piece *rp, size_t item,
+                            std::vector<Prim_pair> &out, std::vector<uint32_t> &ids) const {
   const Moving_body &S = ctx_.side(s_), &Q = ctx_.side(1 - s_);
   ids.clear();
   // Cheap box clauses against the hull of all stored points first, then the contact
@@ -85,6 +86,15 @@ void Range_index::query_one(const Piece_query &pq, size_t item, std::vector<Prim
     const size_t nv = Q.data->surface_vertices.size(), nt = Q.mesh->triangles().size();
     if (item < nv) {
       const uint32_t v = Q.data->surface_vertices[item];
+      if (rp) {  // exact plane clause in the tree, sides at its roots on the candidates
+        const auto rs = rp->vertex_vs_triangle_sides(v);
+        run(trees_.triangles, [&] { return pq.vertex_vs_triangles_boxes(v); },
+            [&](auto &q) { q.quads.push_back(rs.clause()); });
+        for (uint32_t t : ids)
+          if (rs.possible(trees_.triangles->lifted(t).data(), trees_.triangle_sides[t].data()))
+            out.push_back(pair(FV, VF, t, v));
+        return;
+      }
       run(trees_.triangles, [&] { return pq.vertex_vs_triangles_boxes(v); },
           [&](auto &q) { pq.add_vertex_vs_triangles(v, q); });
       if (pq.linear_translation() && !ids.empty()) {  // second level: the triangle's sides
@@ -96,6 +106,16 @@ void Range_index::query_one(const Piece_query &pq, size_t item, std::vector<Prim
       for (uint32_t t : ids) out.push_back(pair(FV, VF, t, v));
     } else if (item < nv + nt) {
       const uint32_t t = static_cast<uint32_t>(item - nv);
+      if (rp) {
+        const auto rs = rp->triangle_vs_vertex_sides(t);
+        run(trees_.vertices, [&] { return pq.triangle_vs_vertices_boxes(t); },
+            [&](auto &q) { q.quads.push_back(rs.clause()); });
+        for (uint32_t i : ids) {
+          const Interval *x = trees_.vertices->lifted(i).data();
+          if (rs.possible(x, x)) out.push_back(pair(VF, FV, S.data->surface_vertices[i], t));
+        }
+        return;
+      }
       run(trees_.vertices, [&] { return pq.triangle_vs_vertices_boxes(t); },
           [&](auto &q) {
             pq.add_triangle_vs_vertices(t, q);
@@ -104,6 +124,15 @@ void Range_index::query_one(const Piece_query &pq, size_t item, std::vector<Prim
       for (uint32_t i : ids) out.push_back(pair(VF, FV, S.data->surface_vertices[i], t));
     } else {
       const uint32_t e = static_cast<uint32_t>(item - nv - nt);
+      if (rp) {
+        const auto rs = rp->edge_vs_edge_sides(e);
+        run(trees_.edges, [&] { return pq.edge_vs_edges_boxes(e); },
+            [&](auto &q) { q.quads.push_back(rs.clause()); });
+        for (uint32_t f : ids)
+          if (rs.possible(trees_.edges->lifted(f).data(), trees_.edge_ends[f].data()))
+            out.push_back(pair(EE, EE, f, e));
+        return;
+      }
       run(trees_.edges, [&] { return pq.edge_vs_edges_boxes(e); },
           [&](auto &q) {
             pq.add_edge_vs_edges(e, q);
@@ -116,7 +145,12 @@ void Range_index::query_one(const Piece_query &pq, size_t item, std::vector<Prim
   const uint32_t k = static_cast<uint32_t>(item);
   auto none = [](auto &) {};
   if (!S.is_mesh() && !Q.is_mesh()) {
-    run(trees_.balls, [&] { return pq.ball_vs_balls_boxes(k); }, [&](auto &q) { pq.add_ball_vs_balls(k, q); });
+    run(trees_.balls, [&] { return pq.ball_vs_balls_boxes(k); }, [&](auto &q) {
+      if (rp)
+        rp->add_ball_vs_balls(k, q);
+      else
+        pq.add_ball_vs_balls(k, q);
+    });
     for (uint32_t b : ids) out.push_back(pair(SS, SS, b, k));
   } else if (!S.is_mesh()) {
     run(trees_.balls, [&] { return pq.triangle_vs_balls_boxes(k); }, none);
@@ -148,8 +182,11 @@ std::vector<Prim_pair> collect(size_t n, Thread_pool &pool, F fn) {
 
 std::vector<Prim_pair> Range_index::candidates(double a, double b, Thread_pool &pool) const {
   const Piece_query pq(rel_, ctx_.side(1 - s_), a, b);
+  std::optional<Rotation_piece> rp;
+  if (rel_.axis_rotation && b > a) rp.emplace(*rel_.axis_rotation, ctx_.side(1 - s_), a, b);
+  const Rotation_piece *r = rp ? &*rp : nullptr;
   std::vector<Prim_pair> out = collect(query_items(), pool, [&](size_t i, auto &part, auto &ids) {
-    query_one(pq, i, part, ids);
+    query_one(pq, r, i, part, ids);
   });
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -19,6 +19,7 @@
 #include "broad/linearize.h"
 #include "broad/narrow.h"
 #include "broad/range_tree.h"
+#include "broad/rotation_query.h"
 #include "broad/thread_pool.h"
 
 namespace pccd::broad {
@@ -34,6 +35,9 @@ struct Stored_trees {
   // Meshes: the Plücker coordinates of each triangle's sides, tested on the triangles the
   // tree reports for a query vertex under a linear translation (a second level).
   std::vector<std::array<Interval, kDimSides>> triangle_sides;
+  // Meshes: the endpoints of each edge (the second level of edge-edge under a rotation
+  // about a fixed axis, broad/rotation_query.h).
+  std::vector<std::array<Interval, kDimEnds>> edge_ends;
   explicit Stored_trees(const Body_data &d);
 };
 
@@ -62,8 +66,9 @@ class Range_index {
 
   Prim_pair pair(uint8_t stored_is_a_type, uint8_t stored_is_b_type, uint32_t stored,
                  uint32_t query) const;
-  void query_one(const Piece_query &pq, size_t item, std::vector<Prim_pair> &out,
-                 std::vector<uint32_t> &scratch) const;
+  // rp: the exact rotation conditions of the piece (nullptr unless rel_.axis_rotation).
+  void query_one(const Piece_query &pq, const Rotation_piece *rp, size_t item,
+                 std::vector<Prim_pair> &out, std::vector<uint32_t> &scratch) const;
   size_t query_items() const;
 };
 

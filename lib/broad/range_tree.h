@@ -71,6 +71,8 @@ class Range_tree {
   }
 
   size_t size() const { return lifted_.size(); }
+  // The interval box of stored primitive id's lifted point.
+  const std::array<Interval, D> &lifted(uint32_t id) const { return lifted_[id]; }
 
   // Whether some stored point may satisfy q (q tested on the box of all lifted points).
   bool may_hit(const Cnf<D> &q) const { return !lifted_.empty() && cnf_possible(q, all_.data()); }
