@@ -190,6 +190,55 @@ done:
   pccd_motion_free(mfar);
 }
 
+/* A swing about a fixed axis (the range phase's exact rotation linearization): the unit
+ * cube at rest is indexed; a triangle with vertices (1/3, 2, 1/2), (1, 2, 1/2),
+ * (1, 2, 3/4) turns about the vertical axis through (2, 2, 0) with tau from 0 to 1.
+ * Vertex 0 is at distance 5/3 from the axis, at (2 - 5/3 cos th, 2 - 5/3 sin th, 1/2);
+ * it reaches the face y = 1 when sin th = 3/5 (cos th = 4/5: x = 2/3, inside the face),
+ * i.e. tan(th / 2) = (3/5) / (1 + 4/5) = 1/3 = tau: t = 1/3 exactly. The other vertices
+ * (distance 1) and the edges (distances 1 to 5/3, reaching y = 1 at sin th = 1/rho, later
+ * for smaller rho) come later. */
+static void swing(int broad, unsigned threads)
+{
+  pccd_body *cube = NULL, *tri = NULL;
+  pccd_motion *m = NULL;
+  pccd_index *ix = NULL;
+  pccd_report *rep = NULL;
+  pccd_scene_options opt;
+  const char *sv[9] = {"1/3", "2", "1/2", "1", "2", "1/2", "1", "2", "3/4"};
+  const unsigned int tt[3] = {0, 1, 2};
+  const char *axis[3] = {"0", "0", "1"}, *center[3] = {"2", "2", "0"};
+  size_t count = 0, c, ki = 0, kj = 0;
+  int collides = -1, fi = -1, fj = -1, vertex0 = 0;
+  OK(pccd_body_new_mesh_d(&cube, kCubeV, 8, kCubeT, 12));
+  OK(pccd_body_new_mesh_s(&tri, sv, 3, tt, 1));
+  OK(pccd_motion_new(&m));
+  OK(pccd_motion_set_axis_rotation_s(m, axis, center, "0", "1"));
+  OK(pccd_index_new(&ix, cube, NULL));
+  OK(pccd_report_new(&rep));
+  OK(pccd_index_query(ix, tri, m, NULL, options(&opt, broad, threads, 0), rep));
+  OK(pccd_report_collides(rep, &collides));
+  CHECK(collides == 1);
+  CHECK(time_is(rep, PCCD_WHOLE, PCCD_WHOLE, 2, "1/3"));
+  OK(pccd_report_contact_count(rep, 0, &count));
+  CHECK(count >= 1);
+  for (c = 0; c < count; ++c) {
+    OK(pccd_report_contact(rep, 0, c, &fi, &ki, &fj, &kj));
+    vertex0 |= fi == PCCD_FEATURE_TRIANGLE && fj == PCCD_FEATURE_VERTEX && kj == 0;
+  }
+  CHECK(vertex0);
+  /* tau only to 1/4 (t = 1 is tau = 1/4 < 1/3): no contact */
+  OK(pccd_motion_set_axis_rotation_s(m, axis, center, "0", "1/4"));
+  OK(pccd_index_query(ix, tri, m, NULL, options(&opt, broad, threads, 0), rep));
+  OK(pccd_report_collides(rep, &collides));
+  CHECK(collides == 0);
+  pccd_report_free(rep);
+  pccd_index_free(ix);
+  pccd_motion_free(m);
+  pccd_body_free(cube);
+  pccd_body_free(tri);
+}
+
 /* The index keeps its own reference to the body: it answers after the body (and the
  * motion) were freed; and freeing the index first leaves the bodies usable. The query
  * cube on slide_x(3, 0) meets the stationary cube when 3 - 3t = 1: t = 2/3. */
@@ -395,7 +444,10 @@ int main(void)
   int b;
   unsigned t;
   for (b = 0; b < 5; ++b)
-    for (t = 1; t <= max_threads[b]; ++t) known_answers(broads[b], t);
+    for (t = 1; t <= max_threads[b]; ++t) {
+      known_answers(broads[b], t);
+      swing(broads[b], t);
+    }
   lifetimes();
   errors();
   for (t = 1; t <= 3; ++t) many(t);
