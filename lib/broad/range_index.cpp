@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace pccd::broad {
 
@@ -82,19 +83,28 @@ void Range_index::query_one(const Piece_query &pq, const Rotation_piece *rp, siz
     tree->search(q, ids);
     return true;
   };
+  // Fixed-axis rotation: the exact root clause in the tree (built only past the hull
+  // test), then the sides at the roots on each candidate (broad/rotation_query.h).
+  auto rotation = [&](const auto &tree, auto boxes, auto make, auto second, auto emit) {
+    std::optional<decltype(make())> rs;
+    if (!run(tree, boxes, [&](auto &q) {
+          rs.emplace(make());
+          q.quads.push_back(rs->clause());
+        }))
+      return;
+    for (uint32_t i : ids)
+      if (rs->possible(tree->lifted(i).data(), second(i))) emit(i);
+  };
   if (S.is_mesh() && Q.is_mesh()) {
     const size_t nv = Q.data->surface_vertices.size(), nt = Q.mesh->triangles().size();
     if (item < nv) {
       const uint32_t v = Q.data->surface_vertices[item];
-      if (rp) {  // exact plane clause in the tree, sides at its roots on the candidates
-        const auto rs = rp->vertex_vs_triangle_sides(v);
-        run(trees_.triangles, [&] { return pq.vertex_vs_triangles_boxes(v); },
-            [&](auto &q) { q.quads.push_back(rs.clause()); });
-        for (uint32_t t : ids)
-          if (rs.possible(trees_.triangles->lifted(t).data(), trees_.triangle_sides[t].data()))
-            out.push_back(pair(FV, VF, t, v));
-        return;
-      }
+      if (rp)
+        return rotation(
+            trees_.triangles, [&] { return pq.vertex_vs_triangles_boxes(v); },
+            [&] { return rp->vertex_vs_triangle_sides(v); },
+            [&](uint32_t t) { return trees_.triangle_sides[t].data(); },
+            [&](uint32_t t) { out.push_back(pair(FV, VF, t, v)); });
       run(trees_.triangles, [&] { return pq.vertex_vs_triangles_boxes(v); },
           [&](auto &q) { pq.add_vertex_vs_triangles(v, q); });
       if (pq.linear_translation() && !ids.empty()) {  // second level: the triangle's sides
@@ -106,16 +116,12 @@ void Range_index::query_one(const Piece_query &pq, const Rotation_piece *rp, siz
       for (uint32_t t : ids) out.push_back(pair(FV, VF, t, v));
     } else if (item < nv + nt) {
       const uint32_t t = static_cast<uint32_t>(item - nv);
-      if (rp) {
-        const auto rs = rp->triangle_vs_vertex_sides(t);
-        run(trees_.vertices, [&] { return pq.triangle_vs_vertices_boxes(t); },
-            [&](auto &q) { q.quads.push_back(rs.clause()); });
-        for (uint32_t i : ids) {
-          const Interval *x = trees_.vertices->lifted(i).data();
-          if (rs.possible(x, x)) out.push_back(pair(VF, FV, S.data->surface_vertices[i], t));
-        }
-        return;
-      }
+      if (rp)
+        return rotation(
+            trees_.vertices, [&] { return pq.triangle_vs_vertices_boxes(t); },
+            [&] { return rp->triangle_vs_vertex_sides(t); },
+            [&](uint32_t i) { return trees_.vertices->lifted(i).data(); },
+            [&](uint32_t i) { out.push_back(pair(VF, FV, S.data->surface_vertices[i], t)); });
       run(trees_.vertices, [&] { return pq.triangle_vs_vertices_boxes(t); },
           [&](auto &q) {
             pq.add_triangle_vs_vertices(t, q);
@@ -124,15 +130,12 @@ void Range_index::query_one(const Piece_query &pq, const Rotation_piece *rp, siz
       for (uint32_t i : ids) out.push_back(pair(VF, FV, S.data->surface_vertices[i], t));
     } else {
       const uint32_t e = static_cast<uint32_t>(item - nv - nt);
-      if (rp) {
-        const auto rs = rp->edge_vs_edge_sides(e);
-        run(trees_.edges, [&] { return pq.edge_vs_edges_boxes(e); },
-            [&](auto &q) { q.quads.push_back(rs.clause()); });
-        for (uint32_t f : ids)
-          if (rs.possible(trees_.edges->lifted(f).data(), trees_.edge_ends[f].data()))
-            out.push_back(pair(EE, EE, f, e));
-        return;
-      }
+      if (rp)
+        return rotation(
+            trees_.edges, [&] { return pq.edge_vs_edges_boxes(e); },
+            [&] { return rp->edge_vs_edge_sides(e); },
+            [&](uint32_t f) { return trees_.edge_ends[f].data(); },
+            [&](uint32_t f) { out.push_back(pair(EE, EE, f, e)); });
       run(trees_.edges, [&] { return pq.edge_vs_edges_boxes(e); },
           [&](auto &q) {
             pq.add_edge_vs_edges(e, q);
