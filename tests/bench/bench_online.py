@@ -24,9 +24,20 @@ Motions of the queries (body origin from p0 to p1: a horizontal run of 1.5 to 3 
   linear    Motion(translation = p0 + (p1 - p0) t), no rotation.
   rotation  the same translation, r(t) = (1, tau(t) a): a fixed unit axis a through the
             body origin, tau linear from tau0 in [-0.5, 0.5] by +-[0.5, 1] (up to ~90 deg).
+            A rolling motion: the axis travels with the body origin, so in the stored
+            body's frame it is not a rotation about a fixed axis (no point stays fixed).
   poly      translation p0 + (p1 - p0 + B) t - B t^2 (a bend B), rotation a general
             quadratic quaternion w = 1 + w1 t + w2 t^2 (|w1|, |w2| <= 0.3, so w > 0: it never
             vanishes), vector part coefficients up to 0.5 / 0.8.
+  axis      a swing (door / arm) about a fixed axis: constant translation p0 (no run),
+            r(t) = (1, tau(t) a) with tau as in "rotation" and a random unit axis a tilted
+            up to 30 deg from the vertical (uniform on that cap). The query's own points sit
+            at a lever arm L from the body origin (the pivot), |L| in the class's run range
+            (1.5 to 3 cells / 4 to 8 A), L within 10 deg of horizontal: mesh queries are the
+            triangles above moved by L, mol queries one ball centred at L. So the query
+            sweeps an arc roughly horizontally over the surface, and the relative motion is
+            a rotation about a fixed axis through the pivot (the library's exact
+            linearization for that case, broad/axis_rotation.h).
 Placement: each query's path is then shifted vertically (the constant of its z
 translation) so that its closest sampled approach to the surface is a chosen clearance d.
 About 90 % are near misses: d in [0.02, 0.2] cells (meshes) / [0.05, 0.5] A (balls),
@@ -46,7 +57,7 @@ random sample of (at most) 1000 queries and the total is extrapolated and printe
 "~T est k/n": never as a measurement, and never used in the fitted exponents.
 
 Usage: python tests/bench/bench_online.py [--sizes 1k,4k,16k,64k,256k] [--classes mesh,mol]
-           [--motions linear,rotation,poly] [--quick] [--budget-seconds 120]
+           [--motions linear,rotation,poly,axis] [--quick] [--budget-seconds 120]
            [--brute-seconds 60] [--threads 1] [--seed 1] [--dump-dir /tmp]
 """
 
@@ -69,15 +80,16 @@ from bench_bodies import cpu_model, fit_exponent, loaded_libraries, print_table 
 
 GRID = 2.0 ** 16                     # every coordinate and coefficient is a multiple of 2^-16
 CLASSES = ("mesh", "mol")
-MOTIONS = ("linear", "rotation", "poly")
+MOTIONS = ("linear", "rotation", "poly", "axis")   # append only: rng_for seeds by the index
 METHODS = ("range", "boxes", "brute")
 DEFAULT_SIZES = "1k,4k,16k,64k,256k"
 # Default sizes stop here per motion class (--sizes applies to every class as given):
 # linear motions go to 256k; rotations to 64k (mesh rotations at 256k take ~10 min of
 # range time alone); the poly motions to 16k: their time is dominated by a few hits whose
 # exact predicates take seconds with either broad phase (not by the broad phase), and
-# 64k of them take most of an hour.
-DEFAULT_MAX = {"linear": 256000, "rotation": 64000, "poly": 16000}
+# 64k of them take most of an hour. Axis swings to 64k: range time to 64k is ~3 min for
+# both classes, while mesh swings at 256k take ~9 min of range time alone (mol ~2 min).
+DEFAULT_MAX = {"linear": 256000, "rotation": 64000, "poly": 16000, "axis": 64000}
 QUICK_SIZES = "200,800"
 HIT_FRACTION = 0.10
 SAMPLE_QUERIES = 1000                # boxes over budget: timed on this many queries
@@ -192,11 +204,41 @@ def polyval(coef, ts):
     return np.einsum("ncd,dt->ntc", coef, powers)
 
 
+def random_tau(N, rng):
+    """tau(t) = tau0 + dtau t: tau0 in [-0.5, 0.5], dtau +-[0.5, 1]."""
+    return rng.uniform(-0.5, 0.5, N), rng.uniform(0.5, 1.0, N) * rng.choice([-1.0, 1.0], N)
+
+
+def axis_rotations(axis, tau0, dtau):
+    """rot (N, 4, 2) of r(t) = (1, tau(t) axis)."""
+    N = len(axis)
+    return np.concatenate([np.column_stack([np.ones(N), np.zeros(N)])[:, None, :],
+                           np.stack([axis * tau0[:, None], axis * dtau[:, None]], axis=-1)], axis=1)
+
+
+def lever_arms(N, rng, scale):
+    """The "axis" class's lever arms (N, 3) on the grid: length in scale["run"], within
+    10 deg of horizontal, random azimuth."""
+    length = rng.uniform(*scale["run"], N)
+    az = rng.uniform(0, 2 * math.pi, N)
+    el = np.radians(rng.uniform(-10.0, 10.0, N))
+    return on_grid(length[:, None] * np.column_stack([np.cos(el) * np.cos(az), np.cos(el) * np.sin(az),
+                                                      np.sin(el)]))
+
+
 def random_motions(motion, N, span, rng, scale):
     """trans (N, 3, dt+1), rot (N, 4, dr+1): coefficient arrays on the grid, z constant 0
     (it is set by the placement). span = ((xlo, xhi), (ylo, yhi)) for the start point."""
     (xlo, xhi), (ylo, yhi) = span
     p0 = np.column_stack([rng.uniform(xlo, xhi, N), rng.uniform(ylo, yhi, N), np.zeros(N)])
+    if motion == "axis":
+        # a swing about a fixed axis through the pivot p0: no run; the axis within 30 deg
+        # of the vertical (uniform on the cap), either sense
+        cz = rng.uniform(math.cos(math.radians(30.0)), 1.0, N)
+        az = rng.uniform(0, 2 * math.pi, N)
+        sz = np.sqrt(1.0 - cz * cz)
+        axis = np.column_stack([sz * np.cos(az), sz * np.sin(az), cz]) * rng.choice([-1.0, 1.0], (N, 1))
+        return on_grid(p0[:, :, None]), on_grid(axis_rotations(axis, *random_tau(N, rng)))
     ang = rng.uniform(0, 2 * math.pi, N)
     run = rng.uniform(*scale["run"], N)
     d = np.column_stack([run * np.cos(ang), run * np.sin(ang), -rng.uniform(*scale["drop"], N)])
@@ -212,10 +254,7 @@ def random_motions(motion, N, span, rng, scale):
         if motion == "rotation":
             axis = rng.normal(size=(N, 3))
             axis /= np.linalg.norm(axis, axis=1)[:, None]
-            tau0 = rng.uniform(-0.5, 0.5, N)
-            dtau = rng.uniform(0.5, 1.0, N) * rng.choice([-1.0, 1.0], N)
-            rot = np.concatenate([np.column_stack([np.ones(N), np.zeros(N)])[:, None, :],
-                                  np.stack([axis * tau0[:, None], axis * dtau[:, None]], axis=-1)], axis=1)
+            rot = axis_rotations(axis, *random_tau(N, rng))
         else:
             rot = np.concatenate([np.ones((N, 1, 1)), np.zeros((N, 3, 1))], axis=1)
     return on_grid(trans), on_grid(rot)
@@ -300,12 +339,17 @@ def make_queries(polyccd, cls, motion, n, seed, stored):
             dirs /= np.linalg.norm(dirs, axis=2)[..., None]
             tri = dirs * rng.uniform(0.4, 0.8, (N, 3, 1))
             tri = on_grid(tri - tri.mean(axis=1)[:, None, :])
+            if motion == "axis":
+                tri = tri + lever_arms(N, rng, scale)[:, None, :]      # exact: both on the grid
             cons, cons0, sampled = mesh_clearances(trans, rot, tri, stored["H"], stored["k"])
             gap, gap0 = np.where(hit[s:s + N], sampled, cons), cons0
         else:
-            dirs = rng.normal(size=(N, 3))
-            dirs /= np.linalg.norm(dirs, axis=1)[:, None]
-            offs = on_grid(dirs * rng.uniform(0.0, 1.5, (N, 1)))
+            if motion == "axis":
+                offs = lever_arms(N, rng, scale)
+            else:
+                dirs = rng.normal(size=(N, 3))
+                dirs /= np.linalg.norm(dirs, axis=1)[:, None]
+                offs = on_grid(dirs * rng.uniform(0.0, 1.5, (N, 1)))
             rho = on_grid(rng.uniform(*RADII, N))
             gap, gap0 = mol_clearance(trans, rot, offs, rho, stored["grid"])
             gap = np.where(np.isfinite(gap), gap, 0.0)               # no ball under the path at all
