@@ -8,7 +8,7 @@ Checked here: random scenes of small meshes on a rational grid (coplanar sets sl
 a plane turning about its normal, constant poses on either side, tau crossing 0, reversed
 and large turns, tau0 == tau1), of ball sets and of mixes: the range phase equals brute
 force over every feature pair, both modes, through P.check and P.Index (either body
-stored); constructed cases with known answers (grazing, contacts at t = 0 and 1, an edge
+stored), also scaled by 1e-200 ... 2^1100 (beyond double range); constructed cases with known answers (grazing, contacts at t = 0 and 1, an edge
 turning into another edge's plane, balls tangent at t = 1, an arc crossing a triangle
 twice); the conditions filter: the same motion with a degree-2 quaternion (times 1 + t:
 the "twin", on the general linearization) gives the same answers with at least as many
@@ -115,6 +115,26 @@ def test_rotation_spheres_range_equals_brute(kind, k):
     mix = (random_mesh, random_spheres) if k % 4 < 2 else (random_spheres, random_mesh)
     shapes = (random_spheres,) * 2 if kind == "balls" else mix
     agree(rotating_scene(random.Random(30261124 + k + 100 * (kind == "mix")), k, shapes))
+
+
+SCALES = [F(10) ** -200, F(10) ** -12, F(10) ** 12, F(10) ** 200, F(2) ** 1100]
+
+
+@pytest.mark.parametrize("scale", SCALES, ids=["1e-200", "1e-12", "1e12", "1e200", "2^1100"])
+def test_rotation_extreme_scales(scale):
+    """Grid scenes scaled by tiny and huge factors (2^1100 is beyond double range: the
+    interval filters overflow and must fall back, never filter wrongly)."""
+    rng = random.Random(4242)
+    hits = 0
+    for k in range(4):
+        g = lambda: grid(rng) * scale  # noqa: E731
+        mesh = lambda: P.Mesh([[g() for _ in range(3)] for _ in range(5)],  # noqa: E731
+                              [[0, 1, 2], [1, 2, 3], [2, 3, 4]])
+        axis, center, tau0, tau1 = random_rotation(rng)
+        m = P.Motion.axis_rotation(axis, [c * scale for c in center], tau0, tau1)
+        bodies = [P.Body(mesh(), None, "a"), P.Body(mesh(), m, "b")]
+        hits += agree(bodies)[0].collides
+    assert hits >= 1  # the scale-free generator (seed fixed) collides in some of them
 
 
 def test_generator_makes_contacts():
