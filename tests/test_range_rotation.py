@@ -8,8 +8,9 @@ Checked here: random scenes of small meshes on a rational grid (coplanar sets sl
 a plane turning about its normal, constant poses on either side, tau crossing 0, reversed
 and large turns, tau0 == tau1), of ball sets and of mixes: the range phase equals brute
 force over every feature pair, both modes, through P.check and P.Index (either body
-stored), also scaled by 1e-200 ... 2^1100 (beyond double range); constructed cases with known answers (grazing, contacts at t = 0 and 1, an edge
-turning into another edge's plane, balls tangent at t = 1, an arc crossing a triangle
+stored), also scaled by 1e-200 ... 2^1100 (beyond double range); constructed cases
+with known answers (grazing, contacts at t = 0 and 1, an edge turning into another
+edge's plane, balls tangent at t = 1, an arc crossing a triangle
 twice); the conditions filter: the same motion with a degree-2 quaternion (times 1 + t:
 the "twin", on the general linearization) gives the same answers with at least as many
 candidates, strictly more on near misses built for it.
