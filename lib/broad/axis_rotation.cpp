@@ -63,16 +63,11 @@ std::optional<Axis_rotation> detect_axis_rotation(const Moving_body &S, const Mo
   const motion::Mat3_poly RE = motion::rotation_numerator(E);
   const Poly_q WE = motion::quat_norm2(E);
 
-  // Exact relative motion (broad/linearize.h): y = (M p + u) / w.
-  motion::Mat3_poly M;
-  std::array<Poly_q, 3> u;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      M[i][j] = S.W * (S.Rn[0][i] * Q.Rn[0][j] + S.Rn[1][i] * Q.Rn[1][j] + S.Rn[2][i] * Q.Rn[2][j]);
-  std::array<Poly_q, 3> d;
-  for (int k = 0; k < 3; ++k) d[k] = S.W * Q.O[k] - Q.W * S.O[k];
-  for (int i = 0; i < 3; ++i) u[i] = S.Rn[0][i] * d[0] + S.Rn[1][i] * d[1] + S.Rn[2][i] * d[2];
-  const Poly_q w = S.W * S.W * Q.W;
+  // Exact relative motion: y = (M p + u) / w.
+  const Relative_pose<Poly_q> rel = relative_pose(S.Rn, S.O, S.W, Q.Rn, Q.O, Q.W);
+  const auto &M = rel.M;
+  const auto &u = rel.u;
+  const Poly_q &w = rel.w;
 
   // (u(t) - w(t) c) w(0) WE(t) = RE(t) (u(0) - w(0) c) w(t): for every component i,
   // P_i(t) + sum_j A_ij(t) c_j = 0 with

@@ -187,16 +187,10 @@ bool is_linear_translation(const Moving_body &b) {
 Relative_motion::Relative_motion(const Moving_body &S, const Moving_body &Q) {
   linear_translation = is_linear_translation(S) && is_linear_translation(Q);
   if (!linear_translation) axis_rotation = detect_axis_rotation(S, Q);
-  // Rn_S^T W_S, then M = (Rn_S^T W_S) Rn_Q.
-  std::array<std::array<IPoly, 3>, 3> A;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) A[i][j] = S.Rn_i[j][i] * S.W_i;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) M[i][j] = A[i][0] * Q.Rn_i[0][j] + A[i][1] * Q.Rn_i[1][j] + A[i][2] * Q.Rn_i[2][j];
-  std::array<IPoly, 3> d;
-  for (int k = 0; k < 3; ++k) d[k] = S.W_i * Q.O_i[k] - Q.W_i * S.O_i[k];
-  for (int i = 0; i < 3; ++i) u[i] = S.Rn_i[0][i] * d[0] + S.Rn_i[1][i] * d[1] + S.Rn_i[2][i] * d[2];
-  w = S.W_i * S.W_i * Q.W_i;
+  Relative_pose<IPoly> r = relative_pose(S.Rn_i, S.O_i, S.W_i, Q.Rn_i, Q.O_i, Q.W_i);
+  M = std::move(r.M);
+  u = std::move(r.u);
+  w = std::move(r.w);
 }
 
 Relative_motion::Pose Relative_motion::approx(double t) const {

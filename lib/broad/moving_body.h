@@ -70,4 +70,30 @@ struct Moving_body {
 // Validates the motion (Input_error when r(t) vanishes on [0, 1]) and derives the data.
 Moving_body prepare_body(std::shared_ptr<const Body_data> data, const motion::Rigid_motion &m);
 
+// The query body's homogeneous motion in the stored body's frame (broad/linearize.h):
+// a query point p is at y(t) = (M(t) p + u(t)) / w(t) with
+//   M = Rn_S^T W_S Rn_Q,   u = Rn_S^T (W_S O_Q - W_Q O_S),   w = W_S^2 W_Q,
+// from the exact polynomials (Rn, O, W) or their enclosures (Rn_i, O_i, W_i).
+template <class P>
+struct Relative_pose {
+  std::array<std::array<P, 3>, 3> M;
+  std::array<P, 3> u;
+  P w;
+};
+template <class Mat, class Vec, class P>
+Relative_pose<P> relative_pose(const Mat &RnS, const Vec &OS, const P &WS, const Mat &RnQ, const Vec &OQ,
+                               const P &WQ) {
+  Relative_pose<P> r;
+  std::array<std::array<P, 3>, 3> A;  // Rn_S^T W_S, then M = A Rn_Q
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) A[i][j] = RnS[j][i] * WS;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r.M[i][j] = A[i][0] * RnQ[0][j] + A[i][1] * RnQ[1][j] + A[i][2] * RnQ[2][j];
+  std::array<P, 3> d;
+  for (int k = 0; k < 3; ++k) d[k] = WS * OQ[k] - WQ * OS[k];
+  for (int i = 0; i < 3; ++i) r.u[i] = RnS[0][i] * d[0] + RnS[1][i] * d[1] + RnS[2][i] * d[2];
+  r.w = WS * WS * WQ;
+  return r;
+}
+
 }  // namespace pccd::broad
