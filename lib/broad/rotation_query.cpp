@@ -127,12 +127,13 @@ template struct Root_sides<kDimVertex, kDimVertex>;
 template struct Root_sides<kDimEdge, kDimEnds>;
 
 Rotation_piece::Rotation_piece(const Axis_rotation &ax, const Moving_body &query, double ta, double tb)
-    : q_(query), a_(ax.a), c_(ax.c) {
+    : q_(query), c_(ax.c) {
   const Interval u[2][2] = {{ax.alpha0 + ax.alpha1 * Interval(ta), Interval(ta)},
                             {ax.alpha0 + ax.alpha1 * Interval(tb), Interval(tb)}};
   // [a]x and 2 a a^T - |a|^2 I
-  const std::array<I3, 3> K = {I3{Interval(0.0), -a_[2], a_[1]}, I3{a_[2], Interval(0.0), -a_[0]},
-                               I3{-a_[1], a_[0], Interval(0.0)}};
+  const I3 &a = ax.a;
+  const std::array<I3, 3> K = {I3{Interval(0.0), -a[2], a[1]}, I3{a[2], Interval(0.0), -a[0]},
+                               I3{-a[1], a[0], Interval(0.0)}};
   for (int j = 0; j < 3; ++j) {
     const int x = j == 2 ? 1 : 0, y = j == 0 ? 0 : 1;  // (u0, u0), (u0, u1), (u1, u1)
     const Interval aa = u[x][0] * u[y][0], ab = u[x][0] * u[y][1] + u[y][0] * u[x][1],
@@ -140,7 +141,7 @@ Rotation_piece::Rotation_piece(const Axis_rotation &ax, const Moving_body &query
     W_[j] = aa + bb * ax.a2;
     for (int r = 0; r < 3; ++r)
       for (int k = 0; k < 3; ++k) {
-        const Interval sym = Interval(2.0) * a_[r] * a_[k] - (r == k ? ax.a2 : Interval(0.0));
+        const Interval sym = Interval(2.0) * a[r] * a[k] - (r == k ? ax.a2 : Interval(0.0));
         R_[j][r][k] = (r == k ? aa : Interval(0.0)) + ab * K[r][k] + bb * sym;
       }
   }

@@ -80,7 +80,7 @@ class Rotation_piece {
  private:
   using I3 = std::array<Interval, 3>;
   const Moving_body &q_;
-  I3 a_, c_;
+  I3 c_;
   std::array<std::array<I3, 3>, 3> R_;  // R_[j][row]: Bernstein coefficients of Rn
   std::array<Interval, 3> W_;
   std::vector<I3> q_pts_;                // q = y(0) - c of every query point
