@@ -14,29 +14,29 @@ def _block(lang, k=0):
     return blocks[k]
 
 
-def test_python_example_runs(tmp_path):
-    script = tmp_path / "example.py"
-    script.write_text(_block("python"))
+def _run_python_block(tmp_path, k):
+    """Python block k of the README, run as a script from the checkout: its stdout."""
+    script = tmp_path / f"block{k}.py"
+    script.write_text(_block("python", k))
     out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, cwd=ROOT)
     assert out.returncode == 0, out.stderr
-    assert out.stdout.startswith("1/3 (Feature(kind='vertex-face'"), out.stdout
+    return out.stdout
+
+
+def test_python_example_runs(tmp_path):
+    stdout = _run_python_block(tmp_path, 0)
+    assert stdout.startswith("1/3 (Feature(kind='vertex-face'"), stdout
 
 
 def test_python_scene_example_runs(tmp_path):
     # Cube edge 10 is (3, 5), the diagonal of the face x = 1 through its centre.
-    script = tmp_path / "scene.py"
-    script.write_text(_block("python", 1))
-    out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, cwd=ROOT)
-    assert out.returncode == 0, out.stderr
-    assert out.stdout == "3/4 [(('edge', 10), ('sphere', 0))]\n", out.stdout
+    stdout = _run_python_block(tmp_path, 1)
+    assert stdout == "3/4 [(('edge', 10), ('sphere', 0))]\n", stdout
 
 
 def test_python_index_example_runs(tmp_path):
-    script = tmp_path / "index.py"
-    script.write_text(_block("python", 2))
-    out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, cwd=ROOT)
-    assert out.returncode == 0, out.stderr
-    assert out.stdout == "['1', '3/4']\n", out.stdout
+    stdout = _run_python_block(tmp_path, 2)
+    assert stdout == "['1', '3/4']\n", stdout
 
 
 def test_c_example_runs(tmp_path):
