@@ -407,6 +407,40 @@ case(MM, "large-scale-gap-closes",
            translation=[[F(1, 10 ** 20), F(-3, 10 ** 20)], [-3 * 10 ** 6, 6 * 10 ** 6], [0]])],
      F(1, 3))
 
+# Swings about a fixed axis against a body at rest: the range phase's exact rotation
+# linearization (lib/broad/LINEARIZATION.md), contacts decided at a root of its quadratic.
+# A pivot c is written as body points shifted by -c and the constant translation c.
+#
+# tests/c/test_index.c's swing: B = (1/3, 2, 1/2), (1, 2, 1/2), (1, 2, 3/4) turns about the
+# vertical axis through (2, 2, 0), tau 0 -> 1. Vertex 0 (distance 5/3 from the axis) is at
+# (2 - 5/3 cos th, 2 - 5/3 sin th, 1/2) and reaches the face y = 1 at sin th = 3/5
+# (x = 2/3, inside triangle 7 = [3, 6, 7]: x + z >= 1), tan(th / 2) = 1/3 = tau: t = 1/3.
+case(MM, "rotation-swing-vertex-onto-face",
+     [body("A", cube()),
+      body("B", mesh([[F(-5, 3), 0, F(1, 2)], [-1, 0, F(1, 2)], [-1, 0, F(3, 4)]], [[0, 1, 2]]),
+           translation=still([2, 2, 0]), rotation=about([0, 0, 1], 0, 1))],
+     F(1, 3), feat=vt("A", "B", ("triangle", 7), ("vertex", 0)))
+
+# B (x in [1/2, 1]) turns about the y axis from -90 to 90 degrees: its points
+# (x cos th, y, -x sin th) reach x >= 1 only at th = 0 (t = 1/2), coplanar with A in z = 0,
+# B's edge x = 1 through A's vertex (1, 0, 0), the end of A's edges (1,0,0)-(2,0,0) and
+# (1,0,0)-(2,0,-1): a touch at an edge's endpoint, in a common plane.
+case(MM, "rotation-edge-turns-coplanar-onto-edge-end",
+     [body("A", mesh([[1, 0, 0], [2, 0, 0], [2, 0, -1]], [[0, 1, 2]])),
+      body("B", mesh([[1, -1, 0], [1, 1, 0], [F(1, 2), 0, 0]], [[0, 1, 2]]),
+           rotation=about([0, 1, 0], -1, 1))],
+     F(1, 2))
+
+# B's vertex 0 on the unit circle about the z axis, tau = 4t: y = sin th = 3/5 at
+# tan(th / 2) = 1/3 and 3, i.e. t = 1/12 and 3/4 (two roots of the contact quadratic in
+# the piece); A's triangle in y = 3/5 holds both points; B's other vertices stay within
+# radius 3/5 - and below it. First contact at 1/12.
+case(MM, "rotation-arc-crosses-triangle-twice",
+     [body("A", mesh([[-2, F(3, 5), -1], [2, F(3, 5), -1], [0, F(3, 5), 2]], [[0, 1, 2]])),
+      body("B", mesh([[1, 0, 0], [F(1, 2), 0, 0], [F(1, 2), F(-1, 4), 0]], [[0, 1, 2]]),
+           rotation=about([0, 0, 1], 0, 4))],
+     F(1, 12), feat=vt("A", "B", ("triangle", 0), ("vertex", 0)))
+
 # ----- sphere sets vs sphere sets
 SS = "spheres-spheres"
 
@@ -481,6 +515,16 @@ case(SS, "rotating-dumbbell-miss-1e-30",
      [body("A", balls([[2, 0, 0], [-2, 0, 0]], [F(1, 2), F(1, 2)]), rotation=about([0, 0, 1], 0, 2)),
       body("B", balls([[0, 3 + E30, 0]], [F(1, 2)]))],
      None)
+# B's ball turns about the vertical axis through (1, 0, 0), tau -1 -> 0 (90 degrees, back
+# to rest): its centre 1 + v moves from (9/5, 2/5, 0) to (3/5, 4/5, 0) on the circle |v| =
+# 2 / sqrt(5) about the pivot, its angle from 26.6 to 116.6 degrees, so its squared
+# distance 9/5 + 2 v_x to A's ball at the origin falls all the way to 1 = (1/2 + 1/2)^2:
+# tangent at t = 1 only (the exact ball clause: the quadratic's minimum at the piece's end).
+case(SS, "rotation-balls-tangent-at-t1",
+     [body("A", balls([[0, 0, 0]], [F(1, 2)])),
+      body("B", balls([[F(-2, 5), F(4, 5), 0]], [F(1, 2)]), translation=still([1, 0, 0]),
+           rotation=about([0, 0, 1], -1, 0))],
+     1, feat=vt("A", "B", ("sphere", 0), ("sphere", 0)))
 
 # ----- sphere sets vs meshes
 SM = "spheres-mesh"
