@@ -97,7 +97,7 @@ $(BUILD)/test_ulp: tests/cpp/test_ulp.cpp lib/arith/interval.h
 	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/test_ulp.cpp
 
 # Internal test of the range tree's clause bounds against exact rationals.
-$(BUILD)/test_halfspace_bounds: tests/cpp/test_halfspace_bounds.cpp lib/broad/halfspaces.h lib/arith/interval.h
+$(BUILD)/test_halfspace_bounds: tests/cpp/test_halfspace_bounds.cpp lib/range/halfspaces.h lib/arith/interval.h
 	@mkdir -p $(BUILD)
 	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/test_halfspace_bounds.cpp $(LDLIBS)
 

@@ -408,7 +408,7 @@ case(MM, "large-scale-gap-closes",
      F(1, 3))
 
 # Swings about a fixed axis against a body at rest: the range phase's exact rotation
-# linearization (lib/broad/LINEARIZATION.md), contacts decided at a root of its quadratic.
+# linearization (lib/range/LINEARIZATION.md), contacts decided at a root of its quadratic.
 # A pivot c is written as body points shifted by -c and the constant translation c.
 #
 # tests/c/test_index.c's swing: B = (1/3, 2, 1/2), (1, 2, 1/2), (1, 2, 3/4) turns about the

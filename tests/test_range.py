@@ -1,5 +1,5 @@
 """The range broad phase (linearized contact conditions, lifted points in CGAL kd-trees;
-lib/broad/LINEARIZATION.md) on constructed scenes whose answers are known: it must agree
+lib/range/LINEARIZATION.md) on constructed scenes whose answers are known: it must agree
 with brute force and must actually filter (a test that every candidate passes would not
 show the structure works)."""
 from fractions import Fraction as F

@@ -1,5 +1,5 @@
 """The exact linearization of the range phase for relative rotations about a fixed axis
-(lib/broad/LINEARIZATION.md, "Rotations about a fixed axis"): when the query body's
+(lib/range/LINEARIZATION.md, "Rotations about a fixed axis"): when the query body's
 rotation in the stored body's frame, conj(r_S(t)) r_Q(t), has degree 1 and some point is
 fixed (Motion.axis_rotation, possibly composed with constant poses, against a body at
 rest or in a constant pose), every query point moves on a circular arc about one line.

@@ -1,4 +1,4 @@
-"""The exact translation linearization of the range phase (lib/broad/LINEARIZATION.md,
+"""The exact translation linearization of the range phase (lib/range/LINEARIZATION.md,
 "Linear translations"): when both bodies translate linearly (constant rotations), each
 query point moves on a segment relative to the stored body and the Plücker side
 conditions (vertex-triangle both ways, edge-parallelogram) join the query.

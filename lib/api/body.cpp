@@ -61,7 +61,7 @@ int new_mesh(pccd_body **out, std::vector<Point3_q> vertices,
   auto body = std::make_unique<pccd_body>();
   body->mesh = std::make_shared<const pccd::motion::Mesh_body>(std::move(vertices),
                                                          std::move(triangles));
-  body->data = pccd::broad::make_body_data(body->mesh, nullptr);
+  body->data = pccd::narrow::make_body_data(body->mesh, nullptr);
   *out = body.release();
   return PCCD_OK;
 }
@@ -70,7 +70,7 @@ int new_spheres(pccd_body **out, std::vector<Point3_q> centers, std::vector<Rati
   auto body = std::make_unique<pccd_body>();
   body->spheres = std::make_shared<const pccd::motion::Sphere_body>(std::move(centers),
                                                               std::move(radii));
-  body->data = pccd::broad::make_body_data(nullptr, body->spheres);
+  body->data = pccd::narrow::make_body_data(nullptr, body->spheres);
   *out = body.release();
   return PCCD_OK;
 }

@@ -4,11 +4,11 @@
 #pragma once
 #include <memory>
 
-#include "broad/moving_body.h"
+#include "narrow/moving_body.h"
 #include "motion/body.h"
 
 struct pccd_body {
   std::shared_ptr<const pccd::motion::Mesh_body> mesh;      // set for PCCD_BODY_MESH
   std::shared_ptr<const pccd::motion::Sphere_body> spheres;  // set for PCCD_BODY_SPHERES
-  std::shared_ptr<const pccd::broad::Body_data> data;        // derived once, for scenes
+  std::shared_ptr<const pccd::narrow::Body_data> data;        // derived once, for scenes
 };

@@ -1,4 +1,4 @@
-// pccd_index_*: the on-line collision problem (broad/online_index.h).
+// pccd_index_*: the on-line collision problem (scene/online_index.h).
 #include <string>
 #include <vector>
 
@@ -13,8 +13,8 @@ using pccd::api::require;
 
 namespace {
 
-pccd::broad::Scene_body scene_body(const pccd_body *body, const pccd_motion *motion) {
-  pccd::broad::Scene_body b;
+pccd::scene::Scene_body scene_body(const pccd_body *body, const pccd_motion *motion) {
+  pccd::scene::Scene_body b;
   b.body = body->data;
   if (motion) b.motion = motion->m;
   return b;
@@ -30,7 +30,7 @@ PCCD_API int pccd_index_new(pccd_index **out, const pccd_body *body, const pccd_
     *out = nullptr;
     require(body, "body");
     auto ix = std::make_unique<pccd_index>();
-    ix->ix = std::make_unique<const pccd::broad::Online_index>(scene_body(body, motion));
+    ix->ix = std::make_unique<const pccd::scene::Online_index>(scene_body(body, motion));
     *out = ix.release();
     return PCCD_OK;
   });
@@ -46,7 +46,7 @@ PCCD_API int pccd_index_query(const pccd_index *ix, const pccd_body *body,
     require(body, "body");
     require(rep, "report");
     rep->solved = false;  // a failed call leaves no earlier answer readable
-    const pccd::broad::Scene_options so = pccd::api::read_scene_options(cfg, opt);
+    const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
     rep->r = ix->ix->query(scene_body(body, motion), so);
     rep->solved = true;
     return PCCD_OK;
@@ -65,13 +65,13 @@ PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const 
     for (size_t k = 0; k < n; ++k)
       require(reports[k], ("reports[" + std::to_string(k) + "]").c_str());
     for (size_t k = 0; k < n; ++k) reports[k]->solved = false;  // no earlier answer readable
-    const pccd::broad::Scene_options so = pccd::api::read_scene_options(cfg, opt);
-    std::vector<pccd::broad::Scene_body> qs(n);
+    const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
+    std::vector<pccd::scene::Scene_body> qs(n);
     for (size_t k = 0; k < n; ++k) {
       require(bodies[k], ("bodies[" + std::to_string(k) + "]").c_str());
       qs[k] = scene_body(bodies[k], motions ? motions[k] : nullptr);
     }
-    std::vector<pccd::broad::Scene_report> out;
+    std::vector<pccd::scene::Scene_report> out;
     ix->ix->query_many(qs, so, out);
     for (size_t k = 0; k < n; ++k) {
       reports[k]->r = std::move(out[k]);

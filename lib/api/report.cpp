@@ -24,14 +24,14 @@ bool solved(const pccd_report *rep, const char *fn) {
   return rep->solved;
 }
 
-const pccd::broad::Pair_report &pair_at(const pccd_report *rep, size_t p) {
+const pccd::scene::Pair_report &pair_at(const pccd_report *rep, size_t p) {
   if (p >= rep->r.pairs.size())
     throw Input_error("pair index " + std::to_string(p) + " out of range (" +
                       std::to_string(rep->r.pairs.size()) + " pairs in contact)");
   return rep->r.pairs[p];
 }
 
-const pccd::broad::Contact_report &contact_at(const pccd_report *rep, size_t p, size_t c) {
+const pccd::scene::Contact_report &contact_at(const pccd_report *rep, size_t p, size_t c) {
   const auto &pr = pair_at(rep, p);
   if (c >= pr.contacts.size())
     throw Input_error("contact index " + std::to_string(c) + " out of range (" +

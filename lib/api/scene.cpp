@@ -22,7 +22,7 @@ PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_mot
   return guard("pccd_scene_add", [&] {
     require(s, "scene");
     require(body, "body");
-    pccd::broad::Scene_body b;
+    pccd::scene::Scene_body b;
     b.body = body->data;
     if (motion) b.motion = motion->m;
     s->bodies.push_back(std::move(b));
@@ -57,8 +57,8 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
     require(s, "scene");
     require(rep, "report");
     rep->solved = false;  // a failed call leaves no earlier answer readable
-    const pccd::broad::Scene_options so = pccd::api::read_scene_options(cfg, opt);
-    rep->r = pccd::broad::solve_scene(s->bodies, so);
+    const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
+    rep->r = pccd::scene::solve_scene(s->bodies, so);
     rep->solved = true;
     return PCCD_OK;
   });
@@ -68,8 +68,8 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
 
 namespace pccd::api {
 
-broad::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt) {
-  broad::Scene_options so;
+scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt) {
+  scene::Scene_options so;
   so.solve = read_config(cfg);
   if (!opt) return so;
   if (opt->struct_size != sizeof(pccd_scene_options))
@@ -85,9 +85,7 @@ broad::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene
                       "or PCCD_BROAD_AUTO (3)");
   so.threads = opt->threads;
   so.all_contacts = opt->all_contacts == 1;
-  so.automatic = opt->broad_phase == PCCD_BROAD_AUTO;
-  so.brute = opt->broad_phase == PCCD_BROAD_BRUTE;
-  so.range = opt->broad_phase == PCCD_BROAD_RANGE;
+  so.broad_phase = static_cast<scene::Broad_phase>(opt->broad_phase);  // constants.cpp
   return so;
 }
 

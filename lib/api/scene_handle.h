@@ -3,27 +3,27 @@
 #include <memory>
 #include <vector>
 
-#include "broad/online_index.h"
-#include "broad/scene.h"
+#include "scene/online_index.h"
+#include "scene/scene.h"
 #include "polyccd.h"
 
 struct pccd_scene {
-  std::vector<pccd::broad::Scene_body> bodies;  // shared bodies, copied motions
+  std::vector<pccd::scene::Scene_body> bodies;  // shared bodies, copied motions
 };
 
 struct pccd_index {
-  std::unique_ptr<const pccd::broad::Online_index> ix;
+  std::unique_ptr<const pccd::scene::Online_index> ix;
 };
 
 struct pccd_report {
   bool solved = false;
-  pccd::broad::Scene_report r;
+  pccd::scene::Scene_report r;
 };
 
 namespace pccd::api {
 
 // The scene options of pccd_scene_solve and pccd_index_query (NULL: defaults);
 // Input_error naming the bad field.
-broad::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt);
+scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt);
 
 }  // namespace pccd::api

@@ -37,7 +37,7 @@ Motions of the queries (body origin from p0 to p1: a horizontal run of 1.5 to 3 
             triangles above moved by L, mol queries one ball centred at L. So the query
             sweeps an arc roughly horizontally over the surface, and the relative motion is
             a rotation about a fixed axis through the pivot (the library's exact
-            linearization for that case, broad/axis_rotation.h).
+            linearization for that case, range/axis_rotation.h).
 Placement: each query's path is then shifted vertically (the constant of its z
 translation) so that its closest sampled approach to the surface is a chosen clearance d.
 About 90 % are near misses: d in [0.02, 0.2] cells (meshes) / [0.05, 0.5] A (balls),

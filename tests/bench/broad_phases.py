@@ -7,7 +7,7 @@ broad phase (boxes, range; brute optional), one thread, after one warm-up query.
 about the x axis through (0, 0, 4) with tau from 1/4 to 0, then lowered by 1/4, so that
 it ends where the screw ends (the same hit / near / touch plates apply, contact or not
 near t = 1/2 and t = 1). A rotation about a fixed axis: the range phase uses its exact
-linearization there (lib/broad/LINEARIZATION.md).
+linearization there (lib/range/LINEARIZATION.md).
 """
 from fractions import Fraction
 import argparse

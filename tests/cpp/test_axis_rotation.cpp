@@ -1,4 +1,4 @@
-// broad::detect_axis_rotation (lib/broad/axis_rotation.h): which relative motions are
+// range::detect_axis_rotation (lib/range/axis_rotation.h): which relative motions are
 // detected as a rotation about a fixed axis, and, when one is, that its parametrization
 // reproduces the exact positions: for body points p and rational times t,
 //   c + Rn(E(t)) (M0 p + v0) / W(E(t)),   E(t) = (alpha0 + alpha1 t, t a),
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "arith/convert.h"
-#include "broad/axis_rotation.h"
+#include "range/axis_rotation.h"
 #include "motion/standard_motions.h"
 
 using namespace pccd;
@@ -36,10 +36,10 @@ static const std::vector<motion::Point3_q> kPts = {
     {Rational(0), Rational(0), Rational(0)}, {Rational(1), Rational(0), Rational(0)},
     {Rational(0), Rational(1), Rational(0)}, {Rational(3, 7), Rational(-2, 3), Rational(5, 4)}};
 
-static broad::Moving_body body(const Rigid_motion &m) {
+static narrow::Moving_body body(const Rigid_motion &m) {
   auto mesh = std::make_shared<const motion::Mesh_body>(
       kPts, std::vector<motion::Triangle>{{0, 1, 2}, {1, 2, 3}});
-  return broad::prepare_body(broad::make_body_data(mesh, nullptr), m);
+  return narrow::prepare_body(narrow::make_body_data(mesh, nullptr), m);
 }
 
 // The exact relative position of query point p at t: R_S^T (x_Q - o_S), o_S = x_S(0).
@@ -61,7 +61,7 @@ static Vec3_q relative(const Rigid_motion &S, const Rigid_motion &Q, const motio
 
 static void check_detected(const char *name, const Rigid_motion &S, const Rigid_motion &Q,
                            const Vec3_q *axis, const Vec3_q *point_on_axis) {
-  const auto r = broad::detect_axis_rotation(body(S), body(Q));
+  const auto r = range::detect_axis_rotation(body(S), body(Q));
   expect(r.has_value(), name);
   if (!r) return;
   if (axis) {
@@ -98,7 +98,7 @@ static void check_detected(const char *name, const Rigid_motion &S, const Rigid_
 }
 
 static void check_not(const char *name, const Rigid_motion &S, const Rigid_motion &Q) {
-  expect(!broad::detect_axis_rotation(body(S), body(Q)).has_value(), name);
+  expect(!range::detect_axis_rotation(body(S), body(Q)).has_value(), name);
 }
 
 int main() {

@@ -1,8 +1,8 @@
-// broad::upper_bound / lower_bound (lib/broad/halfspaces.h: plain doubles plus a derived
+// range::upper_bound / lower_bound (lib/range/halfspaces.h: plain doubles plus a derived
 // error bound) against the exact extremes of a . x + a0 over interval coefficients and
 // an interval box, computed in GMP rationals. Near-cancelling sums, wide magnitude
 // ranges and all four rounding modes. Also checks the bound is not vacuous (tight to
-// about 1e-12 relative on well-conditioned sums). Then broad::Quadratic clauses (the
+// about 1e-12 relative on well-conditioned sums). Then range::Quadratic clauses (the
 // exact rotation linearization's root conditions) against the exact answer computed
 // independently: the extremes of the quadratic on [0, 1] (ends and vertex) in GMP.
 // Prints "N passed, N failed".
@@ -13,10 +13,10 @@
 #include <cstdio>
 #include <random>
 
-#include "broad/halfspaces.h"
+#include "range/halfspaces.h"
 
 using pccd::arith::Interval;
-using pccd::broad::Halfspace;
+using pccd::range::Halfspace;
 
 constexpr int D = 12;
 static long passed = 0, failed = 0;
@@ -64,7 +64,7 @@ static void exact_range(const mpq_class *b, mpq_class &mn, mpq_class &mx) {
 // whenever the exact condition holds at the point (at some sampled point of a box),
 // "certainly" only when it holds at every sampled point.
 static void check_quadratics(std::mt19937_64 &rng) {
-  using pccd::broad::Quadratic;
+  using pccd::range::Quadratic;
   std::uniform_int_distribution<int> ri(-16, 80), ki(-8, 8), ei(-3, 3), coin(0, 3);
   std::uniform_real_distribution<double> u(-1, 1);
   for (int i = 0; i < 20000; ++i) {
@@ -99,8 +99,8 @@ static void check_quadratics(std::mt19937_64 &rng) {
       any = any || holds;
       all = all && holds;
     }
-    const bool may = pccd::broad::quadratic_test(qc, &x, false);
-    const bool certain = pccd::broad::quadratic_test(qc, &x, true);
+    const bool may = pccd::range::quadratic_test(qc, &x, false);
+    const bool certain = pccd::range::quadratic_test(qc, &x, true);
     expect(!any || may, "Quadratic: the condition holds but the clause says it cannot", i);
     expect(!certain || all, "Quadratic: 'certainly' where the condition fails", i);
     if (!box) expect(may == any, "Quadratic: not exact on a point", i);
@@ -129,7 +129,7 @@ int main() {
     const double a0 = -mid.get_d();
     h.a0 = Interval(a0);
     const mpq_class hi = extreme(h, x, true), lo = extreme(h, x, false);
-    const double ub = pccd::broad::upper_bound(h, x), lb = pccd::broad::lower_bound(h, x);
+    const double ub = pccd::range::upper_bound(h, x), lb = pccd::range::lower_bound(h, x);
     expect(q(ub) >= hi, "upper_bound below the exact maximum", i);
     expect(q(lb) <= lo, "lower_bound above the exact minimum", i);
     if (scale == 0 && i % 5) {  // well-conditioned boxes: the margin is small

@@ -1,0 +1,152 @@
+#include "boxes/boxes.h"
+
+// CGAL's headers otherwise add a load-time test of the FPU rounding modes (for its
+// Interval_nt, unused here): it switches the rounding mode during library loading and
+// aborts where rounding modes are not emulated (valgrind). polyccd never relies on the
+// rounding mode (see arith/interval.h and the error bound in boxes.h).
+#define CGAL_DISABLE_ROUNDING_MATH_CHECK
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <cmath>
+#include <limits>
+
+#include "poly/bernstein.h"
+
+namespace pccd::boxes {
+
+namespace {
+
+constexpr double kSlack = 1.0 / (1ull << 48);  // > 20 u, see boxes.h
+constexpr double kTiny = 1e-300;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Interval range_on(const poly::Poly<Interval> &p, double a, double b) {
+  if (p.c.empty()) return Interval(0.0);
+  return poly::range_on_unit(poly::reparametrize(p, Interval(a), Interval(b)));
+}
+
+// Midpoint and a radius covering [x.lo, x.hi] (with the slack of boxes.h).
+void mid_rad(const Interval &x, double &m, double &r) {
+  m = 0.5 * x.lo + 0.5 * x.hi;
+  r = (std::fmax(x.hi - m, m - x.lo) + std::fabs(m) * kSlack) * (1 + kSlack) + kTiny;
+}
+
+}  // namespace
+
+Box grow(const Box &a, double r) {
+  Box g;
+  for (int i = 0; i < 3; ++i) {
+    const double s = (std::fabs(a.lo[i]) + std::fabs(a.hi[i]) + r) * kSlack + kTiny;
+    g.lo[i] = a.lo[i] - r - s;
+    g.hi[i] = a.hi[i] + r + s;
+  }
+  return g;
+}
+
+Box empty_box() {
+  Box e;
+  for (int i = 0; i < 3; ++i) {
+    e.lo[i] = kInf;
+    e.hi[i] = -kInf;
+  }
+  return e;
+}
+
+Pose_piece enclose_pose(const Moving_body &b, double a, double t1) {
+  Pose_piece p;
+  const Interval W = range_on(b.W_i, a, t1);
+  const bool w_pos = W.lo > 0;
+  double max_rr = 0, max_or = 0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      Interval r(-1.0, 1.0);  // rotation entries lie in [-1, 1]
+      if (w_pos) {
+        Interval q = range_on(b.Rn_i[i][j], a, t1) / W;
+        r = Interval(std::fmax(q.lo, -1.0), std::fmin(q.hi, 1.0));
+      }
+      mid_rad(r, p.Rm[i][j], p.Rr[i][j]);
+      max_rr = std::fmax(max_rr, p.Rr[i][j]);
+    }
+    if (w_pos) {
+      mid_rad(range_on(b.O_i[i], a, t1) / W, p.om[i], p.orad[i]);
+      p.finite = p.finite && std::isfinite(p.om[i]) && std::isfinite(p.orad[i]);
+      max_or = std::fmax(max_or, p.orad[i]);
+    } else {
+      p.finite = false;  // om, orad stay 0 and unused (spread and boxes are unbounded)
+    }
+  }
+  p.spread = p.finite ? 3 * max_rr * b.data->reach + max_or : kInf;
+  return p;
+}
+
+Box frame_box(const Pose_piece &pose, const std::array<double, 3> &c, const std::array<double, 3> &h) {
+  Box out;
+  if (!pose.finite) {
+    for (int i = 0; i < 3; ++i) {
+      out.lo[i] = -kInf;
+      out.hi[i] = kInf;
+    }
+    return out;
+  }
+  for (int i = 0; i < 3; ++i) {
+    double m = pose.om[i], r = pose.orad[i], mag = std::fabs(pose.om[i]) + pose.orad[i];
+    for (int j = 0; j < 3; ++j) {
+      const double ac = std::fabs(c[j]);
+      m += pose.Rm[i][j] * c[j];
+      const double t = pose.Rr[i][j] * (ac + h[j]) + std::fabs(pose.Rm[i][j]) * h[j];
+      r += t;
+      mag += std::fabs(pose.Rm[i][j]) * ac + t;
+    }
+    const double s = (mag + std::fabs(m) + r) * kSlack + kTiny;
+    out.lo[i] = m - r - s;
+    out.hi[i] = m + r + s;
+  }
+  return out;
+}
+
+Box point_box(const Pose_piece &pose, const std::array<double, 3> &p, double e) {
+  return frame_box(pose, p, {e, e, e});
+}
+
+Box feature_box(const Moving_body &b, int s, const Prim_pair &p, const Pose_piece &pose) {
+  const uint32_t k = s == 0 ? p.a : p.b;
+  const auto &pts = b.data->pts;
+  const double e = b.data->pt_err;
+  const bool vertex = (s == 0 && p.type == narrow::VF) || (s == 1 && p.type == narrow::FV);
+  if (vertex) return point_box(pose, pts[k], e);
+  if (p.type == narrow::EE) {
+    const auto &ed = b.mesh->edges()[k];
+    return hull(point_box(pose, pts[ed[0]], e), point_box(pose, pts[ed[1]], e));
+  }
+  if (!b.is_mesh()) return grow(point_box(pose, pts[k], e), b.data->radius_up[k]);
+  const auto &t = b.mesh->triangles()[k];
+  Box h = point_box(pose, pts[t[0]], e);
+  for (int v = 1; v < 3; ++v) h = hull(h, point_box(pose, pts[t[v]], e));
+  return h;
+}
+
+void box_pairs(const std::vector<Box> &a, const std::vector<Box> &b,
+               std::vector<std::pair<uint32_t, uint32_t>> &out) {
+  using CBox = CGAL::Box_intersection_d::Box_with_info_d<double, 3, uint32_t,
+                                                         CGAL::Box_intersection_d::ID_EXPLICIT>;
+  if (a.empty() || b.empty()) return;
+  auto convert = [](const std::vector<Box> &in) {
+    std::vector<CBox> v;
+    v.reserve(in.size());
+    for (size_t i = 0; i < in.size(); ++i) {
+      double lo[3] = {in[i].lo[0], in[i].lo[1], in[i].lo[2]};
+      double hi[3] = {in[i].hi[0], in[i].hi[1], in[i].hi[2]};
+      v.emplace_back(lo, hi, static_cast<uint32_t>(i));
+    }
+    return v;
+  };
+  std::vector<CBox> ca = convert(a), cb = convert(b);
+  // Closed boxes: touching boxes are reported (CGAL::Box_intersection_d::CLOSED).
+  CGAL::box_intersection_d(ca.begin(), ca.end(), cb.begin(), cb.end(),
+                           [&](const CBox &x, const CBox &y) { out.emplace_back(x.info(), y.info()); },
+                           std::ptrdiff_t(10), CGAL::Box_intersection_d::CLOSED,
+                           CGAL::Box_intersection_d::BIPARTITE);
+}
+
+}  // namespace pccd::boxes

@@ -1,0 +1,74 @@
+// Conservative space-time boxes for the broad phase.
+//
+// Over a time piece [a, b] the rotation R(t) = Rn(t) / W(t) and the translation
+// o(t) = O(t) / W(t) of a body are enclosed entrywise (Bernstein hulls of the interval
+// coefficient polynomials over [a, b], then certified interval division; rotation
+// entries are also clipped to [-1, 1]). A body point p then stays, for every t in
+// [a, b], inside the box  R(I) p + o(I), evaluated in midpoint-radius form.
+//
+// The midpoint-radius evaluation runs in plain double arithmetic and is made safe by a
+// derived error bound (no rounding mode is assumed): each box coordinate is a sum of at
+// most 8 products; in any IEEE rounding mode each operation errs by at most 2u = 2^-52
+// relative, so the accumulated error is below 20u * M, where M is the sum of the
+// magnitudes of all terms, plus 2^-1074 per operation for underflow. Every box is
+// widened by M * 2^-48 (> 20u M) + 1e-300, which covers both.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "narrow/pair_ctx.h"
+
+namespace pccd::boxes {
+
+using arith::Interval;
+using narrow::Moving_body;
+using narrow::Prim_pair;
+
+struct Box {
+  double lo[3], hi[3];
+};
+
+inline bool boxes_meet(const Box &a, const Box &b) {  // closed boxes
+  for (int i = 0; i < 3; ++i)
+    if (a.hi[i] < b.lo[i] || b.hi[i] < a.lo[i]) return false;
+  return true;
+}
+inline Box hull(const Box &a, const Box &b) {
+  Box h;
+  for (int i = 0; i < 3; ++i) {
+    h.lo[i] = a.lo[i] < b.lo[i] ? a.lo[i] : b.lo[i];
+    h.hi[i] = a.hi[i] > b.hi[i] ? a.hi[i] : b.hi[i];
+  }
+  return h;
+}
+Box grow(const Box &a, double r);  // r >= 0, outward-safe
+Box empty_box();                    // hull identity
+
+// The motion of one body over a time piece, in midpoint-radius form.
+struct Pose_piece {
+  double Rm[3][3], Rr[3][3];
+  double om[3] = {0, 0, 0}, orad[3] = {0, 0, 0};
+  bool finite = true;  // false when W(I) was not certainly positive: boxes are unbounded
+  // Half-width the motion adds to the box of a point of the body (bounded by `reach`).
+  double spread = 0;
+};
+
+Pose_piece enclose_pose(const Moving_body &b, double a, double t1);
+
+// The box of the body-frame point p (doubles) with coordinate uncertainty e (the same
+// for each coordinate) over the piece.
+Box point_box(const Pose_piece &pose, const std::array<double, 3> &p, double e);
+// The box of the body-frame box (centre c, half sizes h) over the piece.
+Box frame_box(const Pose_piece &pose, const std::array<double, 3> &c, const std::array<double, 3> &h);
+
+// The box of side s's primitive of the feature pair p over the piece (s = 0: p.a of
+// side A, a vertex for VF, an edge for EE, a triangle or a ball otherwise; s = 1: p.b).
+Box feature_box(const Moving_body &b, int s, const Prim_pair &p, const Pose_piece &pose);
+
+// Every (i, j) with boxes a[i] and b[j] meeting (closed), by CGAL box_intersection_d.
+// Appended to out in no particular order.
+void box_pairs(const std::vector<Box> &a, const std::vector<Box> &b,
+               std::vector<std::pair<uint32_t, uint32_t>> &out);
+
+}  // namespace pccd::boxes

@@ -1,0 +1,190 @@
+#include "narrow/pair_ctx.h"
+
+#include <algorithm>
+#include <type_traits>
+
+#include "pred/static_contact.h"
+
+namespace pccd::narrow {
+
+using motion::Point_traj;
+using poly::Poly;
+
+Pair_ctx::Pair_ctx(const Moving_body &a, const Moving_body &b) : A_(a), B_(b) {}
+
+// The common-denominator trajectories, on the first solve (a pair the broad phase
+// finds no candidate for never needs them; call_once: solves run in parallel).
+void Pair_ctx::init() const {
+  std::call_once(once_, [this] { compute(); });
+}
+
+void Pair_ctx::compute() const {
+  const Moving_body *sides[2] = {&A_, &B_};
+  for (int s = 0; s < 2; ++s) {
+    const Moving_body &me = *sides[s], &other = *sides[1 - s];
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        M_[s][i][j] = me.Rn[i][j] * other.W;
+        Mi_[s][i][j] = poly::convert<Interval>(M_[s][i][j]);
+      }
+      N_[s][i] = me.O[i] * other.W;
+      Ni_[s][i] = poly::convert<Interval>(N_[s][i]);
+    }
+  }
+  D_ = A_.W * B_.W;
+  Di_ = poly::convert<Interval>(D_);
+}
+
+Point_traj<Rational> Pair_ctx::traj_q(int s, uint32_t k) const {
+  init();
+  const motion::Point3_q &p = side(s).point(k);
+  Point_traj<Rational> x;
+  for (int i = 0; i < 3; ++i) {
+    Poly_q v = N_[s][i];
+    for (int j = 0; j < 3; ++j)
+      if (sgn(p[j]) != 0) v = v + M_[s][i][j] * Poly_q::constant(p[j]);
+    x[i] = std::move(v);
+  }
+  return x;
+}
+
+Point_traj<Interval> Pair_ctx::traj_i(int s, uint32_t k) const {
+  init();
+  const motion::Point3_q &p = side(s).point(k);
+  Interval q[3];
+  for (int j = 0; j < 3; ++j) q[j] = arith::enclose(p[j]);
+  Point_traj<Interval> x;
+  for (int i = 0; i < 3; ++i) {
+    Poly<Interval> v = Ni_[s][i];
+    for (int j = 0; j < 3; ++j)
+      if (!q[j].is_point_zero()) v = v + Mi_[s][i][j] * Poly<Interval>::constant(q[j]);
+    x[i] = std::move(v);
+  }
+  return x;
+}
+
+std::array<uint32_t, 3> Pair_ctx::triangle(int s, uint32_t t) const {
+  return side(s).mesh->triangles()[t];
+}
+
+template <class NT>
+pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p) const {
+  auto traj = [&](int s, uint32_t k) {
+    if constexpr (std::is_same_v<NT, Rational>) return traj_q(s, k);
+    else return traj_i(s, k);
+  };
+  auto convert_radius = [](const Rational &r) {
+    if constexpr (std::is_same_v<NT, Rational>) return r;
+    else return arith::enclose(r);
+  };
+  pred::Query_data<NT> q;
+  switch (p.type) {
+    case VF:
+    case FV: {
+      const int vs = p.type == VF ? 0 : 1;
+      const uint32_t v = p.type == VF ? p.a : p.b, t = p.type == VF ? p.b : p.a;
+      q.kind = pred::VERTEX_FACE;
+      q.p.push_back(traj(vs, v));
+      for (uint32_t k : triangle(1 - vs, t)) q.p.push_back(traj(1 - vs, k));
+      break;
+    }
+    case EE: {
+      q.kind = pred::EDGE_EDGE;
+      for (uint32_t k : A_.mesh->edges()[p.a]) q.p.push_back(traj(0, k));
+      for (uint32_t k : B_.mesh->edges()[p.b]) q.p.push_back(traj(1, k));
+      break;
+    }
+    case SS: {
+      q.kind = pred::SPHERE_SPHERE;
+      q.p = {traj(0, p.a), traj(1, p.b)};
+      q.radius[0] = convert_radius(A_.spheres->radii()[p.a]);
+      q.radius[1] = convert_radius(B_.spheres->radii()[p.b]);
+      break;
+    }
+    case ST:
+    case TS: {
+      const int bs = p.type == ST ? 0 : 1;
+      const uint32_t c = p.type == ST ? p.a : p.b, t = p.type == ST ? p.b : p.a;
+      q.kind = pred::SPHERE_TRIANGLE;
+      q.p.push_back(traj(bs, c));
+      for (uint32_t k : triangle(1 - bs, t)) q.p.push_back(traj(1 - bs, k));
+      q.radius[0] = convert_radius(side(bs).spheres->radii()[c]);
+      q.radius[1] = convert_radius(Rational(0));
+      break;
+    }
+    default:
+      throw arith::Internal_error("Pair_ctx::query: not a time-dependent feature pair");
+  }
+  if (p.type == SS || p.type == ST || p.type == TS) {
+    init();
+    if constexpr (std::is_same_v<NT, Rational>) q.scale = D_;
+    else q.scale = Di_;
+  }
+  return q;
+}
+
+pred::Contact_result Pair_ctx::solve(const Prim_pair &p, const pred::Solve_options &opt) const {
+  return pred::solve(query<Interval>(p), [&] { return query<Rational>(p); }, opt);
+}
+
+bool Pair_ctx::triangles_meet_at_zero(uint32_t a, uint32_t b) const {
+  // Positions at t = 0 times D(0) > 0: the constant coefficients of the trajectories.
+  auto corners = [&](auto tag, int s, uint32_t t) {
+    using NT = decltype(tag);
+    std::array<pred::Vec3<NT>, 3> x;
+    const auto tri = triangle(s, t);
+    for (int v = 0; v < 3; ++v) {
+      Point_traj<NT> tr;
+      if constexpr (std::is_same_v<NT, Rational>) tr = traj_q(s, tri[v]);
+      else tr = traj_i(s, tri[v]);
+      for (int i = 0; i < 3; ++i) x[v][i] = tr[i].c.empty() ? arith::from_int<NT>(0) : tr[i].c[0];
+    }
+    return x;
+  };
+  const arith::Nearest_scope nearest;
+  try {
+    return pred::triangles_meet(corners(Interval(), 0, a), corners(Interval(), 1, b));
+  } catch (const arith::Uncertain &) {
+    return pred::triangles_meet(corners(Rational(), 0, a), corners(Rational(), 1, b));
+  }
+}
+
+std::vector<std::pair<Feature_ref, Feature_ref>> Pair_ctx::contacts(
+    const Prim_pair &p, const pred::Contact_result &r) const {
+  std::vector<std::pair<Feature_ref, Feature_ref>> out;
+  auto add = [&](Feature_ref a, Feature_ref b) { out.push_back({a, b}); };
+  switch (p.type) {
+    case VF: add({F_VERTEX, p.a}, {F_TRIANGLE, p.b}); break;
+    case FV: add({F_TRIANGLE, p.a}, {F_VERTEX, p.b}); break;
+    case EE: add({F_EDGE, p.a}, {F_EDGE, p.b}); break;
+    case SS: add({F_SPHERE, p.a}, {F_SPHERE, p.b}); break;
+    case TT: add({F_TRIANGLE, p.a}, {F_TRIANGLE, p.b}); break;
+    case ST:
+    case TS: {
+      const int ts = p.type == ST ? 1 : 0;  // the mesh side
+      const uint32_t ball = p.type == ST ? p.a : p.b, t = p.type == ST ? p.b : p.a;
+      const auto tri = triangle(ts, t);
+      for (const pred::Feature &f : r.features) {
+        Feature_ref m;
+        switch (f.kind) {
+          case pred::SPHERE_EDGE: {
+            const int64_t e = side(ts).data->tri_edges[t][f.points[1] - 1];
+            if (e < 0) throw arith::Internal_error("ball contact on a degenerate side");
+            m = {F_EDGE, static_cast<uint32_t>(e)};
+            break;
+          }
+          case pred::SPHERE_VERTEX: m = {F_VERTEX, tri[f.points[1] - 1]}; break;
+          default: m = {F_TRIANGLE, t}; break;  // SPHERE_FACE, SPHERE_TRIANGLE (t = 0)
+        }
+        if (ts == 1) add({F_SPHERE, ball}, m);
+        else add(m, {F_SPHERE, ball});
+      }
+      break;
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace pccd::narrow

@@ -1,0 +1,83 @@
+// The exact narrow phase of two moving bodies: one feature pair ("primitive pair") at a
+// time, through the staged primitive solver (pred/solve.h).
+//
+// Both bodies' motions are rational, x(t) = X(t) / W(t) with W > 0 on [0, 1]. The pair
+// works with the common denominator D = W_A W_B: side A's point trajectories are
+// X_A W_B, side B's are X_B W_A, each D times the true position, which every contact
+// condition tolerates (pred/query_systems.h: homogeneous in point differences, radii
+// times D). Feature pairs (why they cover every first contact: see pair_search.h):
+//   VF  surface vertex of A / closed triangle of B     FV  triangle of A / vertex of B
+//   EE  closed edge of A / closed edge of B            TT  triangles of A and B at t = 0
+//   SS  ball of A / ball of B                          ST  ball of A / closed triangle of B
+//   TS  closed triangle of A / ball of B
+#pragma once
+#include <array>
+#include <cstdint>
+#include <mutex>
+#include <vector>
+
+#include "narrow/moving_body.h"
+#include "pred/solve.h"
+
+namespace pccd::narrow {
+
+enum Prim_type : uint8_t { VF = 0, FV = 1, EE = 2, SS = 3, ST = 4, TS = 5, TT = 6 };
+
+// a and b index side A's and side B's elements of the types the Prim_type names
+// (vertex, edge, triangle or ball).
+struct Prim_pair {
+  uint8_t type = 0;
+  uint32_t a = 0, b = 0;
+  uint64_t key() const { return (uint64_t(type) << 58) | (uint64_t(a) << 29) | uint64_t(b); }
+  bool operator<(const Prim_pair &o) const { return key() < o.key(); }
+  bool operator==(const Prim_pair &o) const { return key() == o.key(); }
+};
+
+// Feature of one body in a reported contact (values of pccd_feature in polyccd.h).
+enum Feature_type : uint8_t { F_VERTEX = 0, F_EDGE = 1, F_TRIANGLE = 2, F_SPHERE = 3 };
+struct Feature_ref {
+  uint8_t type = 0;
+  uint32_t index = 0;
+  bool operator<(const Feature_ref &o) const {
+    return type != o.type ? type < o.type : index < o.index;
+  }
+  bool operator==(const Feature_ref &o) const { return type == o.type && index == o.index; }
+};
+
+class Pair_ctx {
+ public:
+  Pair_ctx(const Moving_body &a, const Moving_body &b);
+  const Moving_body &side(int s) const { return s == 0 ? A_ : B_; }
+
+  // The scaled trajectory of point k of side s (exact, and coefficient enclosures).
+  motion::Point_traj<Rational> traj_q(int s, uint32_t k) const;
+  motion::Point_traj<Interval> traj_i(int s, uint32_t k) const;
+
+  // Solves one primitive pair (not TT).
+  pred::Contact_result solve(const Prim_pair &p, const pred::Solve_options &opt) const;
+  // TT: the closed triangles a (of A) and b (of B) share a point at t = 0 (exact).
+  bool triangles_meet_at_zero(uint32_t a, uint32_t b) const;
+
+  // The feature pairs a result reports, as features of the two bodies (deduplicated).
+  std::vector<std::pair<Feature_ref, Feature_ref>> contacts(const Prim_pair &p,
+                                                           const pred::Contact_result &r) const;
+
+ private:
+  const Moving_body &A_, &B_;
+  // Set once by init() (lazily; see narrow.cpp).
+  mutable std::once_flag once_;
+  mutable std::array<motion::Mat3_poly, 2> M_;  // Rn_s W_other
+  mutable std::array<motion::Vec3p<Rational>, 2> N_;  // O_s W_other
+  mutable std::array<std::array<std::array<poly::Poly<Interval>, 3>, 3>, 2> Mi_;
+  mutable std::array<motion::Vec3p<Interval>, 2> Ni_;
+  mutable Poly_q D_;
+  mutable poly::Poly<Interval> Di_;
+
+  void init() const;
+  void compute() const;
+
+  template <class NT> pred::Query_data<NT> query(const Prim_pair &p) const;
+  std::array<uint32_t, 3> triangle(int s, uint32_t t) const;
+};
+
+}  // namespace pccd::narrow

@@ -1,0 +1,27 @@
+// The broad-phase choice: which candidate source (narrow/candidate_source.h) feeds the
+// driver. Speed only: every broad phase gives the same answers.
+#pragma once
+#include <memory>
+
+#include "narrow/candidate_source.h"
+
+namespace pccd::scene {
+
+// The values of pccd_broad_phase (polyccd.h; checked in lib/api/constants.cpp).
+enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3 };
+
+// The default (automatic), chosen by measurement (README, "Broad phases";
+// tests/bench/bench_online.py and tests/bench/broad_phases.py). online: the pair comes
+// from an on-line index (the stored side's trees exist already and are shared by every
+// query): range; otherwise a scene's body pair, solved once: boxes.
+inline Broad_phase resolve(Broad_phase p, bool online) {
+  if (p != Broad_phase::automatic) return p;
+  return online ? Broad_phase::range : Broad_phase::boxes;
+}
+
+// The source of a resolved phase. stored: the range phase's stored side (-1: the
+// larger).
+std::unique_ptr<narrow::Candidate_source> make_source(Broad_phase p, const narrow::Pair_ctx &ctx,
+                                                      int stored);
+
+}  // namespace pccd::scene

@@ -1,0 +1,164 @@
+#include "scene/pair_search.h"
+
+#include <algorithm>
+#include <array>
+#include <unordered_set>
+
+#include "boxes/box_source.h"
+#include "boxes/boxes.h"
+#include "range/range_source.h"
+
+namespace pccd::scene {
+
+std::unique_ptr<narrow::Candidate_source> make_source(Broad_phase p, const Pair_ctx &ctx, int stored) {
+  switch (p) {
+    case Broad_phase::brute: return narrow::brute_source(ctx);
+    case Broad_phase::range: return range::range_source(ctx, stored);
+    case Broad_phase::boxes: return boxes::box_source(ctx);
+    case Broad_phase::automatic: break;
+  }
+  throw arith::Internal_error("make_source: the broad phase is not resolved");
+}
+
+namespace {
+
+class Driver final : public narrow::Candidate_sink {
+ public:
+  Driver(const Pair_ctx &ctx, const Search_options &opt, Thread_pool &pool, Pair_outcome &out)
+      : ctx_(ctx), opt_(opt), pool_(pool), out_(out) {}
+
+  void run() {
+    std::unique_ptr<narrow::Candidate_source> source = make_source(opt_.phase, ctx_, opt_.stored);
+    if (ctx_.side(0).is_mesh() && ctx_.side(1).is_mesh()) {
+      whole(source->static_candidates(pool_));
+      if (found_any_ && !opt_.all_contacts) return;
+    }
+    source->run(*this, out_.stats, pool_);
+  }
+
+  bool pruned(double a) const override {
+    if (opt_.all_contacts || !have_best_) return false;
+    Rational ra;
+    mpq_set_d(ra.get_mpq_t(), a);
+    return ra > best_hi_;
+  }
+
+  void whole(std::vector<Prim_pair> cand) override { solve_batch(fresh_of(std::move(cand))); }
+
+  // Solves the candidates of [a, b] in the order of the first of kSub equal sub-pieces
+  // on which their two boxes meet (pair_search.h).
+  void piece(double a, double b, std::vector<Prim_pair> cand) override {
+    std::vector<Prim_pair> fresh = fresh_of(std::move(cand));
+    if (fresh.empty()) return;
+    constexpr int kSub = 8;
+    constexpr size_t kBatch = 64;
+    std::vector<std::array<boxes::Pose_piece, 2>> sub(kSub);
+    for (int k = 0; k < kSub; ++k)
+      for (int s = 0; s < 2; ++s)
+        sub[k][s] = boxes::enclose_pose(ctx_.side(s), a + (b - a) * k / kSub,
+                                        k + 1 == kSub ? b : a + (b - a) * (k + 1) / kSub);
+    std::vector<std::pair<double, Prim_pair>> order;
+    for (const Prim_pair &p : fresh)
+      for (int k = 0; k < kSub; ++k)
+        if (boxes::boxes_meet(boxes::feature_box(ctx_.side(0), 0, p, sub[k][0]),
+                              boxes::feature_box(ctx_.side(1), 1, p, sub[k][1]))) {
+          order.push_back({a + (b - a) * k / kSub, p});
+          break;
+        }
+    std::sort(order.begin(), order.end(), [](const auto &x, const auto &y) {
+      return x.first != y.first ? x.first < y.first : x.second < y.second;
+    });
+    size_t size = 4;  // batches of 4, 8, ..., kBatch pairs: the first bound comes early
+    for (size_t start = 0; start < order.size(); start += size, size = std::min(kBatch, 2 * size)) {
+      std::vector<Prim_pair> batch;
+      for (size_t i = start; i < std::min(order.size(), start + size); ++i)
+        if (!pruned(order[i].first)) batch.push_back(order[i].second);
+      if (batch.empty()) break;  // sorted: every later bound is pruned too
+      solve_batch(batch);
+    }
+  }
+
+ private:
+  const Pair_ctx &ctx_;
+  const Search_options &opt_;
+  Thread_pool &pool_;
+  Pair_outcome &out_;
+  std::unordered_set<uint64_t> seen_;
+  bool found_any_ = false, have_best_ = false;
+  Rational best_hi_;
+
+  pred::Solve_options bounded_options() const {
+    pred::Solve_options o = opt_.solve;
+    if (!opt_.all_contacts && have_best_ && opt_.solve.want_time && best_hi_ < 1) o.until = best_hi_;
+    return o;
+  }
+
+  // The pairs of cand not seen before, once each, in key order.
+  std::vector<Prim_pair> fresh_of(std::vector<Prim_pair> cand) const {
+    std::sort(cand.begin(), cand.end());
+    cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
+    std::vector<Prim_pair> fresh;
+    for (const Prim_pair &p : cand)
+      if (!seen_.count(p.key())) fresh.push_back(p);
+    return fresh;
+  }
+
+  // Solves the pairs of `fresh` (not seen before) in parallel; appends the touching ones
+  // in the given order and updates the best upper bound.
+  void solve_batch(const std::vector<Prim_pair> &fresh) {
+    if (fresh.empty()) return;
+    const pred::Solve_options o = bounded_options();
+    std::vector<std::unique_ptr<Solved_pair>> res(fresh.size());
+    pool_.parallel_for(fresh.size(), [&](size_t i) {
+      auto s = std::make_unique<Solved_pair>();
+      s->prim = fresh[i];
+      if (fresh[i].type == narrow::TT) {
+        s->result.collides = ctx_.triangles_meet_at_zero(fresh[i].a, fresh[i].b);
+        if (s->result.collides) {
+          s->result.exact = true;
+          s->result.lo = s->result.hi = 0;
+        }
+      } else {
+        s->result = ctx_.solve(fresh[i], o);
+      }
+      res[i] = std::move(s);
+    });
+    for (auto &s : res) {
+      seen_.insert(s->prim.key());
+      if (s->prim.type == narrow::TT) ++out_.stats.static_tests;
+      else {
+        ++out_.stats.solved;
+        if (s->result.stage >= 0 && s->result.stage < 5) ++out_.stats.by_stage[s->result.stage];
+      }
+      if (s->result.collides) {
+        found_any_ = true;
+        const Rational hi = opt_.solve.want_time ? s->result.hi : Rational(-1);
+        if (!have_best_ || hi < best_hi_) best_hi_ = hi;
+        have_best_ = true;
+      }
+      if (s->result.collides) out_.solved.push_back(std::move(s));
+    }
+  }
+};
+
+}  // namespace
+
+Pair_outcome search_pair(const Pair_ctx &ctx, const Search_options &opt, Thread_pool &pool) {
+  Pair_outcome out;
+  Driver(ctx, opt, pool, out).run();
+  return out;
+}
+
+std::unique_ptr<Solved_pair> refine_pair(const Pair_ctx &ctx, const Solved_pair &s,
+                                         const pred::Solve_options &opt, int round) {
+  pred::Solve_options finer = opt;
+  mpz_class two_pow = 1;
+  two_pow <<= 20 * (round + 1);
+  finer.tol = opt.tol / Rational(two_pow);
+  auto r = std::make_unique<Solved_pair>();
+  r->prim = s.prim;
+  r->result = ctx.solve(s.prim, finer);
+  return r;
+}
+
+}  // namespace pccd::scene

@@ -1,0 +1,56 @@
+// The driver of one body pair: all feature pairs of two moving bodies that touch, or the
+// first ones. It asks a candidate source (broad_phase.h) for feature pairs, solves each
+// distinct pair once with the exact narrow phase (narrow/pair_ctx.h), and prunes by
+// time:
+//  - Meshes: the static test at t = 0 first (TT pairs of the source's static
+//    candidates); a contact there is the first one.
+//  - The source's candidates of a piece [a, b] get the start of the first of 8 equal
+//    sub-pieces on which the two features' boxes meet (a lower bound of their contacts
+//    in [a, b]; none: no contact in [a, b], so the pair is left for a later piece). They
+//    are solved in order of that bound, in batches of 4, 8, ..., 64 pairs; a batch
+//    starts only with pairs whose bound is <= the best upper bound so far, and each pair
+//    is asked only for contacts up to that bound (pred::Solve_options::until).
+//  - A piece that starts after the best upper bound found so far is pruned: a pair
+//    first met there can only touch later than that bound.
+// The set of pairs solved, and so the answer, does not depend on the number of threads
+// (the pairs of one batch are solved in parallel, results are merged in a fixed order).
+#pragma once
+#include <memory>
+#include <vector>
+
+#include "scene/broad_phase.h"
+
+namespace pccd::scene {
+
+using arith::Rational;
+using narrow::Feature_ref;
+using narrow::Moving_body;
+using narrow::Pair_ctx;
+using narrow::Prim_pair;
+using narrow::Search_stats;
+using util::Thread_pool;
+
+struct Search_options {
+  pred::Solve_options solve;
+  bool all_contacts = false;  // solve every candidate (no time pruning)
+  Broad_phase phase = Broad_phase::boxes;  // resolved (not automatic)
+  int stored = -1;            // range: the side (0, 1) held in the trees; -1: the larger
+};
+
+struct Solved_pair {
+  Prim_pair prim;
+  pred::Contact_result result;
+};
+
+struct Pair_outcome {
+  std::vector<std::unique_ptr<Solved_pair>> solved;  // the solved pairs that touch, in a fixed order
+  Search_stats stats;
+};
+
+Pair_outcome search_pair(const Pair_ctx &ctx, const Search_options &opt, Thread_pool &pool);
+
+// A finer re-solve of a solved pair (for combine.h): tolerance / 2^(20 (round + 1)).
+std::unique_ptr<Solved_pair> refine_pair(const Pair_ctx &ctx, const Solved_pair &s,
+                                         const pred::Solve_options &opt, int round);
+
+}  // namespace pccd::scene

@@ -1,0 +1,139 @@
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <map>
+#include <string>
+
+#include "scene/combine.h"
+
+namespace pccd::scene {
+
+using arith::Rational;
+
+namespace {
+
+bool contact_less(const Contact_report &x, const Contact_report &y) {
+  if (x.lo != y.lo) return x.lo < y.lo;
+  if (!(x.a == y.a)) return x.a < y.a;
+  return x.b < y.b;
+}
+
+// One body pair's outcome.
+struct Pair_work {
+  size_t i, j;
+  std::unique_ptr<Pair_ctx> ctx;
+  Pair_outcome out;
+};
+
+// First contact over a set of solved pairs (possibly of several body pairs).
+First_contact combine(std::vector<std::pair<Pair_work *, size_t>> items, const Scene_options &opt,
+                      Search_stats &stats) {
+  std::vector<const pred::Contact_result *> res;
+  for (auto &it : items) res.push_back(&it.first->out.solved[it.second]->result);
+  std::vector<int> rounds(items.size(), 0);
+  return first_contact(res, [&](size_t k, const Rational &E) {
+    // The finer result replaces the old one, so a later combine (the scene's, after the
+    // pair's) starts from it.
+    Pair_work *w = items[k].first;
+    std::unique_ptr<Solved_pair> &cur = w->out.solved[items[k].second];
+    // First-contact mode only needs contacts up to E (a pair found beyond drops out of
+    // this combine); all_contacts keeps each pair's own first time.
+    pred::Solve_options o = opt.solve;
+    if (!opt.all_contacts) o.until = E;
+    cur = refine_pair(*w->ctx, *cur, o, rounds[k]++);
+    ++stats.refined;
+    return &cur->result;
+  });
+}
+
+}  // namespace
+
+Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt) {
+  if (bodies.size() < 2) throw arith::Input_error("bodies: a scene needs at least 2 bodies");
+  std::vector<Moving_body> mb;
+  mb.reserve(bodies.size());
+  for (size_t k = 0; k < bodies.size(); ++k) {
+    try {
+      mb.push_back(prepare_body(bodies[k].body, bodies[k].motion));
+    } catch (const arith::Input_error &e) {
+      throw arith::Input_error("bodies[" + std::to_string(k) + "].motion: " + e.what());
+    }
+  }
+  std::vector<std::pair<size_t, size_t>> pairs;
+  for (size_t i = 0; i < mb.size(); ++i)
+    for (size_t j = i + 1; j < mb.size(); ++j) pairs.push_back({i, j});
+  std::vector<const Moving_body *> ptr;
+  for (const Moving_body &b : mb) ptr.push_back(&b);
+  return solve_prepared(ptr, pairs, opt, -1);
+}
+
+Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
+                            const std::vector<std::pair<size_t, size_t>> &pairs,
+                            const Scene_options &opt, int stored) {
+  Thread_pool pool(std::max(1u, opt.threads));
+  Search_options so;
+  so.solve = opt.solve;
+  so.all_contacts = opt.all_contacts;
+  so.phase = resolve(opt.broad_phase, stored >= 0);
+  so.stored = stored;
+
+  std::vector<std::unique_ptr<Pair_work>> work;
+  Scene_report rep;
+  for (const auto &ij : pairs) {
+    auto w = std::make_unique<Pair_work>();
+    w->i = ij.first;
+    w->j = ij.second;
+    w->ctx = std::make_unique<Pair_ctx>(*mb[w->i], *mb[w->j]);
+    w->out = search_pair(*w->ctx, so, pool);
+    rep.stats.add(w->out.stats);
+    work.push_back(std::move(w));
+  }
+
+  std::vector<std::pair<Pair_work *, size_t>> everything;
+  for (auto &w : work) {
+    if (w->out.solved.empty()) continue;
+    std::vector<std::pair<Pair_work *, size_t>> items;
+    for (size_t k = 0; k < w->out.solved.size(); ++k) items.push_back({w.get(), k});
+    everything.insert(everything.end(), items.begin(), items.end());
+    First_contact f = combine(items, opt, rep.stats);
+    Pair_report pr;
+    pr.i = w->i;
+    pr.j = w->j;
+    pr.lo = f.lo;
+    pr.hi = f.hi;
+    pr.exact = f.exact;
+    // Contacts: the first ones, or all (each feature pair at its own first time).
+    std::vector<size_t> which = f.which;
+    if (opt.all_contacts) {
+      which.clear();
+      for (size_t k = 0; k < items.size(); ++k) which.push_back(k);
+    }
+    std::map<std::pair<Feature_ref, Feature_ref>, Contact_report> by_feature;
+    for (size_t k : which) {
+      const Solved_pair &s = *w->out.solved[items[k].second];
+      for (const auto &fp : w->ctx->contacts(s.prim, s.result)) {
+        Contact_report c{fp.first, fp.second, s.result.lo, s.result.hi, s.result.exact};
+        auto it = by_feature.find(fp);
+        if (it == by_feature.end() || contact_less(c, it->second)) by_feature[fp] = c;
+      }
+    }
+    for (auto &kv : by_feature) pr.contacts.push_back(kv.second);
+    std::sort(pr.contacts.begin(), pr.contacts.end(), contact_less);
+    rep.pairs.push_back(std::move(pr));
+  }
+  if (rep.pairs.empty()) return rep;
+  rep.collides = true;
+  // The scene's first contact: over all pairs' solved feature pairs at once.
+  First_contact f = combine(everything, opt, rep.stats);
+  rep.lo = f.lo;
+  rep.hi = f.hi;
+  rep.exact = f.exact;
+  for (size_t p = 0; p < rep.pairs.size(); ++p) {
+    const Pair_report &pr = rep.pairs[p];
+    const bool first = f.exact ? (pr.exact && pr.lo == f.lo) : (pr.lo <= f.hi);
+    if (first) rep.first_pairs.push_back(p);
+  }
+  return rep;
+}
+
+}  // namespace pccd::scene

@@ -1,0 +1,57 @@
+// Scenes of moving bodies: every body pair in contact, and the scene's first contact.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "scene/pair_search.h"
+
+namespace pccd::scene {
+
+using narrow::Body_data;
+
+struct Scene_body {
+  std::shared_ptr<const Body_data> body;  // make_body_data, once per body
+  motion::Rigid_motion motion;
+};
+
+struct Scene_options {
+  pred::Solve_options solve;
+  bool all_contacts = false;
+  Broad_phase broad_phase = Broad_phase::automatic;
+  unsigned threads = 1;
+};
+
+struct Contact_report {
+  Feature_ref a, b;       // features of body i and body j
+  arith::Rational lo, hi; // this feature pair's first contact time (lo == hi when exact)
+  bool exact = false;
+};
+
+struct Pair_report {
+  size_t i = 0, j = 0;  // i < j
+  arith::Rational lo, hi;
+  bool exact = false;
+  std::vector<Contact_report> contacts;  // sorted by time, then features
+};
+
+struct Scene_report {
+  bool collides = false;
+  arith::Rational lo, hi;
+  bool exact = false;
+  std::vector<Pair_report> pairs;   // the pairs in contact, ascending (i, j)
+  std::vector<size_t> first_pairs;  // indices into pairs: those that may touch first
+  Search_stats stats;
+};
+
+// Input_error naming "bodies[k].motion" when a motion's quaternion vanishes on [0, 1].
+Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt);
+
+// The report of the body pairs (i, j), i < j, of bodies already on their (validated)
+// motions: solve_scene's work after validation, also behind the on-line index
+// (online_index.h). stored: Search_options::stored of every pair (range phase).
+Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
+                            const std::vector<std::pair<size_t, size_t>> &pairs,
+                            const Scene_options &opt, int stored);
+
+}  // namespace pccd::scene

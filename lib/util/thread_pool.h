@@ -1,0 +1,40 @@
+// A fixed set of worker threads for parallel loops whose results are stored by index,
+// so the outcome never depends on the number of threads or on scheduling.
+#pragma once
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace pccd::util {
+
+class Thread_pool {
+ public:
+  explicit Thread_pool(unsigned threads);  // threads >= 1; 1 runs everything inline
+  ~Thread_pool();
+  Thread_pool(const Thread_pool &) = delete;
+  Thread_pool &operator=(const Thread_pool &) = delete;
+
+  // Runs fn(i) for i in [0, n), in parallel; returns when all are done. The first
+  // exception thrown by any fn is rethrown here (the others are dropped).
+  void parallel_for(size_t n, const std::function<void(size_t)> &fn);
+  unsigned size() const { return static_cast<unsigned>(workers_.size()) + 1; }
+
+ private:
+  void work();
+  void run_items();
+
+  std::vector<std::thread> workers_;
+  std::mutex mu_;
+  std::condition_variable start_, done_;
+  const std::function<void(size_t)> *fn_ = nullptr;
+  size_t n_ = 0, next_ = 0, finished_ = 0;
+  unsigned generation_ = 0, busy_ = 0;
+  bool stop_ = false;
+  std::exception_ptr error_;
+};
+
+}  // namespace pccd::util
