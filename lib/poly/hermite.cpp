@@ -67,54 +67,7 @@ int Hermite<Rational>::taq(const Poly<Rational> &g) const {
   std::vector<Integer> mat(static_cast<size_t>(n_) * n_);
   for (int i = 0; i < n_; ++i)
     for (int j = 0; j < n_; ++j) mat[i * n_ + j] = h[i + j];
-  return hankel_signature(leading_minor_signs_integer(mat, n_));
-}
-
-// Fraction-free determinant with row pivoting (Bareiss); exact divisions.
-static Integer integer_determinant(std::vector<Integer> m, size_t n) {
-  Integer prev = 1;
-  int sign = 1;
-  for (size_t k = 0; k < n; ++k) {
-    size_t piv = k;
-    while (piv < n && sgn(m[piv * n + k]) == 0) ++piv;
-    if (piv == n) return 0;
-    if (piv != k) {
-      for (size_t j = 0; j < n; ++j) std::swap(m[k * n + j], m[piv * n + j]);
-      sign = -sign;
-    }
-    for (size_t i = k + 1; i < n; ++i) {
-      for (size_t j = k + 1; j < n; ++j) {
-        Integer t = m[i * n + j] * m[k * n + k] - m[i * n + k] * m[k * n + j];
-        mpz_divexact(m[i * n + j].get_mpz_t(), t.get_mpz_t(), prev.get_mpz_t());
-      }
-    }
-    prev = m[k * n + k];
-  }
-  return sign * m[(n - 1) * n + (n - 1)];
-}
-
-std::vector<int> leading_minor_signs_integer(const std::vector<Integer> &a, size_t n) {
-  std::vector<int> signs(n, 0);
-  std::vector<Integer> m = a;
-  Integer prev = 1;
-  size_t k = 0;
-  for (; k < n; ++k) {
-    signs[k] = sgn(m[k * n + k]);
-    if (signs[k] == 0) break;
-    for (size_t i = k + 1; i < n; ++i)
-      for (size_t j = k + 1; j < n; ++j) {
-        Integer t = m[i * n + j] * m[k * n + k] - m[i * n + k] * m[k * n + j];
-        mpz_divexact(m[i * n + j].get_mpz_t(), t.get_mpz_t(), prev.get_mpz_t());
-      }
-    prev = m[k * n + k];
-  }
-  for (size_t s = k + 1; s < n; ++s) {
-    std::vector<Integer> sub((s + 1) * (s + 1));
-    for (size_t i = 0; i <= s; ++i)
-      for (size_t j = 0; j <= s; ++j) sub[i * (s + 1) + j] = a[i * n + j];
-    signs[s] = sgn(integer_determinant(std::move(sub), s + 1));
-  }
-  return signs;
+  return hankel_signature(leading_minor_signs(mat, n_));
 }
 
 }  // namespace pccd::poly

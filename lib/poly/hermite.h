@@ -17,6 +17,8 @@
 #include <vector>
 
 #include "arith/errors.h"
+#include "arith/interval.h"
+#include "arith/rational.h"
 #include "poly/poly.h"
 
 namespace pccd::poly {
@@ -24,60 +26,84 @@ namespace pccd::poly {
 // Sign vector -> signature by Jacobi's count with the Frobenius rule.
 int hankel_signature(const std::vector<int> &minor_signs /* D_1..D_n */);
 
-// Leading principal minors D_1..D_n of a symmetric matrix (row-major n*n), by
-// fraction-free Bareiss elimination; after a zero pivot the remaining minors are
-// computed one by one with pivoting. Exact for Rational; an enclosure for Interval.
+// Fraction-free (Bareiss) elimination, one template for the three number types:
+// Interval (an enclosure of every minor; Uncertain when a sign or a pivot is not
+// certain), Rational, and Integer (the exact path, hermite.cpp), where every division
+// below is exact (Bareiss: each updated entry is a minor of the original matrix).
+inline arith::Integer exact_quotient(const arith::Integer &a, const arith::Integer &b) {
+  arith::Integer q;
+  mpz_divexact(q.get_mpz_t(), a.get_mpz_t(), b.get_mpz_t());
+  return q;
+}
+inline arith::Rational exact_quotient(const arith::Rational &a, const arith::Rational &b) { return a / b; }
+inline arith::Interval exact_quotient(const arith::Interval &a, const arith::Interval &b) { return a / b; }
+inline int sign_of(const arith::Integer &x) { return sgn(x); }
+inline int sign_of(const arith::Rational &x) { return sgn(x); }
+inline int sign_of(const arith::Interval &x) { return arith::sign(x); }  // Uncertain if unsure
+// A pivot candidate: 1 certainly nonzero, 0 exactly zero, -1 not known (intervals).
+inline int pivot_state(const arith::Integer &x) { return sgn(x) != 0; }
+inline int pivot_state(const arith::Rational &x) { return sgn(x) != 0; }
+inline int pivot_state(const arith::Interval &x) {
+  if (x.lo > 0 || x.hi < 0) return 1;
+  return x.is_point_zero() ? 0 : -1;
+}
+
+// The determinant of the n*n matrix m (row-major), by Bareiss elimination with row
+// pivoting: a pivot must be certainly nonzero; a column whose candidates are all exactly
+// zero gives 0; one with an uncertain candidate and no certain pivot throws Uncertain.
 template <class NT>
-NT determinant(std::vector<NT> m, size_t n) {
-  NT det = arith::from_int<NT>(1);
+NT bareiss_determinant(std::vector<NT> m, size_t n) {
+  NT prev(1);
+  bool negate = false;
   for (size_t k = 0; k < n; ++k) {
     size_t piv = n;
-    bool all_zero = true;
-    for (size_t i = k; i < n; ++i) {
-      const NT &x = m[i * n + k];
-      if (arith::certainly_positive(x) || arith::certainly_negative(x)) {
-        piv = i;
-        break;
-      }
-      if (!Poly<NT>::exact_zero(x)) all_zero = false;
+    bool unsure = false;
+    for (size_t i = k; i < n && piv == n; ++i) {
+      const int state = pivot_state(m[i * n + k]);
+      if (state == 1) piv = i;
+      else if (state < 0) unsure = true;
     }
     if (piv == n) {
-      if (all_zero) return arith::from_int<NT>(0);
-      throw arith::Uncertain{};
+      if (unsure) throw arith::Uncertain{};
+      return NT(0);
     }
     if (piv != k) {
       for (size_t j = 0; j < n; ++j) std::swap(m[k * n + j], m[piv * n + j]);
-      det = -det;
+      negate = !negate;
     }
-    det = det * m[k * n + k];
-    for (size_t i = k + 1; i < n; ++i) {
-      NT f = m[i * n + k] / m[k * n + k];
-      for (size_t j = k; j < n; ++j) m[i * n + j] = m[i * n + j] - f * m[k * n + j];
-    }
+    for (size_t i = k + 1; i < n; ++i)
+      for (size_t j = k + 1; j < n; ++j)
+        m[i * n + j] = exact_quotient(m[i * n + j] * m[k * n + k] - m[i * n + k] * m[k * n + j], prev);
+    prev = m[k * n + k];
   }
-  return det;
+  return negate ? NT(-m[n * n - 1]) : m[n * n - 1];
 }
 
+// Signs of the leading principal minors D_1..D_n of a symmetric matrix (row-major n*n):
+// Bareiss without pivoting while the minors are nonzero (in Bareiss form the pivots are
+// the minors themselves); after the first zero minor, each remaining minor is computed
+// on its own by bareiss_determinant (with pivoting).
 template <class NT>
 std::vector<int> leading_minor_signs(const std::vector<NT> &a, size_t n) {
   std::vector<int> signs(n, 0);
   std::vector<NT> m = a;
-  NT prev = arith::from_int<NT>(1);
+  NT prev(1);
   size_t k = 0;
-  // Bareiss: after step k, m[i][j] (i, j > k) is the minor of rows 0..k,i x cols 0..k,j.
+  // After step k, m[i][j] (i, j > k) is the minor of rows 0..k,i x cols 0..k,j, and
+  // m[k][k] is D_(k+1).
   for (; k < n; ++k) {
-    signs[k] = arith::sign(m[k * n + k]);  // = sgn D_(k+1)
+    signs[k] = sign_of(m[k * n + k]);
     if (signs[k] == 0) break;
     for (size_t i = k + 1; i < n; ++i)
       for (size_t j = k + 1; j < n; ++j)
-        m[i * n + j] = (m[i * n + j] * m[k * n + k] - m[i * n + k] * m[k * n + j]) / prev;
+        m[i * n + j] = exact_quotient(m[i * n + j] * m[k * n + k] - m[i * n + k] * m[k * n + j], prev);
     prev = m[k * n + k];
   }
-  for (size_t s = k + 1; s < n; ++s) {  // after a zero pivot: one determinant each
-    std::vector<NT> sub(( s + 1) * (s + 1));
+  for (size_t s = k + 1; s < n; ++s) {  // after a zero minor: one determinant each
+    std::vector<NT> sub((s + 1) * (s + 1));
     for (size_t i = 0; i <= s; ++i)
       for (size_t j = 0; j <= s; ++j) sub[i * (s + 1) + j] = a[i * n + j];
-    signs[s] = arith::sign(determinant(std::move(sub), s + 1));
+    signs[s] = sign_of(bareiss_determinant(std::move(sub), s + 1));
   }
   return signs;
 }
@@ -146,8 +172,5 @@ class Hermite<Rational> {
   std::vector<arith::Integer> lc_pow_;  // lc^0 .. lc^(3n)
   std::vector<arith::Integer> S_;       // lc^k s_k
 };
-
-// Signs of the leading principal minors of an integer symmetric matrix.
-std::vector<int> leading_minor_signs_integer(const std::vector<arith::Integer> &a, size_t n);
 
 }  // namespace pccd::poly
