@@ -4,7 +4,6 @@
 #include <cctype>
 
 #include "arith/errors.h"
-#include "polyccd.h"
 
 namespace pccd::arith {
 namespace {
@@ -36,10 +35,10 @@ bool parse_integer(const std::string &s, size_t b, size_t e, Integer &out) {
 }  // namespace
 
 Rational parse_rational(const std::string &text, const std::string &where) {
-  if (text.size() > PCCD_MAX_NUMBER_CHARS)
+  if (text.size() > kMax_number_chars)
     throw Limit_error(where + ": number text of " + std::to_string(text.size()) +
                       " characters exceeds the limit of " +
-                      std::to_string(PCCD_MAX_NUMBER_CHARS));
+                      std::to_string(kMax_number_chars));
   const size_t n = text.size();
   size_t slash = text.find('/');
   if (slash != std::string::npos) {
@@ -83,9 +82,9 @@ Rational parse_rational(const std::string &text, const std::string &where) {
     if (eneg) exp10 = -exp10;
   }
   if (i != n) bad(text, where);
-  if (exp10 > PCCD_MAX_EXPONENT || exp10 < -PCCD_MAX_EXPONENT)
+  if (exp10 > kMax_exponent || exp10 < -kMax_exponent)
     throw Limit_error(where + ": exponent of \"" + text + "\" is beyond +-" +
-                      std::to_string(PCCD_MAX_EXPONENT));
+                      std::to_string(kMax_exponent));
   Integer mant(digits, 10);
   if (neg) mant = -mant;
   long e = exp10 - frac_len;

@@ -8,12 +8,17 @@ namespace pccd::arith {
 using Rational = mpq_class;
 using Integer = mpz_class;
 
+// Text limits of parse_rational (PCCD_MAX_NUMBER_CHARS, PCCD_MAX_EXPONENT in polyccd.h;
+// lib/api/constants.cpp checks that the two agree).
+constexpr size_t kMax_number_chars = 100000;
+constexpr long kMax_exponent = 100000;
+
 // Parses an exact number: an integer ("-3"), a decimal with optional exponent
 // ("0.1" is exactly 1/10, "2.5e-7", ".5", "1E3"), or a fraction of two integers
 // ("-7/3", "4/-6" is rejected: the sign goes on the numerator). Leading/trailing
 // spaces are not allowed. Throws Input_error naming `where` for anything else
 // (empty, "abc", "1/0", "nan", "inf"), Limit_error for text longer than
-// PCCD_MAX_NUMBER_CHARS or an exponent beyond PCCD_MAX_EXPONENT.
+// kMax_number_chars or an exponent beyond kMax_exponent.
 Rational parse_rational(const std::string &text, const std::string &where);
 
 // The exact binary value of a finite double; Input_error naming `where` otherwise.

@@ -26,11 +26,11 @@
 #include <vector>
 
 #include "arith/rational.h"
-#include "polyccd.h"
 
 namespace pccd::motion {
 
-constexpr size_t kMax_body_elements = PCCD_MAX_BODY_ELEMENTS;
+// PCCD_MAX_BODY_ELEMENTS (polyccd.h; lib/api/constants.cpp checks that the two agree).
+constexpr size_t kMax_body_elements = 50000000;
 
 using Point3_q = std::array<arith::Rational, 3>;
 using Triangle = std::array<uint32_t, 3>;

@@ -2,7 +2,6 @@
 
 #include "poly/earliest.h"
 #include "poly/rational_root.h"
-#include "polyccd.h"
 #include "pred/static_contact.h"
 
 namespace pccd::pred {
@@ -78,11 +77,11 @@ Contact_result solve(const Query_data<Interval> &iq,
   Contact_result out;
   const arith::Nearest_scope nearest;  // lets intervals certify exact operations
   if (bounds_separate(iq)) {
-    out.stage = PCCD_STAGE_BOUNDS;
+    out.stage = STAGE_BOUNDS;
     return out;
   }
   if (bernstein_excludes(iq)) {
-    out.stage = PCCD_STAGE_BERNSTEIN;
+    out.stage = STAGE_BERNSTEIN;
     return out;
   }
   // Only contacts up to `until` are wanted: the same filters over [0, u], u >= until.
@@ -91,23 +90,23 @@ Contact_result solve(const Query_data<Interval> &iq,
     if (u < 1) {
       const Query_data<Interval> r = restricted(iq, u);
       if (bounds_separate(r)) {
-        out.stage = PCCD_STAGE_BOUNDS;
+        out.stage = STAGE_BOUNDS;
         return out;
       }
       if (bernstein_excludes(r)) {
-        out.stage = PCCD_STAGE_BERNSTEIN;
+        out.stage = STAGE_BERNSTEIN;
         return out;
       }
     }
   }
   if (iq.kind == SPHERE_TRIANGLE) {
     bool meets;
-    int stage = PCCD_STAGE_INTERVAL;
+    int stage = STAGE_INTERVAL;
     try {
       meets = ball_meets_triangle_at_zero(iq);
     } catch (const arith::Uncertain &) {
       meets = ball_meets_triangle_at_zero(exact_points());
-      stage = PCCD_STAGE_EXACT;
+      stage = STAGE_EXACT;
     }
     if (meets) {
       set_contact_at_zero(out, stage);
@@ -119,7 +118,7 @@ Contact_result solve(const Query_data<Interval> &iq,
     Feature_set<Interval> set = build_systems(iq);
     poly::Search_result<Interval> r = search(set, opt);
     fill(out, set, r);
-    out.stage = PCCD_STAGE_INTERVAL;
+    out.stage = STAGE_INTERVAL;
     decided = true;
   } catch (const arith::Uncertain &) {
     out = Contact_result();
@@ -130,7 +129,7 @@ Contact_result solve(const Query_data<Interval> &iq,
   if (!decided) {
     poly::Search_result<Rational> r = search(set, opt);
     fill(out, set, r);
-    out.stage = PCCD_STAGE_EXACT;
+    out.stage = STAGE_EXACT;
     if (!(out.collides && opt.want_time && opt.want_exact && !out.exact)) return out;
     // Continue below with the exact enclosure.
   }

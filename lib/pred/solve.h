@@ -12,6 +12,10 @@
 
 namespace pccd::pred {
 
+// Which stage decided (the values of pccd_stage in polyccd.h; lib/api/constants.cpp
+// checks that the two agree).
+enum Stage : int { STAGE_NONE = 0, STAGE_BOUNDS = 1, STAGE_BERNSTEIN = 2, STAGE_INTERVAL = 3, STAGE_EXACT = 4 };
+
 struct Solve_options {
   arith::Rational tol = arith::Rational(1, 1000000000000);  // 1e-12
   bool want_time = true;
@@ -28,7 +32,7 @@ struct Contact_result {
   arith::Rational lo, hi;  // lo <= t* <= hi when collides
   bool exact = false;      // lo == hi == t*
   std::vector<Feature> features;
-  int stage = 0;           // pccd_stage
+  int stage = STAGE_NONE;  // Stage
 };
 
 // exact_points builds the exact trajectories on demand (only when the interval stages
