@@ -105,6 +105,10 @@ $(BUILD)/test_halfspace_bounds: tests/cpp/test_halfspace_bounds.cpp lib/range/ha
 $(BUILD)/test_axis_rotation: tests/cpp/test_axis_rotation.cpp $(OBJS)
 	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/test_axis_rotation.cpp $(OBJS) $(LDLIBS)
 
+# Internal test of the static filter of linear queries against exact rationals.
+$(BUILD)/test_linear_filter: tests/cpp/test_linear_filter.cpp $(OBJS)
+	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/test_linear_filter.cpp $(OBJS) $(LDLIBS)
+
 check-header:
 	@echo '#include "polyccd.h"' > $(BUILD)/hdr.c
 	$(CC) -std=c99 -pedantic -Werror -Wall -Wextra -Iinclude -c $(BUILD)/hdr.c -o $(BUILD)/hdr.o
@@ -115,10 +119,11 @@ check-symbols: $(LIB)
 	if [ -n "$$bad" ]; then echo "exported symbols without pccd_ prefix:"; echo "$$bad"; exit 1; fi; \
 	echo "nm -D: only pccd_ symbols exported ($$(nm -D --defined-only $(LIB) | grep -c ' T pccd_') functions)"
 
-test-c: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index $(BUILD)/test_ulp $(BUILD)/test_halfspace_bounds $(BUILD)/test_axis_rotation check-header check-symbols
+test-c: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index $(BUILD)/test_ulp $(BUILD)/test_halfspace_bounds $(BUILD)/test_axis_rotation $(BUILD)/test_linear_filter check-header check-symbols
 	$(BUILD)/test_ulp
 	$(BUILD)/test_halfspace_bounds
 	$(BUILD)/test_axis_rotation
+	$(BUILD)/test_linear_filter
 	$(BUILD)/test_api
 	$(BUILD)/test_motion
 	$(BUILD)/test_body

@@ -5,6 +5,7 @@
 
 #include "api/guard.h"
 #include "api/handles.h"
+#include "pred/linear_filter.h"
 
 using pccd::api::guard;
 using pccd::api::require;
@@ -14,18 +15,45 @@ using pccd::arith::Rational;
 
 namespace pccd::api {
 
-pred::Solve_options read_config(const pccd_config *cfg) {
-  pred::Solve_options o;
-  if (!cfg) return o;
+namespace {
+
+// The tolerance text of this thread's last call and its value: callers pass the same
+// config call after call, so its text is parsed once, not per query.
+struct Tolerance_cache {
+  std::string text;
+  Rational value;
+  bool valid = false;
+};
+thread_local Tolerance_cache tl_tolerance;
+
+// Validates cfg (NULL: defaults); the parsed tolerance when cfg has one, else nullptr.
+const Rational *checked_tolerance(const pccd_config *cfg) {
+  if (!cfg) return nullptr;
   if (cfg->struct_size != sizeof(pccd_config))
     throw Input_error("config.struct_size is " + std::to_string(cfg->struct_size) + ", expected " +
                       std::to_string(sizeof(pccd_config)) + " (initialise with pccd_config_init)");
-  if (cfg->time_tolerance) {
-    o.tol = arith::parse_rational(cfg->time_tolerance, "config.time_tolerance");
-    if (sgn(o.tol) <= 0)
-      throw Input_error(std::string("config.time_tolerance: \"") + cfg->time_tolerance +
-                        "\" must be greater than 0");
-  }
+  if (!cfg->time_tolerance) return nullptr;
+  Tolerance_cache &c = tl_tolerance;
+  if (c.valid && std::strcmp(cfg->time_tolerance, c.text.c_str()) == 0) return &c.value;
+  c.valid = false;
+  Rational tol = arith::parse_rational(cfg->time_tolerance, "config.time_tolerance");
+  if (sgn(tol) <= 0)
+    throw Input_error(std::string("config.time_tolerance: \"") + cfg->time_tolerance +
+                      "\" must be greater than 0");
+  c.text = cfg->time_tolerance;
+  c.value = std::move(tol);
+  c.valid = true;
+  return &c.value;
+}
+
+}  // namespace
+
+void checked_config(const pccd_config *cfg) { checked_tolerance(cfg); }
+
+pred::Solve_options read_config(const pccd_config *cfg) {
+  pred::Solve_options o;
+  if (const Rational *tol = checked_tolerance(cfg)) o.tol = *tol;
+  if (!cfg) return o;
   o.want_time = cfg->want_time != 0;
   o.want_exact = cfg->want_exact != 0;
   return o;
@@ -91,13 +119,33 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
   return guard("pccd_solve_linear_d", [&] {
     require(res, "result");
     res->solved = false;
-    res->r = pccd::pred::Contact_result();
+    pccd::api::reset(res->r);
     require(p_t0, "p_t0");
     require(p_t1, "p_t1");
     const long k = pccd::api::raw_kind(kind);
     if (k == PCCD_SPHERE_SPHERE)
       throw Input_error("sphere-sphere queries need radii: use pccd_query_new");
     const size_t n = pccd::api::kind_points(k);
+    pccd::api::checked_config(cfg);
+    for (size_t i = 0; i < 3 * n; ++i)
+      if (!std::isfinite(p_t0[i]) || !std::isfinite(p_t1[i])) {
+        const bool bad0 = !std::isfinite(p_t0[i]);
+        throw Input_error(std::string(bad0 ? "p_t0[" : "p_t1[") + std::to_string(i) +
+                          "] is not a finite number");
+      }
+    // The static filter (pred/linear_filter.h) proves most misses without allocating.
+    switch (pccd::pred::linear_filter(static_cast<int>(k), p_t0, p_t1)) {
+      case pccd::pred::Linear_verdict::boxes_apart:
+        res->r.stage = pccd::pred::STAGE_BOUNDS;
+        res->solved = true;
+        return PCCD_OK;
+      case pccd::pred::Linear_verdict::no_root:
+        res->r.stage = pccd::pred::STAGE_BERNSTEIN;
+        res->solved = true;
+        return PCCD_OK;
+      case pccd::pred::Linear_verdict::unknown:
+        break;
+    }
     pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
     const pccd::arith::Nearest_scope nearest;  // before any interval arithmetic
     // The interval stages see the doubles as exact points; the exact trajectories are
@@ -107,12 +155,7 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
     iq.p.resize(n);
     for (size_t i = 0; i < n; ++i)
       for (int a = 0; a < 3; ++a) {
-        double x0 = p_t0[3 * i + a], x1 = p_t1[3 * i + a];
-        if (!std::isfinite(x0) || !std::isfinite(x1)) {
-          const bool bad0 = !std::isfinite(x0);
-          throw Input_error(std::string(bad0 ? "p_t0[" : "p_t1[") + std::to_string(3 * i + a) +
-                            "] is not a finite number");
-        }
+        const double x0 = p_t0[3 * i + a], x1 = p_t1[3 * i + a];
         // x(t) = x0 + (x1 - x0) t: the slope is enclosed, not rounded.
         iq.p[i][a] = pccd::poly::Poly<Interval>(
             std::vector<Interval>{Interval(x0), Interval(x1) - Interval(x0)});
