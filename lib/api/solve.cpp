@@ -143,6 +143,10 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
         res->r.stage = pccd::pred::STAGE_BERNSTEIN;
         res->solved = true;
         return PCCD_OK;
+      case pccd::pred::Linear_verdict::misses:
+        res->r.stage = pccd::pred::STAGE_INTERVAL;
+        res->solved = true;
+        return PCCD_OK;
       case pccd::pred::Linear_verdict::unknown:
         break;
     }

@@ -34,6 +34,7 @@
 #include <cmath>
 
 #include "pred/features.h"
+#include "pred/linear_crossing.h"
 
 namespace pccd::pred {
 
@@ -84,6 +85,11 @@ bool all_certain(const double (&v)[N], const double (&b)[N], int sign) {
 template <class R>
 bool one_strict_sign(const R &r) {
   return r.ok && (all_certain(r.value, r.bound, 1) || all_certain(r.value, r.bound, -1));
+}
+
+Linear_verdict cubic_verdict(int kind, const double *p0, const double *p1, const Cubic_bernstein &f) {
+  if (one_strict_sign(f)) return Linear_verdict::no_root;
+  return crossing_misses(kind, p0, p1, f) ? Linear_verdict::misses : Linear_verdict::unknown;
 }
 
 // Disjoint closed boxes of points [0, split) and [split, n) over their positions at
@@ -160,14 +166,12 @@ Linear_verdict linear_filter(int kind, const double *p0, const double *p1) {
     case VERTEX_FACE: {  // v, f0, f1, f2: det(f1 - f0, f2 - f0, v - f0)
       if (boxes_apart(4, 1, p0, p1)) return Linear_verdict::boxes_apart;
       const auto v = at(0), f0 = at(1), f1 = at(2), f2 = at(3);
-      return one_strict_sign(cubic_bernstein(f0.x, f1.x, f2.x, v.x)) ? Linear_verdict::no_root
-                                                                     : Linear_verdict::unknown;
+      return cubic_verdict(kind, p0, p1, cubic_bernstein(f0.x, f1.x, f2.x, v.x));
     }
     case EDGE_EDGE: {  // a0, a1, b0, b1: det(a1 - a0, b0 - a0, b1 - a0)
       if (boxes_apart(4, 2, p0, p1)) return Linear_verdict::boxes_apart;
       const auto a0 = at(0), a1 = at(1), b0 = at(2), b1 = at(3);
-      return one_strict_sign(cubic_bernstein(a0.x, a1.x, b0.x, b1.x)) ? Linear_verdict::no_root
-                                                                      : Linear_verdict::unknown;
+      return cubic_verdict(kind, p0, p1, cubic_bernstein(a0.x, a1.x, b0.x, b1.x));
     }
     case VERTEX_EDGE: {  // v, e0, e1: a component of (e1 - e0) x (v - e0) never vanishes
       if (boxes_apart(3, 1, p0, p1)) return Linear_verdict::boxes_apart;

@@ -15,7 +15,9 @@
 
 namespace pccd::pred {
 
-enum class Linear_verdict { unknown = 0, boxes_apart = 1, no_root = 2 };
+// misses: vertex-face or edge-edge whose coplanarity cubic has one simple root in (0, 1),
+// where the primitives are certainly apart (linear_crossing.h).
+enum class Linear_verdict { unknown = 0, boxes_apart = 1, no_root = 2, misses = 3 };
 
 // kind: VERTEX_FACE, EDGE_EDGE, VERTEX_EDGE or VERTEX_VERTEX (features.h); p0 and p1 hold
 // the kind's points (polyccd.h order), 3 finite doubles each. Other kinds: unknown.

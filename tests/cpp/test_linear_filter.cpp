@@ -103,7 +103,7 @@ static bool exact_boxes_apart(int n, int split, const double *p0, const double *
 
 // One query of `kind`: the verdict against exact facts, and the enclosures.
 static void check_query(int kind, const double *p0, const double *p1, int round, long &rounded,
-                        long verdicts[3]) {
+                        long verdicts[4]) {
   auto pt = [&](int i) { return std::array<const double *, 2>{p0 + 3 * i, p1 + 3 * i}; };
   const Linear_verdict v = pccd::pred::linear_filter(kind, p0, p1);
   ++verdicts[static_cast<int>(v)];
@@ -120,6 +120,15 @@ static void check_query(int kind, const double *p0, const double *p1, int round,
     const auto ex = exact_cubic(o.data(), a.data(), b.data(), c.data());
     check_enclosure(pccd::pred::cubic_bernstein(o.data(), a.data(), b.data(), c.data()), ex, round, rounded);
     if (v == Linear_verdict::no_root) expect(one_sign(ex), "cubic without root", round);
+    if (v == Linear_verdict::misses) {  // the Descartes part of the certificate, exactly
+      int changes = 0;
+      bool zero = false;
+      for (int k = 0; k < 4; ++k) {
+        zero = zero || sgn(ex[k]) == 0;
+        if (k > 0 && sgn(ex[k]) != sgn(ex[k - 1])) ++changes;
+      }
+      expect(!zero && changes == 1, "misses: one simple root in (0, 1)", round);
+    }
   } else if (kind == pccd::pred::VERTEX_EDGE) {
     bool some = false;
     for (int k = 0; k < 3; ++k) {
@@ -145,9 +154,9 @@ int main() {
   const int kinds[4] = {pccd::pred::VERTEX_FACE, pccd::pred::EDGE_EDGE, pccd::pred::VERTEX_EDGE,
                         pccd::pred::VERTEX_VERTEX};
   const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
-  long rounded = 0, verdicts[3] = {0, 0, 0};
+  long rounded = 0, verdicts[4] = {0, 0, 0, 0};
   int round = 0;
-  for (int family = 0; family < 9; ++family) {
+  for (int family = 0; family < 10; ++family) {
     for (int rep = 0; rep < 3000; ++rep, ++round) {
       double p0[12], p1[12];
       // Scales: 1, huge, tiny, mixed, near the filter's range limits, subnormal.
@@ -162,6 +171,24 @@ int main() {
           p0[i] = static_cast<double>(static_cast<int>(rng() % 3) - 1);
           p1[i] = static_cast<double>(static_cast<int>(rng() % 3) - 1);
         }
+      if (family == 9) {
+        // A crossing near miss (the "misses" verdict): a triangle (points 1-3) near the
+        // plane z = 0 and a vertex (point 0) crossing it at a time tc just outside the
+        // edge x = 0, by a relative margin 2^-3 to 2^-43; every point moves linearly.
+        const double size = std::ldexp(1.0, -static_cast<int>(rng() % 7));
+        const double tc = 0.05 + 0.9 * (unit(rng) + 1) / 2;
+        const double at_tc[12] = {-size * std::ldexp(1.0, -3 - static_cast<int>(rng() % 41)), size * 0.3, 0,
+                                  0, 0, 0, 0, size, 0, size, 0, 0};
+        for (int i = 0; i < 4; ++i) {
+          const double speed = size * std::ldexp(1.0, -2 - static_cast<int>(rng() % 8));
+          for (int a = 0; a < 3; ++a) {
+            double vel = speed * unit(rng);
+            if (a == 2) vel = i == 0 ? -speed * (1.5 + unit(rng)) : 0.1 * vel;
+            p0[3 * i + a] = at_tc[3 * i + a] - tc * vel;
+            p1[3 * i + a] = at_tc[3 * i + a] + (1 - tc) * vel;
+          }
+        }
+      }
       if (family == 4 || family == 5) {
         // Nearly degenerate: the last point made coplanar with (collinear to) the others
         // at both times, then moved by an ulp or so on one coordinate.
@@ -182,11 +209,12 @@ int main() {
       fesetround(FE_TONEAREST);
     }
   }
-  std::printf("verdicts: %ld unknown, %ld boxes apart, %ld no root; %ld coefficients rounded\n",
-              verdicts[0], verdicts[1], verdicts[2], rounded);
+  std::printf("verdicts: %ld unknown, %ld boxes apart, %ld no root, %ld misses; %ld coefficients rounded\n",
+              verdicts[0], verdicts[1], verdicts[2], verdicts[3], rounded);
   // The enclosures must be tested where rounding happens, or they prove nothing.
   expect(rounded > 10000, "enough coefficients carried rounding errors", -1);
-  expect(verdicts[2] > 1000 && verdicts[0] > 1000 && verdicts[1] > 1000, "every verdict occurred", -1);
+  expect(verdicts[3] > 1000 && verdicts[2] > 1000 && verdicts[0] > 1000 && verdicts[1] > 1000,
+         "every verdict occurred", -1);
   std::printf("%ld passed, %ld failed\n", g_pass, g_fail);
   return g_fail == 0 ? 0 : 1;
 }

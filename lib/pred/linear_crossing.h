@@ -1,0 +1,32 @@
+// The second half of the static filter of linear double queries (linear_filter.h): a
+// vertex-face or edge-edge query whose contact cubic f (the coplanarity determinant)
+// crosses zero exactly once in [0, 1], at a time the primitives miss each other.
+//
+// Proof it gives of "no contact": the certified Bernstein coefficients of f on [0, 1]
+// (linear_filter.h) all have a certain sign with exactly one sign change, so f has
+// exactly one root r in (0, 1), a simple one, and none at 0 or 1 (Descartes' rule of
+// signs in Bernstein form: the number of roots in (0, 1) is at most the number of sign
+// changes and has its parity). f evaluated in interval arithmetic at two times ta < tb
+// (found around a floating-point estimate of r) has certain opposite signs, so r is in
+// (ta, tb). On T = [ta, tb] the side conditions are enclosed in interval arithmetic
+// (positions x0 + T (x1 - x0)); one of them certainly says "apart" on all of T:
+//  - vertex-face: v strictly outside an edge line of the triangle within the plane,
+//    g_i = n . ((f_(i+1) - f_i) x (v - f_i)) < 0, n = (f1 - f0) x (f2 - f0) (the closed
+//    triangle lies where every g_i >= 0; a degenerate triangle has n = 0, g_i = 0);
+//  - edge-edge: both ends of one segment strictly on one side of the other's line,
+//    measured along n = (a1 - a0) x (b1 - b0): s(b0) s(b1) > 0 or s(a0) s(a1) > 0 (the
+//    side s is affine and vanishes on the line, so a crossing point forces s(x0) and
+//    s(x1) not to have one strict sign).
+// The only time the primitives are coplanar is r, and there they are apart: no contact.
+// Anything else (several roots, tangency, uncertain signs) is left to the solver.
+#pragma once
+
+#include "pred/linear_filter.h"
+
+namespace pccd::pred {
+
+// kind: VERTEX_FACE or EDGE_EDGE; f: cubic_bernstein of the kind's coplanarity
+// determinant (linear_filter.cpp's order). True only when the proof above holds.
+bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_bernstein &f);
+
+}  // namespace pccd::pred
