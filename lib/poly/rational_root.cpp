@@ -14,30 +14,6 @@ struct Candidate {
 
 int sign_at(const Poly<Rational> &F, const Rational &t) { return sgn(F.eval(t)); }
 
-// False only when F (integer coefficients) certainly has no rational root: a root
-// p/q in lowest terms has q | lc(F), so for a prime P not dividing lc(F), q is
-// invertible mod P and p q^-1 is a root of F mod P. A prime with no root mod P
-// excludes rational roots. (A random polynomial has a root mod P with probability
-// about 1 - 1/e, so 24 primes leave about 1.5e-5 of irrational cases undetected,
-// which then take the complete path below.)
-bool may_have_rational_root(const Poly<Rational> &F) {
-  static const unsigned long primes[] = {11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53,
-                                         59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107};
-  for (unsigned long P : primes) {
-    if (mpz_fdiv_ui(F.lc().get_num_mpz_t(), P) == 0) continue;
-    std::vector<unsigned long> c;
-    for (const Rational &x : F.c) c.push_back(mpz_fdiv_ui(x.get_num_mpz_t(), P));
-    bool root = false;
-    for (unsigned long x = 0; x < P && !root; ++x) {
-      unsigned long v = 0;
-      for (size_t i = c.size(); i-- > 0;) v = (v * x + c[i]) % P;
-      root = v == 0;
-    }
-    if (!root) return false;
-  }
-  return true;
-}
-
 // Halves (a, b) keeping the only root of F inside; returns true and sets r when the
 // midpoint is that root.
 bool sign_bisect(const Poly<Rational> &F, Rational &a, Rational &b, Rational &r) {
@@ -132,6 +108,30 @@ Rational_root_result rational_first_contact(const std::vector<System<Rational>> 
   for (size_t k = 0; k < active.size(); ++k)
     if (cands[k].rational && cands[k].r == best) out.which.push_back(active[k]);
   return out;
+}
+
+// False only when F (integer coefficients) certainly has no rational root: a root
+// p/q in lowest terms has q | lc(F), so for a prime P not dividing lc(F), q is
+// invertible mod P and p q^-1 is a root of F mod P. A prime with no root mod P
+// excludes rational roots. (A random polynomial has a root mod P with probability
+// about 1 - 1/e, so 24 primes leave about 1.5e-5 of irrational cases undetected,
+// which then take the complete path.)
+bool may_have_rational_root(const Poly<Rational> &F) {
+  static const unsigned long primes[] = {11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53,
+                                         59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107};
+  for (unsigned long P : primes) {
+    if (mpz_fdiv_ui(F.lc().get_num_mpz_t(), P) == 0) continue;
+    std::vector<unsigned long> c;
+    for (const Rational &x : F.c) c.push_back(mpz_fdiv_ui(x.get_num_mpz_t(), P));
+    bool root = false;
+    for (unsigned long x = 0; x < P && !root; ++x) {
+      unsigned long v = 0;
+      for (size_t i = c.size(); i-- > 0;) v = (v * x + c[i]) % P;
+      root = v == 0;
+    }
+    if (!root) return false;
+  }
+  return true;
 }
 
 }  // namespace pccd::poly

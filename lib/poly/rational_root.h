@@ -20,6 +20,11 @@ struct Rational_root_result {
   std::vector<size_t> which;  // the systems whose contact set holds t* (when exact)
 };
 
+// False only when the integer polynomial F (Rational coefficients with denominator 1)
+// certainly has no rational root (a root modulo small primes is missing); true means
+// "may have one". Cheap: a few modular evaluations.
+bool may_have_rational_root(const Poly<Rational> &F);
+
 // active: the systems with a contact in (lo, hi]; none of them hits lo.
 Rational_root_result rational_first_contact(const std::vector<System<Rational>> &sys,
                                             const std::vector<size_t> &active,

@@ -41,10 +41,20 @@ struct Feature {
   std::array<int, 4> points{{-1, -1, -1, -1}};  // query point indices, kind's order
 };
 
+inline bool operator==(const Feature &a, const Feature &b) { return a.kind == b.kind && a.points == b.points; }
+
 template <class NT>
 struct Feature_set {
   std::vector<Feature> features;  // all feature pairs of the query, by tag
   std::vector<System<NT>> systems;  // those not excluded; System::tag -> features
+  // When set, only these features get a system (the others are listed, not built).
+  const std::vector<Feature> *only = nullptr;
+  bool wants(const Feature &f) const {
+    if (!only) return true;
+    for (const Feature &g : *only)
+      if (g == f) return true;
+    return false;
+  }
 };
 
 // The common zero set of several polynomials as one polynomial f and whether all are
@@ -90,6 +100,7 @@ void add_vertex_vertex(Feature_set<NT> &set, const Point_traj<NT> &a, const Poin
                        int ia, int ib) {
   using K = typename System<NT>::Kind;
   Feature feat{VERTEX_VERTEX, {{ia, ib, -1, -1}}};
+  if (!set.wants(feat)) return skip_feature(set, feat);
   auto d = a - b;
   Poly<NT> f;
   bool all_zero = false;
@@ -104,6 +115,7 @@ void add_vertex_edge(Feature_set<NT> &set, const Point_traj<NT> &v, const Point_
                      const Point_traj<NT> &e1, int iv, int i0, int i1) {
   using K = typename System<NT>::Kind;
   Feature feat{VERTEX_EDGE, {{iv, i0, i1, -1}}};
+  if (!set.wants(feat)) return skip_feature(set, feat);
   auto e = e1 - e0;
   auto u = motion::cross(e, v - e0);
   Poly<NT> f;
@@ -122,6 +134,7 @@ void add_vertex_face(Feature_set<NT> &set, const Point_traj<NT> &v,
                      const std::array<const Point_traj<NT> *, 3> &fv, const std::array<int, 4> &idx) {
   using K = typename System<NT>::Kind;
   Feature feat{VERTEX_FACE, idx};
+  if (!set.wants(feat)) return skip_feature(set, feat);
   auto n = motion::cross(*fv[1] - *fv[0], *fv[2] - *fv[0]);
   Poly<NT> f = motion::dot(n, v - *fv[0]);
   std::vector<Poly<NT>> g;
@@ -138,6 +151,7 @@ void add_edge_edge(Feature_set<NT> &set, const Point_traj<NT> &a0, const Point_t
                    const Point_traj<NT> &b0, const Point_traj<NT> &b1) {
   using K = typename System<NT>::Kind;
   Feature feat{EDGE_EDGE, {{0, 1, 2, 3}}};
+  if (!set.wants(feat)) return skip_feature(set, feat);
   auto ea = a1 - a0, eb = b1 - b0;
   Poly<NT> f = motion::dot(motion::cross(ea, b0 - a0), b1 - a0);
   auto n = motion::cross(ea, eb);
@@ -164,19 +178,22 @@ template <class NT>
 void add_ball_vertex(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_traj<NT> &v,
                      const Poly<NT> &r2d2, int iv) {
   using K = typename System<NT>::Kind;
+  const Feature feat{SPHERE_VERTEX, {{0, iv, -1, -1}}};
+  if (!set.wants(feat)) return skip_feature(set, feat);
   auto d = c - v;
-  add_system(set, Feature{SPHERE_VERTEX, {{0, iv, -1, -1}}}, K::sublevel, motion::dot(d, d) - r2d2,
-             {});
+  add_system(set, feat, K::sublevel, motion::dot(d, d) - r2d2, {});
 }
 
 template <class NT>
 void add_ball_edge(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_traj<NT> &e0,
                    const Point_traj<NT> &e1, const Poly<NT> &r2d2, int i0, int i1) {
   using K = typename System<NT>::Kind;
+  const Feature feat{SPHERE_EDGE, {{0, i0, i1, -1}}};
+  if (!set.wants(feat)) return skip_feature(set, feat);
   auto e = e1 - e0;
   auto u = motion::cross(e, c - e0);
   Poly<NT> f = motion::dot(u, u) - r2d2 * motion::dot(e, e);
-  add_system(set, Feature{SPHERE_EDGE, {{0, i0, i1, -1}}}, f.is_zero() ? K::zero_f : K::roots, f,
+  add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f,
              {motion::dot(c - e0, e), motion::dot(e1 - c, e)});
 }
 
@@ -184,14 +201,15 @@ template <class NT>
 void add_ball_face(Feature_set<NT> &set, const Point_traj<NT> &c,
                    const std::array<const Point_traj<NT> *, 3> &fv, const Poly<NT> &r2d2) {
   using K = typename System<NT>::Kind;
+  const Feature feat{SPHERE_FACE, {{0, 1, 2, 3}}};
+  if (!set.wants(feat)) return skip_feature(set, feat);
   auto n = motion::cross(*fv[1] - *fv[0], *fv[2] - *fv[0]);
   Poly<NT> h = motion::dot(n, c - *fv[0]);
   Poly<NT> f = h * h - r2d2 * motion::dot(n, n);
   std::vector<Poly<NT>> g;
   for (int i = 0; i < 3; ++i)
     g.push_back(motion::dot(n, motion::cross(*fv[(i + 1) % 3] - *fv[i], c - *fv[i])));
-  add_system(set, Feature{SPHERE_FACE, {{0, 1, 2, 3}}}, f.is_zero() ? K::zero_f : K::roots, f,
-             std::move(g));
+  add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f, std::move(g));
 }
 
 }  // namespace pccd::pred

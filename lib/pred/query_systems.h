@@ -29,10 +29,13 @@ Poly<NT> radius_squared(const NT &r, const Poly<NT> &scale) {
   return scale.c.empty() ? r2 : r2 * scale * scale;
 }
 
+// only: when given, systems are built for these features alone (the others are listed
+// without a system, so tags stay the same).
 template <class NT>
-Feature_set<NT> build_systems(const Query_data<NT> &q) {
+Feature_set<NT> build_systems(const Query_data<NT> &q, const std::vector<Feature> *only = nullptr) {
   using K = typename System<NT>::Kind;
   Feature_set<NT> s;
+  s.only = only;
   const auto &p = q.p;
   switch (q.kind) {
     case VERTEX_FACE:
@@ -59,9 +62,14 @@ Feature_set<NT> build_systems(const Query_data<NT> &q) {
       break;
     case SPHERE_SPHERE: {
       // Closed balls meet iff |ca - cb|^2 - (ra + rb)^2 <= 0.
+      const Feature feat{SPHERE_SPHERE, {{0, 1, -1, -1}}};
+      if (!s.wants(feat)) {
+        skip_feature(s, feat);
+        break;
+      }
       auto d = p[0] - p[1];
       Poly<NT> f = motion::dot(d, d) - radius_squared(NT(q.radius[0] + q.radius[1]), q.scale);
-      add_system(s, Feature{SPHERE_SPHERE, {{0, 1, -1, -1}}}, K::sublevel, f, {});
+      add_system(s, feat, K::sublevel, f, {});
       break;
     }
     case SPHERE_TRIANGLE: {

@@ -1,6 +1,7 @@
 #include "pred/solve.h"
 
 #include "poly/earliest.h"
+#include "poly/integer.h"
 #include "poly/rational_root.h"
 #include "pred/static_contact.h"
 
@@ -60,6 +61,20 @@ Query_data<Interval> restricted(const Query_data<Interval> &q, double u) {
     for (int a = 0; a < 3; ++a) p[a] = poly::reparametrize(p[a], zero, end);
   if (!r.scale.c.empty()) r.scale = poly::reparametrize(r.scale, zero, end);
   return r;
+}
+
+// True when t*, a root of the polynomial of one of the systems of `active` (the ones
+// touching first), is certainly irrational: each of their exact polynomials, as an
+// integer polynomial, misses a root modulo some small prime, so has no rational root
+// (poly::may_have_rational_root). Builds those systems alone, not the whole set.
+bool first_time_irrational(const Query_data<Rational> &q, const std::vector<Feature> &active) {
+  const Feature_set<Rational> part = build_systems(q, &active);
+  if (part.systems.empty()) return false;
+  for (const System<Rational> &s : part.systems) {
+    if (s.kind == System<Rational>::Kind::zero_f || s.f.degree() < 1) return false;
+    if (poly::may_have_rational_root(poly::primitive_positive(s.f))) return false;
+  }
+  return true;
 }
 
 void set_contact_at_zero(Contact_result &out, int stage) {
@@ -125,6 +140,9 @@ Contact_result solve(const Query_data<Interval> &iq,
   }
   if (decided && !(out.collides && opt.want_time && opt.want_exact && !out.exact)) return out;
 
+  // A time was enclosed in intervals and may be rational. Most are not, which a cheap
+  // modular test of the first-touching systems alone proves.
+  if (decided && first_time_irrational(exact_points(), out.features)) return out;
   Feature_set<Rational> set = build_systems(exact_points());
   if (!decided) {
     poly::Search_result<Rational> r = search(set, opt);
