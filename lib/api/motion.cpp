@@ -2,7 +2,6 @@
 // calls lib/motion, maps errors; no algorithm here. Every setter builds its new value
 // completely before assigning it, so a failed call leaves the motion unchanged.
 #include <array>
-#include <cstring>
 #include <string>
 #include <vector>
 

@@ -1,5 +1,4 @@
 // pccd_result_*: reading answers.
-#include <cstring>
 #include <string>
 
 #include "api/guard.h"
