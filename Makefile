@@ -10,7 +10,7 @@ LIB      := lib/libpolyccd.so
 VENV     := .venv
 VPY      := $(VENV)/bin/python
 # -ffp-contract=off: no fused multiply-add may change a rounding the interval layer
-# relies on (see lib/arith/interval.h; tests/c/test_api.c checks it is not fused).
+# relies on (see lib/arith/interval.h; tests/c/check.h, check_no_fma, checks it is not fused).
 CXXFLAGS ?= -O2 -g
 CXXFLAGS += -std=c++17 -fPIC -fvisibility=hidden -fvisibility-inlines-hidden \
             -ffp-contract=off -frounding-math -Wall -Wextra -Wno-unused-parameter \
@@ -57,10 +57,12 @@ venv: $(VENV)/.stamp $(LIB)
 	cd bindings/python && ../../$(VPY) build_ffi.py
 	$(VENV)/bin/pip install -q --no-build-isolation --no-deps -e bindings/python
 
-# The C test program, linked against the shared library.
-$(BUILD)/test_api: tests/c/test_api.c tests/c/exact_rational.h include/polyccd.h $(LIB)
+# The query / result / config C tests (each a handle kind of polyccd.h), linked against
+# the shared library.
+API_TESTS := test_config test_query test_result test_solve test_solve_face
+$(API_TESTS:%=$(BUILD)/%): $(BUILD)/%: tests/c/%.c tests/c/check.h tests/c/query_check.h tests/c/exact_rational.h include/polyccd.h $(LIB)
 	@mkdir -p $(BUILD)
-	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_api.c \
+	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ $< \
 	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
 
 # Internal probe of lib/poly for tests/test_hermite.py (links the objects directly).
@@ -119,12 +121,16 @@ check-symbols: $(LIB)
 	if [ -n "$$bad" ]; then echo "exported symbols without pccd_ prefix:"; echo "$$bad"; exit 1; fi; \
 	echo "nm -D: only pccd_ symbols exported ($$(nm -D --defined-only $(LIB) | grep -c ' T pccd_') functions)"
 
-test-c: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index $(BUILD)/test_ulp $(BUILD)/test_halfspace_bounds $(BUILD)/test_axis_rotation $(BUILD)/test_linear_filter check-header check-symbols
+test-c: $(API_TESTS:%=$(BUILD)/%) $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index $(BUILD)/test_ulp $(BUILD)/test_halfspace_bounds $(BUILD)/test_axis_rotation $(BUILD)/test_linear_filter check-header check-symbols
 	$(BUILD)/test_ulp
 	$(BUILD)/test_halfspace_bounds
 	$(BUILD)/test_axis_rotation
 	$(BUILD)/test_linear_filter
-	$(BUILD)/test_api
+	$(BUILD)/test_config
+	$(BUILD)/test_query
+	$(BUILD)/test_result
+	$(BUILD)/test_solve
+	$(BUILD)/test_solve_face
 	$(BUILD)/test_motion
 	$(BUILD)/test_body
 	$(BUILD)/test_scene
@@ -136,7 +142,7 @@ test-py: all $(BUILD)/poly_probe
 test: all test-c test-py
 
 # Memory checks: the C test and the corpus under valgrind (see tests/c/run_valgrind.sh).
-valgrind: $(BUILD)/test_api $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index
+valgrind: $(API_TESTS:%=$(BUILD)/%) $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index
 	bash tests/c/run_valgrind.sh
 
 # ASan + UBSan build of the library and the C test (tests/c/run_sanitizers.sh).

@@ -6,6 +6,28 @@
  * Conventions (all entry points):
  *  - Every function returns an int status: PCCD_OK (0) or a negative pccd_status.
  *    After a negative status, pccd_last_error() describes what was wrong and where.
+ *  - Error messages have one grammar:   pccd_function: PLACE: what is wrong
+ *    PLACE names the bad input: a C argument or struct field name, followed by zero or
+ *    more [index] subscripts and .field selectors. Subscripts nest as the Python
+ *    bindings' arguments do, so Python reports the same PLACE verbatim:
+ *      points[1][0][2]        point 1, axis 0, coefficient 2 of a query's trajectories
+ *      p_t0[3][1]             point 3, axis 1 of a linear query (p_t0[3 * 3 + 1])
+ *      radii[1]               radius `which` = 1 of a query, or ball 1 of a body
+ *      vertices[4][2]         vertex 4, coordinate 2 (vertices[4 * 3 + 2]); so are
+ *                             centers[i][k] and ctrl[k][i] (control point k)
+ *      triangles[3][1]        the second index of triangle 3
+ *      translation[1][2]      axis 1, coefficient 2 of o(t); rotation[0][1]: component 0
+ *                             (w), coefficient 1 of r(t); translation[1] (the whole
+ *                             polynomial, e.g. for its degree)
+ *      quat[2], offset[0], p1[1], tau0, t     entries of motion arguments
+ *      config.time_tolerance, opt.threads     fields of option structs
+ *      bodies[3].motion       the motion of scene body 3 (or of query body 3)
+ *      q, res, rep, m, b, out, coeffs, which, point, axis, i, pair, contact   arguments
+ *    e.g. "pccd_query_set_coord_s: points[1][0][2]: "abc" is not a number (...)",
+ *    "pccd_body_new_spheres_d: radii[2]: -1/2 is not > 0", "pccd_result_time: res: holds
+ *    no answer (...)". "what is wrong" gives the value and what was expected. A message
+ *    about no single input keeps the form "pccd_function: what is wrong" (e.g.
+ *    "pccd_motion_validate: the rotation quaternion r(t) = ... vanishes at t = 1/2").
  *  - "No contact" is a result, never a status.
  *  - Doubles are taken as their exact binary values; non-finite doubles are rejected
  *    with PCCD_EINVAL. Rationals travel as strings: an integer ("-3"), a decimal
@@ -119,7 +141,7 @@ PCCD_API void pccd_query_free(pccd_query *q);
 /* Sets coordinate `axis` (0 = x, 1 = y, 2 = z) of point `point` to the polynomial
  * coeffs[0] + coeffs[1] t + ... + coeffs[n-1] t^(n-1). n == 0 means the zero polynomial.
  * PCCD_EINVAL: index out of range, NULL coeffs with n > 0, non-finite double, or a
- * string that is not a number (the message names the coefficient);
+ * string that is not a number (the message names the coefficient: points[point][axis][i]);
  * PCCD_ELIMIT: degree above PCCD_MAX_TRAJ_DEGREE, or a number beyond the text limits.
  * On error the query is unchanged. */
 PCCD_API int pccd_query_set_coord_d(pccd_query *q, size_t point, size_t axis,
@@ -128,7 +150,8 @@ PCCD_API int pccd_query_set_coord_s(pccd_query *q, size_t point, size_t axis,
                                     const char *const *coeffs, size_t n);
 
 /* Sets every point to move linearly from p_t0[3i..3i+2] (t = 0) to p_t1[3i..3i+2]
- * (t = 1); each array holds pccd_kind_points(kind) * 3 doubles. */
+ * (t = 1); each array holds pccd_kind_points(kind) * 3 doubles. A non-finite entry
+ * p_t0[3i + a] is named "p_t0[i][a]". */
 PCCD_API int pccd_query_set_linear_d(pccd_query *q, const double *p_t0, const double *p_t1);
 
 /* Sets the radius of ball `which` (0 or 1) of a SPHERE_SPHERE query. Radii must be > 0
@@ -220,8 +243,8 @@ PCCD_API int pccd_motion_copy(pccd_motion **out, const pccd_motion *m);
  * keeps the rotation. Afterwards that coordinate of the body origin's path is exactly
  * this polynomial, even when a body-side pose with an offset was composed in before.
  * PCCD_EINVAL: m NULL, axis > 2, NULL coeffs with n > 0, non-finite double, or a string
- * that is not a number (the message names the coefficient, e.g. "translation y
- * coefficient 2"); PCCD_ELIMIT: degree above PCCD_MAX_TRAJ_DEGREE, or a number beyond
+ * that is not a number (the message names the coefficient, e.g. "translation[1][2]"
+ * for axis 1, coefficient 2); PCCD_ELIMIT: degree above PCCD_MAX_TRAJ_DEGREE, or a number beyond
  * the text limits. On error the motion is unchanged. */
 PCCD_API int pccd_motion_set_translation_d(pccd_motion *m, size_t axis, const double *coeffs,
                                            size_t n);
@@ -231,7 +254,7 @@ PCCD_API int pccd_motion_set_translation_s(pccd_motion *m, size_t axis,
 /* Sets component `component` (0 = w, 1 = x, 2 = y, 3 = z) of the rotation quaternion
  * r(t) to the polynomial coeffs[0..n-1] (ascending powers; n == 0: zero) and keeps the
  * translation o(t). Errors as pccd_motion_set_translation_d (the message names e.g.
- * "rotation z coefficient 0"), and PCCD_ESTATE when a body-side pose with a nonzero
+ * "rotation[3][0]" for component z, coefficient 0), and PCCD_ESTATE when a body-side pose with a nonzero
  * offset was composed in: that offset turns with the old r, so the body origin's path
  * is no longer a polynomial to keep (set the rotation first, then compose). */
 PCCD_API int pccd_motion_set_rotation_d(pccd_motion *m, size_t component, const double *coeffs,
@@ -247,7 +270,7 @@ PCCD_API int pccd_motion_set_rotation_s(pccd_motion *m, size_t component,
  *             velocities 3 (c1 - c0) and 3 (c3 - c2) there.
  *  - hermite: the cubic with position p0 and velocity v0 at t = 0, p1 and v1 at t = 1.
  * PCCD_EINVAL: a NULL pointer, a non-finite double, or an unparsable string (the
- * message names it, e.g. "ctrl[7]" or "v1[2]"); PCCD_ELIMIT: a number beyond the text
+ * message names it, e.g. "ctrl[2][1]" (ctrl[7]) or "v1[2]"); PCCD_ELIMIT: a number beyond the text
  * limits. On error the motion is unchanged. */
 PCCD_API int pccd_motion_set_linear_translation_d(pccd_motion *m, const double p0[3],
                                                   const double p1[3]);
@@ -442,7 +465,7 @@ PCCD_API int pccd_scene_options_init(pccd_scene_options *opt);
 
 /* Solves the scene (>= 2 bodies) into rep. cfg and opt may be NULL (defaults).
  * PCCD_EINVAL when a motion's quaternion vanishes on [0, 1] ("bodies[2].motion: ..."),
- * or on bad options ("opt->threads is 0; ..."). On any error rep holds no answer
+ * or on bad options ("opt.threads: 0 is outside 1..1024"). On any error rep holds no answer
  * (pccd_report_* return PCCD_ESTATE), whatever it held before. */
 PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
                               const pccd_scene_options *opt, pccd_report *rep);
@@ -505,7 +528,7 @@ PCCD_API int pccd_index_query(const pccd_index *ix, const pccd_body *body,
  * (motions NULL: all stationary; motions[k] NULL: body k stationary). opt->threads
  * workers share the queries, each query solved on one thread; every answer equals that
  * of pccd_index_query. Every query motion is validated before any query is solved:
- * PCCD_EINVAL "bodies[k].motion: ..." (or "bodies[k] is NULL", "reports[k] is NULL")
+ * PCCD_EINVAL "bodies[k].motion: ..." (or "bodies[k]: is NULL", "reports[k]: is NULL")
  * leaves every report unsolved. PCCD_EINVAL also when ix, or bodies or reports with
  * n > 0, is NULL, or on bad options. n = 0 does nothing. */
 PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const *bodies,

@@ -169,7 +169,8 @@ def test_radii():
 @pytest.mark.parametrize("tol, words", [("0", ["greater than 0"]), (-1, ["greater than 0"]),
                                         ("abc", ["not a number"]), (float("nan"), ["finite"])])
 def test_bad_time_tolerance(tol, words):
-    place_error(InputError, "time_tolerance", *words, points=falling(1, -2), time_tolerance=tol)
+    place_error(InputError, "config.time_tolerance", *words, points=falling(1, -2),
+                time_tolerance=tol)
 
 
 def test_time_tolerance_bounds_the_enclosure():

@@ -141,8 +141,8 @@ def test_corpus_rules():
     # The EXPECT rules of formats.md on fabricated results (the engine itself always
     # honours the tolerance, so a too wide enclosure cannot be provoked end to end).
     from polyccd import ContactTime, Result
-    from polyccd._corpus import compare
-    from polyccd._json import Expect
+    from polyccd.apps._corpus import compare
+    from polyccd.apps._json import Expect
 
     def result(lo, hi, exact=None):
         return Result(True, ContactTime(Fraction(lo), Fraction(hi), exact, 0.5), (), "exact")

@@ -1,5 +1,5 @@
-"""Example data (polyccd._data: libcgal-demo files, mesh and molecule loaders), the scene
-renderer (polyccd._render) and the demo scenes (polyccd._demo_scenes).
+"""Example data (polyccd.apps._data: libcgal-demo files, mesh and molecule loaders), the scene
+renderer (polyccd.apps._render) and the demo scenes (polyccd.apps._demo_scenes).
 
 The CGAL files come from Debian's libcgal-demo package, installed with apt-get when it
 is missing and the tests run as root, and extracted into $POLYCCD_DATA_DIR (default
@@ -15,7 +15,8 @@ import numpy as np
 import pytest
 
 import polyccd
-from polyccd import Motion, _data, _demo_scenes, _render
+from polyccd import Motion
+from polyccd.apps import _data, _demo_scenes, _render
 
 trimesh = pytest.importorskip("trimesh")
 gemmi = pytest.importorskip("gemmi")
@@ -368,7 +369,7 @@ def _float_first_contact_ligand(bodies, lo=0.0, hi=1.0):
 
 def test_run_demo_scenes(tmp_path):
     pytest.importorskip("fcl")
-    from polyccd import _demo_bodies
+    from polyccd.apps import _demo_bodies
     lines = []
     start = time.perf_counter()
     results = _demo_bodies.run_demo_scenes(tmp_path, out=lines.append)

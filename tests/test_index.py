@@ -482,7 +482,7 @@ def test_bad_tolerance_is_named_by_its_keyword():
     b = P.Body(P.Spheres([[0, 0, 0]], [1]))
     for call in (lambda **kw: P.check([b, b], **kw), lambda **kw: P.Index(b).query(b, **kw),
                  lambda **kw: P.Index(b).query_many([b], **kw)):
-        with pytest.raises(P.InputError, match=r'^time_tolerance: "abc" is not a number'):
+        with pytest.raises(P.InputError, match=r'^config\.time_tolerance: "abc" is not a number'):
             call(time_tolerance="abc")
-        with pytest.raises(P.InputError, match=r'^time_tolerance: "-1" must be greater than 0'):
+        with pytest.raises(P.InputError, match=r'^config\.time_tolerance: "-1" must be greater than 0'):
             call(time_tolerance=-1)

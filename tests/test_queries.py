@@ -10,8 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from polyccd._csv import kind_of, read_csv
-from polyccd._queries import mismatch_lines, run_file
+from polyccd.apps._csv import kind_of, read_csv
+from polyccd.apps._queries import mismatch_lines, run_file
 
 QUERIES = 2824  # shared/data/ccd-queries/README.md: 2,824 queries, 302 colliding
 COLLIDING = 302

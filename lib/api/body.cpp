@@ -15,13 +15,7 @@ using pccd::motion::Point3_q;
 
 namespace {
 
-std::string place(const char *name, size_t i) {
-  return std::string(name) + "[" + std::to_string(i) + "]";
-}
-
-std::string place(const char *name, size_t i, size_t k) {
-  return place(name, i) + "[" + std::to_string(k) + "]";
-}
+using pccd::api::place;
 
 // n points from n * 3 doubles / strings; entry (i, k) is named name[i][k].
 std::vector<Point3_q> points_d(const double *values, size_t n, const char *name) {
@@ -29,12 +23,12 @@ std::vector<Point3_q> points_d(const double *values, size_t n, const char *name)
   std::vector<Point3_q> out(n);
   for (size_t i = 0; i < n; ++i)
     for (size_t k = 0; k < 3; ++k)
-      out[i][k] = pccd::arith::rational_from_double(values[3 * i + k], place(name, i, k));
+      out[i][k] = pccd::arith::rational_from_double(values[3 * i + k], place(name, {i, k}));
   return out;
 }
 
 Rational number_s(const char *text, const std::string &where) {
-  if (!text) throw Input_error(where + " is NULL");
+  require(text, where);
   return pccd::arith::parse_rational(text, where);
 }
 
@@ -42,7 +36,7 @@ std::vector<Point3_q> points_s(const char *const *values, size_t n, const char *
   if (n > 0) require(values, name);
   std::vector<Point3_q> out(n);
   for (size_t i = 0; i < n; ++i)
-    for (size_t k = 0; k < 3; ++k) out[i][k] = number_s(values[3 * i + k], place(name, i, k));
+    for (size_t k = 0; k < 3; ++k) out[i][k] = number_s(values[3 * i + k], place(name, {i, k}));
   return out;
 }
 
@@ -76,10 +70,10 @@ int new_spheres(pccd_body **out, std::vector<Point3_q> centers, std::vector<Rati
 }
 
 const pccd::motion::Mesh_body &edge_owner(const pccd_body *b, size_t i) {
-  require(b, "body");
+  require(b, "b");
   const size_t n = b->mesh ? b->mesh->edges().size() : 0;
   if (i >= n)
-    throw Input_error("edge " + std::to_string(i) + " out of range (the body has " +
+    throw Input_error("i: edge " + std::to_string(i) + " out of range (the body has " +
                       std::to_string(n) + " edges)");
   return *b->mesh;
 }
@@ -90,7 +84,7 @@ extern "C" {
 
 PCCD_API int pccd_body_new_mesh_d(pccd_body **out, const double *vertices, size_t nv,
                                   const unsigned int *triangles, size_t nt) {
-  return guard("pccd_body_new_mesh_d", [&] {
+  return guard(__func__, [&] {
     require(out, "out");
     *out = nullptr;
     pccd::motion::check_body_size(nv, "vertices");
@@ -101,7 +95,7 @@ PCCD_API int pccd_body_new_mesh_d(pccd_body **out, const double *vertices, size_
 
 PCCD_API int pccd_body_new_mesh_s(pccd_body **out, const char *const *vertices, size_t nv,
                                   const unsigned int *triangles, size_t nt) {
-  return guard("pccd_body_new_mesh_s", [&] {
+  return guard(__func__, [&] {
     require(out, "out");
     *out = nullptr;
     pccd::motion::check_body_size(nv, "vertices");
@@ -112,29 +106,29 @@ PCCD_API int pccd_body_new_mesh_s(pccd_body **out, const char *const *vertices, 
 
 PCCD_API int pccd_body_new_spheres_d(pccd_body **out, const double *centers,
                                      const double *radii, size_t n) {
-  return guard("pccd_body_new_spheres_d", [&] {
+  return guard(__func__, [&] {
     require(out, "out");
     *out = nullptr;
-    pccd::motion::check_body_size(n, "spheres");
+    pccd::motion::check_body_size(n, "centers");
     if (n > 0) require(radii, "radii");
     auto c = points_d(centers, n, "centers");
     std::vector<Rational> r(n);
     for (size_t i = 0; i < n; ++i)
-      r[i] = pccd::arith::rational_from_double(radii[i], place("radii", i));
+      r[i] = pccd::arith::rational_from_double(radii[i], place("radii", {i}));
     return new_spheres(out, std::move(c), std::move(r));
   });
 }
 
 PCCD_API int pccd_body_new_spheres_s(pccd_body **out, const char *const *centers,
                                      const char *const *radii, size_t n) {
-  return guard("pccd_body_new_spheres_s", [&] {
+  return guard(__func__, [&] {
     require(out, "out");
     *out = nullptr;
-    pccd::motion::check_body_size(n, "spheres");
+    pccd::motion::check_body_size(n, "centers");
     if (n > 0) require(radii, "radii");
     auto c = points_s(centers, n, "centers");
     std::vector<Rational> r(n);
-    for (size_t i = 0; i < n; ++i) r[i] = number_s(radii[i], place("radii", i));
+    for (size_t i = 0; i < n; ++i) r[i] = number_s(radii[i], place("radii", {i}));
     return new_spheres(out, std::move(c), std::move(r));
   });
 }
@@ -142,8 +136,8 @@ PCCD_API int pccd_body_new_spheres_s(pccd_body **out, const char *const *centers
 PCCD_API void pccd_body_free(pccd_body *b) { delete b; }
 
 PCCD_API int pccd_body_kind(const pccd_body *b, int *kind) {
-  return guard("pccd_body_kind", [&] {
-    require(b, "body");
+  return guard(__func__, [&] {
+    require(b, "b");
     require(kind, "kind");
     *kind = b->mesh ? PCCD_BODY_MESH : PCCD_BODY_SPHERES;
     return PCCD_OK;
@@ -152,8 +146,8 @@ PCCD_API int pccd_body_kind(const pccd_body *b, int *kind) {
 
 PCCD_API int pccd_body_counts(const pccd_body *b, size_t *vertices_or_spheres, size_t *edges,
                               size_t *triangles) {
-  return guard("pccd_body_counts", [&] {
-    require(b, "body");
+  return guard(__func__, [&] {
+    require(b, "b");
     const auto *m = b->mesh.get();
     if (vertices_or_spheres)
       *vertices_or_spheres = m ? m->vertices().size() : b->spheres->centers().size();
@@ -164,7 +158,7 @@ PCCD_API int pccd_body_counts(const pccd_body *b, size_t *vertices_or_spheres, s
 }
 
 PCCD_API int pccd_body_edge(const pccd_body *b, size_t i, size_t v[2]) {
-  return guard("pccd_body_edge", [&] {
+  return guard(__func__, [&] {
     const auto &m = edge_owner(b, i);
     require(v, "v");
     v[0] = m.edges()[i][0];
@@ -175,16 +169,13 @@ PCCD_API int pccd_body_edge(const pccd_body *b, size_t i, size_t v[2]) {
 
 PCCD_API int pccd_body_edge_triangles(const pccd_body *b, size_t i, size_t *tris, size_t cap,
                                       size_t *count) {
-  return guard("pccd_body_edge_triangles", [&] {
+  return guard(__func__, [&] {
     size_t n = 0;
     const uint32_t *first = edge_owner(b, i).edge_triangles(i, &n);
     if (count) *count = n;
-    if (!tris || cap < n) {
-      pccd::api::set_error("pccd_body_edge_triangles",
-                           "tris: room for " + std::to_string(cap) + " triangles, " +
-                               std::to_string(n) + " needed");
-      return PCCD_ERANGE;
-    }
+    if (!tris || cap < n)
+      throw pccd::api::Range_error("tris: room for " + std::to_string(cap) + " triangles, " +
+                                   std::to_string(n) + " needed");
     for (size_t k = 0; k < n; ++k) tris[k] = first[k];
     return PCCD_OK;
   });

@@ -18,13 +18,12 @@ void set_error(const char *fn, const std::string &what) {
 
 const char *last_error_text() { return last_error.c_str(); }
 
-int write_text(const char *fn, const std::string &text, char *buf, size_t cap, size_t *needed) {
+int write_text(const std::string &text, char *buf, size_t cap, size_t *needed,
+               const char *where) {
   if (needed) *needed = text.size() + 1;
-  if (!buf || cap < text.size() + 1) {
-    set_error(fn, "buffer of " + std::to_string(cap) + " bytes is too small; " +
+  if (!buf || cap < text.size() + 1)
+    throw Range_error(std::string(where) + ": " + std::to_string(cap) + " bytes are too few; " +
                       std::to_string(text.size() + 1) + " needed");
-    return PCCD_ERANGE;
-  }
   std::memcpy(buf, text.c_str(), text.size() + 1);
   return PCCD_OK;
 }

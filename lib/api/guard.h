@@ -1,8 +1,15 @@
 // The only place where C++ exceptions become C status codes. Every extern "C" entry
-// point runs its body through guard(), so no exception crosses the C API.
+// point runs its body through guard(__func__, ...), so no exception crosses the C API
+// and every message starts with the entry point's name.
+//
+// Messages follow the grammar of polyccd.h ("Error messages"): "pccd_function: PLACE:
+// what is wrong", PLACE a C argument or field name with [index] subscripts, built by
+// place() below.
 #pragma once
 #include <cstring>
+#include <initializer_list>
 #include <new>
+#include <stdexcept>
 #include <type_traits>
 #include <string>
 
@@ -15,6 +22,24 @@ namespace pccd::api {
 void set_error(const char *fn, const std::string &what);
 const char *last_error_text();
 
+// The call is not allowed in the handle's state. Maps to PCCD_ESTATE.
+struct State_error : std::runtime_error {
+  explicit State_error(const std::string &m) : std::runtime_error(m) {}
+};
+
+// A caller buffer is too small (*needed already written). Maps to PCCD_ERANGE.
+struct Range_error : std::runtime_error {
+  explicit Range_error(const std::string &m) : std::runtime_error(m) {}
+};
+
+// A PLACE of the error grammar: name followed by one [i] per index, e.g.
+// place("points", {1, 0, 2}) == "points[1][0][2]".
+inline std::string place(const std::string &name, std::initializer_list<size_t> indices) {
+  std::string s = name;
+  for (size_t i : indices) s += "[" + std::to_string(i) + "]";
+  return s;
+}
+
 template <class F>
 int guard(const char *fn, F &&body) noexcept {
   try {
@@ -25,6 +50,12 @@ int guard(const char *fn, F &&body) noexcept {
   } catch (const arith::Limit_error &e) {
     set_error(fn, e.what());
     return PCCD_ELIMIT;
+  } catch (const State_error &e) {
+    set_error(fn, e.what());
+    return PCCD_ESTATE;
+  } catch (const Range_error &e) {
+    set_error(fn, e.what());
+    return PCCD_ERANGE;
   } catch (const std::bad_alloc &) {
     set_error(fn, "out of memory");
     return PCCD_ENOMEM;
@@ -53,12 +84,25 @@ inline long raw_kind(const pccd_kind &k) {
 }
 
 // Writes text to (buf, cap) with the PCCD_ERANGE protocol of polyccd.h: *needed (when
-// not NULL) gets the size with the NUL; a NULL or short buffer gives PCCD_ERANGE.
-int write_text(const char *fn, const std::string &text, char *buf, size_t cap, size_t *needed);
+// not NULL) gets the size with the NUL; a NULL or short buffer throws Range_error
+// naming `where` (the buffer argument, "buf").
+int write_text(const std::string &text, char *buf, size_t cap, size_t *needed,
+               const char *where = "buf");
 
-// Throws Input_error "<what> is NULL" when p is NULL.
-inline void require(const void *p, const char *what) {
-  if (!p) throw arith::Input_error(std::string(what) + " is NULL");
+// Throws Input_error "<where>: is NULL" when p is NULL; where is the argument's name.
+inline void require(const void *p, const std::string &where) {
+  if (!p) throw arith::Input_error(where + ": is NULL");
+}
+
+// The one check that a result or report handle (any H with a bool `solved`) holds an
+// answer: Input_error when h is NULL, State_error "<where>: holds no answer (nothing was
+// solved into it, or the last solve failed)" when it holds none.
+template <class H>
+void require_solved(const H *h, const char *where) {
+  require(h, where);
+  if (!h->solved)
+    throw State_error(std::string(where) +
+                      ": holds no answer (nothing was solved into it, or the last solve failed)");
 }
 
 // The body of pccd_X_new for a default-constructed handle: *out is NULL on failure.

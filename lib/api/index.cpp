@@ -25,7 +25,7 @@ pccd::scene::Scene_body scene_body(const pccd_body *body, const pccd_motion *mot
 extern "C" {
 
 PCCD_API int pccd_index_new(pccd_index **out, const pccd_body *body, const pccd_motion *motion) {
-  return guard("pccd_index_new", [&] {
+  return guard(__func__, [&] {
     require(out, "out");
     *out = nullptr;
     require(body, "body");
@@ -41,10 +41,10 @@ PCCD_API void pccd_index_free(pccd_index *ix) { delete ix; }
 PCCD_API int pccd_index_query(const pccd_index *ix, const pccd_body *body,
                               const pccd_motion *motion, const pccd_config *cfg,
                               const pccd_scene_options *opt, pccd_report *rep) {
-  return guard("pccd_index_query", [&] {
-    require(ix, "index");
+  return guard(__func__, [&] {
+    require(ix, "ix");
     require(body, "body");
-    require(rep, "report");
+    require(rep, "rep");
     rep->solved = false;  // a failed call leaves no earlier answer readable
     const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
     rep->r = ix->ix->query(scene_body(body, motion), so);
@@ -57,18 +57,18 @@ PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const 
                                    const pccd_motion *const *motions, size_t n,
                                    const pccd_config *cfg, const pccd_scene_options *opt,
                                    pccd_report *const *reports) {
-  return guard("pccd_index_query_many", [&] {
-    require(ix, "index");
+  return guard(__func__, [&] {
+    require(ix, "ix");
     if (n == 0) return PCCD_OK;
     require(bodies, "bodies");
     require(reports, "reports");
     for (size_t k = 0; k < n; ++k)
-      require(reports[k], ("reports[" + std::to_string(k) + "]").c_str());
+      require(reports[k], pccd::api::place("reports", {k}));
     for (size_t k = 0; k < n; ++k) reports[k]->solved = false;  // no earlier answer readable
     const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
     std::vector<pccd::scene::Scene_body> qs(n);
     for (size_t k = 0; k < n; ++k) {
-      require(bodies[k], ("bodies[" + std::to_string(k) + "]").c_str());
+      require(bodies[k], pccd::api::place("bodies", {k}));
       qs[k] = scene_body(bodies[k], motions ? motions[k] : nullptr);
     }
     std::vector<pccd::scene::Scene_report> out;

@@ -6,6 +6,8 @@
 
 using pccd::api::guard;
 using pccd::api::require;
+using pccd::api::require_solved;
+using pccd::api::State_error;
 using pccd::arith::Input_error;
 using pccd::arith::Rational;
 
@@ -17,16 +19,9 @@ struct Time_ref {
   bool exact;
 };
 
-// False (with the error set) when nothing was solved into rep: PCCD_ESTATE.
-bool solved(const pccd_report *rep, const char *fn) {
-  require(rep, "report");
-  if (!rep->solved) pccd::api::set_error(fn, "no scene has been solved into this report");
-  return rep->solved;
-}
-
 const pccd::scene::Pair_report &pair_at(const pccd_report *rep, size_t p) {
   if (p >= rep->r.pairs.size())
-    throw Input_error("pair index " + std::to_string(p) + " out of range (" +
+    throw Input_error("pair: " + std::to_string(p) + " out of range (" +
                       std::to_string(rep->r.pairs.size()) + " pairs in contact)");
   return rep->r.pairs[p];
 }
@@ -34,7 +29,7 @@ const pccd::scene::Pair_report &pair_at(const pccd_report *rep, size_t p) {
 const pccd::scene::Contact_report &contact_at(const pccd_report *rep, size_t p, size_t c) {
   const auto &pr = pair_at(rep, p);
   if (c >= pr.contacts.size())
-    throw Input_error("contact index " + std::to_string(c) + " out of range (" +
+    throw Input_error("contact: " + std::to_string(c) + " out of range (" +
                       std::to_string(pr.contacts.size()) + " contacts)");
   return pr.contacts[c];
 }
@@ -53,13 +48,13 @@ Time_ref time_of(const pccd_report *rep, size_t pair, size_t contact) {
 
 extern "C" {
 
-PCCD_API int pccd_report_new(pccd_report **out) { return pccd::api::new_handle("pccd_report_new", out); }
+PCCD_API int pccd_report_new(pccd_report **out) { return pccd::api::new_handle(__func__, out); }
 
 PCCD_API void pccd_report_free(pccd_report *rep) { delete rep; }
 
 PCCD_API int pccd_report_collides(const pccd_report *rep, int *collides) {
-  return guard("pccd_report_collides", [&]() -> int {
-    if (!solved(rep, "pccd_report_collides")) return PCCD_ESTATE;
+  return guard(__func__, [&]() -> int {
+    require_solved(rep, "rep");
     require(collides, "collides");
     *collides = rep->r.collides ? 1 : 0;
     return PCCD_OK;
@@ -68,35 +63,27 @@ PCCD_API int pccd_report_collides(const pccd_report *rep, int *collides) {
 
 PCCD_API int pccd_report_time(const pccd_report *rep, size_t pair, size_t contact, int which,
                               char *buf, size_t cap, size_t *needed) {
-  return guard("pccd_report_time", [&]() -> int {
-    if (!solved(rep, "pccd_report_time")) return PCCD_ESTATE;
+  return guard(__func__, [&]() -> int {
+    require_solved(rep, "rep");
     if (which < 0 || which > 2)
-      throw Input_error("which is " + std::to_string(which) + "; expected 0 (lo), 1 (hi) or 2 (exact)");
+      throw Input_error("which: " + std::to_string(which) +
+                        " is not 0 (lo), 1 (hi) or 2 (exact)");
     Time_ref t = time_of(rep, pair, contact);
-    if (!t.any) {
-      pccd::api::set_error("pccd_report_time", "there is no contact, so no contact time");
-      return PCCD_ESTATE;
-    }
-    if (which == 2 && !t.exact) {
-      pccd::api::set_error("pccd_report_time", "the contact time is not known exactly "
-                                               "(irrational, or want_exact was 0)");
-      return PCCD_ESTATE;
-    }
-    return pccd::api::write_text("pccd_report_time",
-                                 pccd::arith::to_string(which == 1 ? *t.hi : *t.lo), buf, cap,
+    if (!t.any) throw State_error("rep: there is no contact, so no contact time");
+    if (which == 2 && !t.exact)
+      throw State_error("rep: the contact time is not known exactly (irrational, or "
+                        "want_exact was 0)");
+    return pccd::api::write_text(pccd::arith::to_string(which == 1 ? *t.hi : *t.lo), buf, cap,
                                  needed);
   });
 }
 
 PCCD_API int pccd_report_time_info(const pccd_report *rep, size_t pair, size_t contact,
                                    int *exact, double *approx) {
-  return guard("pccd_report_time_info", [&]() -> int {
-    if (!solved(rep, "pccd_report_time_info")) return PCCD_ESTATE;
+  return guard(__func__, [&]() -> int {
+    require_solved(rep, "rep");
     Time_ref t = time_of(rep, pair, contact);
-    if (!t.any) {
-      pccd::api::set_error("pccd_report_time_info", "there is no contact, so no contact time");
-      return PCCD_ESTATE;
-    }
+    if (!t.any) throw State_error("rep: there is no contact, so no contact time");
     if (exact) *exact = t.exact ? 1 : 0;
     if (approx) *approx = pccd::arith::nearest_double((*t.lo + *t.hi) / 2);
     return PCCD_OK;
@@ -104,8 +91,8 @@ PCCD_API int pccd_report_time_info(const pccd_report *rep, size_t pair, size_t c
 }
 
 PCCD_API int pccd_report_pair_count(const pccd_report *rep, size_t *count) {
-  return guard("pccd_report_pair_count", [&]() -> int {
-    if (!solved(rep, "pccd_report_pair_count")) return PCCD_ESTATE;
+  return guard(__func__, [&]() -> int {
+    require_solved(rep, "rep");
     require(count, "count");
     *count = rep->r.pairs.size();
     return PCCD_OK;
@@ -114,8 +101,8 @@ PCCD_API int pccd_report_pair_count(const pccd_report *rep, size_t *count) {
 
 PCCD_API int pccd_report_pair(const pccd_report *rep, size_t pair, size_t *body_i, size_t *body_j,
                               int *is_first) {
-  return guard("pccd_report_pair", [&]() -> int {
-    if (!solved(rep, "pccd_report_pair")) return PCCD_ESTATE;
+  return guard(__func__, [&]() -> int {
+    require_solved(rep, "rep");
     const auto &p = pair_at(rep, pair);
     if (body_i) *body_i = p.i;
     if (body_j) *body_j = p.j;
@@ -129,8 +116,8 @@ PCCD_API int pccd_report_pair(const pccd_report *rep, size_t pair, size_t *body_
 }
 
 PCCD_API int pccd_report_contact_count(const pccd_report *rep, size_t pair, size_t *count) {
-  return guard("pccd_report_contact_count", [&]() -> int {
-    if (!solved(rep, "pccd_report_contact_count")) return PCCD_ESTATE;
+  return guard(__func__, [&]() -> int {
+    require_solved(rep, "rep");
     require(count, "count");
     *count = pair_at(rep, pair).contacts.size();
     return PCCD_OK;
@@ -139,8 +126,8 @@ PCCD_API int pccd_report_contact_count(const pccd_report *rep, size_t pair, size
 
 PCCD_API int pccd_report_contact(const pccd_report *rep, size_t pair, size_t contact, int *feature_i,
                                  size_t *index_i, int *feature_j, size_t *index_j) {
-  return guard("pccd_report_contact", [&]() -> int {
-    if (!solved(rep, "pccd_report_contact")) return PCCD_ESTATE;
+  return guard(__func__, [&]() -> int {
+    require_solved(rep, "rep");
     const auto &c = contact_at(rep, pair, contact);
     if (feature_i) *feature_i = c.a.type;
     if (index_i) *index_i = c.a.index;
@@ -151,8 +138,8 @@ PCCD_API int pccd_report_contact(const pccd_report *rep, size_t pair, size_t con
 }
 
 PCCD_API int pccd_report_stats(const pccd_report *rep, pccd_scene_stats *stats) {
-  return guard("pccd_report_stats", [&]() -> int {
-    if (!solved(rep, "pccd_report_stats")) return PCCD_ESTATE;
+  return guard(__func__, [&]() -> int {
+    require_solved(rep, "rep");
     require(stats, "stats");
     const auto &s = rep->r.stats;
     *stats = {s.pieces, s.leaves, s.candidates, s.solved, s.static_tests, s.refined, {0, 0, 0, 0, 0}};

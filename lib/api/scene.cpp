@@ -13,14 +13,14 @@ using pccd::arith::Input_error;
 
 extern "C" {
 
-PCCD_API int pccd_scene_new(pccd_scene **out) { return pccd::api::new_handle("pccd_scene_new", out); }
+PCCD_API int pccd_scene_new(pccd_scene **out) { return pccd::api::new_handle(__func__, out); }
 
 PCCD_API void pccd_scene_free(pccd_scene *s) { delete s; }
 
 PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_motion *motion,
                             size_t *index) {
-  return guard("pccd_scene_add", [&] {
-    require(s, "scene");
+  return guard(__func__, [&] {
+    require(s, "s");
     require(body, "body");
     pccd::scene::Scene_body b;
     b.body = body->data;
@@ -32,8 +32,8 @@ PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_mot
 }
 
 PCCD_API int pccd_scene_body_count(const pccd_scene *s, size_t *count) {
-  return guard("pccd_scene_body_count", [&] {
-    require(s, "scene");
+  return guard(__func__, [&] {
+    require(s, "s");
     require(count, "count");
     *count = s->bodies.size();
     return PCCD_OK;
@@ -41,7 +41,7 @@ PCCD_API int pccd_scene_body_count(const pccd_scene *s, size_t *count) {
 }
 
 PCCD_API int pccd_scene_options_init(pccd_scene_options *opt) {
-  return guard("pccd_scene_options_init", [&] {
+  return guard(__func__, [&] {
     require(opt, "opt");
     opt->struct_size = sizeof(pccd_scene_options);
     opt->threads = 1;
@@ -53,9 +53,9 @@ PCCD_API int pccd_scene_options_init(pccd_scene_options *opt) {
 
 PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
                               const pccd_scene_options *opt, pccd_report *rep) {
-  return guard("pccd_scene_solve", [&] {
-    require(s, "scene");
-    require(rep, "report");
+  return guard(__func__, [&] {
+    require(s, "s");
+    require(rep, "rep");
     rep->solved = false;  // a failed call leaves no earlier answer readable
     const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
     rep->r = pccd::scene::solve_scene(s->bodies, so);
@@ -73,15 +73,15 @@ scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene
   so.solve = read_config(cfg);
   if (!opt) return so;
   if (opt->struct_size != sizeof(pccd_scene_options))
-    throw Input_error("opt->struct_size is " + std::to_string(opt->struct_size) +
-                      "; initialise the options with pccd_scene_options_init");
+    throw Input_error("opt.struct_size: " + std::to_string(opt->struct_size) +
+                      " is not sizeof(pccd_scene_options) (initialise with pccd_scene_options_init)");
   if (opt->threads < 1 || opt->threads > 1024)
-    throw Input_error("opt->threads is " + std::to_string(opt->threads) + "; expected 1 to 1024");
+    throw Input_error("opt.threads: " + std::to_string(opt->threads) + " is outside 1..1024");
   if (opt->all_contacts != 0 && opt->all_contacts != 1)
-    throw Input_error("opt->all_contacts is " + std::to_string(opt->all_contacts) + "; expected 0 or 1");
+    throw Input_error("opt.all_contacts: " + std::to_string(opt->all_contacts) + " is not 0 or 1");
   if (opt->broad_phase < PCCD_BROAD_BOXES || opt->broad_phase > PCCD_BROAD_AUTO)
-    throw Input_error("opt->broad_phase is " + std::to_string(opt->broad_phase) +
-                      "; expected PCCD_BROAD_BOXES (0), PCCD_BROAD_BRUTE (1), PCCD_BROAD_RANGE (2) "
+    throw Input_error("opt.broad_phase: " + std::to_string(opt->broad_phase) +
+                      " is not PCCD_BROAD_BOXES (0), PCCD_BROAD_BRUTE (1), PCCD_BROAD_RANGE (2) "
                       "or PCCD_BROAD_AUTO (3)");
   so.threads = opt->threads;
   so.all_contacts = opt->all_contacts == 1;

@@ -8,6 +8,7 @@
 #include "pred/linear_filter.h"
 
 using pccd::api::guard;
+using pccd::api::place;
 using pccd::api::require;
 using pccd::arith::Input_error;
 using pccd::arith::Interval;
@@ -30,7 +31,7 @@ thread_local Tolerance_cache tl_tolerance;
 const Rational *checked_tolerance(const pccd_config *cfg) {
   if (!cfg) return nullptr;
   if (cfg->struct_size != sizeof(pccd_config))
-    throw Input_error("config.struct_size is " + std::to_string(cfg->struct_size) + ", expected " +
+    throw Input_error("config.struct_size: " + std::to_string(cfg->struct_size) + " is not " +
                       std::to_string(sizeof(pccd_config)) + " (initialise with pccd_config_init)");
   if (!cfg->time_tolerance) return nullptr;
   Tolerance_cache &c = tl_tolerance;
@@ -63,8 +64,8 @@ static void check_radii(const pccd_query &q) {
   if (q.kind != PCCD_SPHERE_SPHERE) return;
   for (int i = 0; i < 2; ++i)
     if (sgn(q.radius[i]) <= 0)
-      throw Input_error("radius " + std::to_string(i) + " is " + arith::to_string(q.radius[i]) +
-                        "; radii must be greater than 0");
+      throw Input_error(place("radii", {static_cast<size_t>(i)}) + ": " +
+                        arith::to_string(q.radius[i]) + " is not > 0 (radii must be greater than 0)");
 }
 
 pred::Contact_result solve_query(const pccd_query &q, const pred::Solve_options &opt) {
@@ -90,7 +91,7 @@ pred::Contact_result solve_query(const pccd_query &q, const pred::Solve_options 
 extern "C" {
 
 PCCD_API int pccd_config_init(pccd_config *cfg) {
-  return guard("pccd_config_init", [&] {
+  return guard(__func__, [&] {
     require(cfg, "cfg");
     std::memset(cfg, 0, sizeof *cfg);
     cfg->struct_size = sizeof *cfg;
@@ -102,11 +103,11 @@ PCCD_API int pccd_config_init(pccd_config *cfg) {
 }
 
 PCCD_API int pccd_query_solve(const pccd_query *q, const pccd_config *cfg, pccd_result *res) {
-  return guard("pccd_query_solve", [&] {
-    require(res, "result");
+  return guard(__func__, [&] {
+    require(res, "res");
     res->solved = false;
     res->r = pccd::pred::Contact_result();
-    require(q, "query");
+    require(q, "q");
     pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
     res->r = pccd::api::solve_query(*q, opt);
     res->solved = true;
@@ -116,22 +117,23 @@ PCCD_API int pccd_query_solve(const pccd_query *q, const pccd_config *cfg, pccd_
 
 PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const double *p_t1,
                                  const pccd_config *cfg, pccd_result *res) {
-  return guard("pccd_solve_linear_d", [&] {
-    require(res, "result");
+  return guard(__func__, [&] {
+    require(res, "res");
     res->solved = false;
     pccd::api::reset(res->r);
     require(p_t0, "p_t0");
     require(p_t1, "p_t1");
     const long k = pccd::api::raw_kind(kind);
     if (k == PCCD_SPHERE_SPHERE)
-      throw Input_error("sphere-sphere queries need radii: use pccd_query_new");
+      throw Input_error("kind: sphere-sphere queries need radii: use pccd_query_new");
     const size_t n = pccd::api::kind_points(k);
     pccd::api::checked_config(cfg);
-    for (size_t i = 0; i < 3 * n; ++i)
-      if (!std::isfinite(p_t0[i]) || !std::isfinite(p_t1[i])) {
-        const bool bad0 = !std::isfinite(p_t0[i]);
-        throw Input_error(std::string(bad0 ? "p_t0[" : "p_t1[") + std::to_string(i) +
-                          "] is not a finite number");
+    // A non-finite coordinate a of point i is named p_t0[i][a] (or p_t1[i][a]).
+    for (size_t i = 0; i < n; ++i)
+      for (size_t a = 0; a < 3; ++a) {
+        const double x0 = p_t0[3 * i + a], x1 = p_t1[3 * i + a];
+        if (!std::isfinite(x0)) pccd::arith::rational_from_double(x0, place("p_t0", {i, a}));
+        if (!std::isfinite(x1)) pccd::arith::rational_from_double(x1, place("p_t1", {i, a}));
       }
     // The static filter (pred/linear_filter.h) proves most misses without allocating.
     switch (pccd::pred::linear_filter(static_cast<int>(k), p_t0, p_t1)) {
@@ -158,10 +160,10 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
     iq.kind = static_cast<int>(k);
     iq.p.resize(n);
     for (size_t i = 0; i < n; ++i)
-      for (int a = 0; a < 3; ++a) {
+      for (size_t a = 0; a < 3; ++a) {
         const double x0 = p_t0[3 * i + a], x1 = p_t1[3 * i + a];
         // x(t) = x0 + (x1 - x0) t: the slope is enclosed, not rounded.
-        iq.p[i][a] = pccd::poly::Poly<Interval>(
+        iq.p[i][static_cast<int>(a)] = pccd::poly::Poly<Interval>(
             std::vector<Interval>{Interval(x0), Interval(x1) - Interval(x0)});
       }
     auto exact = [&] {

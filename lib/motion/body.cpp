@@ -63,11 +63,11 @@ Mesh_body::Mesh_body(std::vector<Point3_q> vertices, std::vector<Triangle> trian
 
 Sphere_body::Sphere_body(std::vector<Point3_q> centers, std::vector<arith::Rational> radii)
     : centers_(std::move(centers)), radii_(std::move(radii)) {
-  check_body_size(centers_.size(), "spheres");
+  check_body_size(centers_.size(), "centers");
   if (centers_.size() != radii_.size())
     throw arith::Internal_error("Sphere_body: " + std::to_string(centers_.size()) +
                                 " centers but " + std::to_string(radii_.size()) + " radii");
-  if (centers_.empty()) throw arith::Input_error("spheres: a sphere body needs at least one ball");
+  if (centers_.empty()) throw arith::Input_error("centers: a sphere body needs at least one ball");
   for (size_t i = 0; i < radii_.size(); ++i)
     if (sgn(radii_[i]) <= 0)
       throw arith::Input_error("radii[" + std::to_string(i) + "]: " + arith::to_string(radii_[i]) +

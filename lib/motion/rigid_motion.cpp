@@ -24,8 +24,10 @@ V3 constant(const Vec3_q &p) {
 
 Rational norm2(const Quat_q &q) { return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]; }
 
-void require_nonzero(const Quat_q &q, const char *what) {
-  if (sgn(norm2(q)) == 0) throw Input_error(std::string(what) + " is the zero quaternion");
+// Input_error "<where>: ..." (where names the quaternion argument, as the C API does).
+void require_nonzero(const Quat_q &q, const char *where) {
+  if (sgn(norm2(q)) == 0)
+    throw Input_error(std::string(where) + ": the zero quaternion is not a rotation");
 }
 
 }  // namespace
@@ -63,7 +65,7 @@ Homogeneous_traj Rigid_motion::point_trajectory(const Vec3_q &p) const {
 
 Vec3_q Rigid_motion::position(const Vec3_q &p, const Rational &t) const {
   if (sgn(t) < 0 || t > 1)
-    throw Input_error("t = " + arith::to_string(t) + " is outside [0, 1]");
+    throw Input_error("t: " + arith::to_string(t) + " is outside [0, 1]");
   // Evaluate r first: Rn(r(t)) = Rn(r)(t) since Rn is a polynomial map of r.
   Quat_q rt{r[0].eval(t), r[1].eval(t), r[2].eval(t), r[3].eval(t)};
   const Rational W = norm2(rt);
@@ -138,14 +140,14 @@ void Rigid_motion::validate() const {
 }
 
 void Rigid_motion::compose_body(const Quat_q &q0, const Vec3_q &p0) {
-  require_nonzero(q0, "the pose quaternion");
+  require_nonzero(q0, "quat");
   // b' = |q0|^2 (Rn(r) p0 + b), with the old r; then r' = r q0.
   b = scale(norm2(q0), add(mat_vec(rotation_numerator(r), p0), b));
   r = quat_mul(r, quat_constant(q0));
 }
 
 void Rigid_motion::compose_world(const Quat_q &q1, const Vec3_q &p1) {
-  require_nonzero(q1, "the pose quaternion");
+  require_nonzero(q1, "quat");
   const Mat3_poly R1n = rotation_numerator(quat_constant(q1));  // constant polynomials
   b = mat_vec(R1n, b);
   const Rational inv = 1 / norm2(q1);

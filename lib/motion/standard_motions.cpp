@@ -43,7 +43,7 @@ V3 hermite_path(const Vec3_q &p0, const Vec3_q &v0, const Vec3_q &p1, const Vec3
 Rigid_motion axis_rotation(const Vec3_q &axis, const Vec3_q &center, const Rational &tau0,
                            const Rational &tau1) {
   if (sgn(axis[0]) == 0 && sgn(axis[1]) == 0 && sgn(axis[2]) == 0)
-    throw Input_error("the axis direction is the zero vector");
+    throw Input_error("axis: the direction is the zero vector");
   Rigid_motion m;
   m.r[0] = Poly_q::constant(Rational(1));
   const Rational dtau = tau1 - tau0;

@@ -1,8 +1,9 @@
 /*
- * exact_rational.h -- a small non-negative decimal bignum and rationals for test_api.c:
+ * exact_rational.h -- a small non-negative decimal bignum and rationals for the query tests:
  * enough to compare the "p/q" strings the library prints, exactly, by cross-
  * multiplication (no GMP in the test, so it checks the library with independent code).
- * Header-only static functions; included by test_api.c only.
+ * Header-only static inline functions (a test that uses few of them still compiles under
+ * -Werror); included through query_check.h.
  */
 #ifndef POLYCCD_TESTS_EXACT_RATIONAL_H
 #define POLYCCD_TESTS_EXACT_RATIONAL_H
@@ -22,12 +23,12 @@ typedef struct big {
 
 static int g_big_overflow; /* set when a value does not fit BIG_LIMBS */
 
-static void big_norm(big *r)
+static inline void big_norm(big *r)
 {
   while (r->n > 0 && r->d[r->n - 1] == 0) r->n--;
 }
 
-static void big_small(big *r, uint32_t v)
+static inline void big_small(big *r, uint32_t v)
 {
   r->n = 0;
   if (v >= BIG_BASE) {
@@ -41,7 +42,7 @@ static void big_small(big *r, uint32_t v)
 }
 
 /* Digits s[0..len) (all '0'..'9', len >= 1) into r; 0 when too long. */
-static int big_from_digits(big *r, const char *s, size_t len)
+static inline int big_from_digits(big *r, const char *s, size_t len)
 {
   size_t end = len;
   r->n = 0;
@@ -60,7 +61,7 @@ static int big_from_digits(big *r, const char *s, size_t len)
   return 1;
 }
 
-static int big_cmp(const big *a, const big *b)
+static inline int big_cmp(const big *a, const big *b)
 {
   size_t i;
   if (a->n != b->n) return a->n < b->n ? -1 : 1;
@@ -71,7 +72,7 @@ static int big_cmp(const big *a, const big *b)
 }
 
 /* r = a * b; r must not alias a or b. */
-static void big_mul(big *r, const big *a, const big *b)
+static inline void big_mul(big *r, const big *a, const big *b)
 {
   size_t i, j;
   if (a->n == 0 || b->n == 0) {
@@ -103,7 +104,7 @@ static void big_mul(big *r, const big *a, const big *b)
 }
 
 /* r = a + b (r may alias a or b). */
-static void big_add(big *r, const big *a, const big *b)
+static inline void big_add(big *r, const big *a, const big *b)
 {
   size_t n = a->n > b->n ? a->n : b->n, i;
   uint32_t carry = 0;
@@ -123,7 +124,7 @@ static void big_add(big *r, const big *a, const big *b)
 }
 
 /* r = a - b, requires a >= b (r may alias a). */
-static void big_sub(big *r, const big *a, const big *b)
+static inline void big_sub(big *r, const big *a, const big *b)
 {
   size_t i;
   uint32_t borrow = 0;
@@ -143,7 +144,7 @@ typedef struct rat {
 
 /* Parses "p" or "p/q" (decimal digits only, q > 0), the form the library prints times in
  * and the form the expectations below are written in. 0 when s is anything else. */
-static int rat_parse(rat *r, const char *s)
+static inline int rat_parse(rat *r, const char *s)
 {
   const char *slash = strchr(s, '/');
   size_t len = slash ? (size_t)(slash - s) : strlen(s), i;
@@ -164,7 +165,7 @@ static int rat_parse(rat *r, const char *s)
 }
 
 /* sign(a - b) */
-static int rat_cmp(const rat *a, const rat *b)
+static inline int rat_cmp(const rat *a, const rat *b)
 {
   static big x, y; /* static: large (2.4 KB each); the test is single-threaded */
   big_mul(&x, &a->num, &b->den);
@@ -173,7 +174,7 @@ static int rat_cmp(const rat *a, const rat *b)
 }
 
 /* hi - lo <= tol  <=>  hi.num lo.den tol.den <= tol.num hi.den lo.den + lo.num hi.den tol.den */
-static int rat_width_le(const rat *lo, const rat *hi, const rat *tol)
+static inline int rat_width_le(const rat *lo, const rat *hi, const rat *tol)
 {
   static big a, b, l, r1, r2;
   big_mul(&a, &hi->num, &lo->den);

@@ -4,9 +4,10 @@
 #
 # Builds the library with -fsanitize=address,undefined into $SAN_BUILD (default
 # build-asan/, beside the normal build/, which it does not touch) through the Makefile's
-# own compile rules (SAN, BUILD and LIB overridden), links tests/c/test_api.c,
+# own compile rules (SAN, BUILD and LIB overridden), links the query tests (tests/c/test_config.c,
+# test_query.c, test_result.c, test_solve.c, test_solve_face.c),
 # test_scene.c and test_index.c against it and runs them: any address error, leak (LeakSanitizer) or undefined behaviour is fatal.
-# The FP-environment checks of test_api run here too (the sanitizer runtimes must not
+# The FP-environment checks of those tests run here too (the sanitizer runtimes must not
 # change the rounding mode either).
 #
 # Suggested Makefile target:
@@ -21,7 +22,7 @@ CC=${CC:-cc}
 
 make --no-print-directory SAN="$SAN_FLAGS" BUILD="$SAN_BUILD" LIB="$SAN_BUILD/libpolyccd.so" \
   "$SAN_BUILD/libpolyccd.so"
-for prog in test_api test_scene test_index; do
+for prog in test_config test_query test_result test_solve test_solve_face test_scene test_index; do
   $CC -std=c99 -Wall -Wextra -Werror -g -Iinclude $SAN_FLAGS -o "$SAN_BUILD/$prog" \
     "tests/c/$prog.c" -L"$SAN_BUILD" -lpolyccd -Wl,-rpath,'$ORIGIN' -lm
   echo "== $SAN_BUILD/$prog (ASan + UBSan)"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Memory checks of libpolyccd under valgrind (`make valgrind`, which builds build/test_*).
 #
-# 1. The C API tests (build/test_api, test_motion, test_body, test_scene, test_index)
+# 1. The C API tests (build/test_config, test_query, test_result, test_solve,
+#    test_solve_face, test_motion, test_body, test_scene, test_index)
 #    under memcheck: no error of any kind, no definite or indirect leak, and each test
 #    itself must pass.
 # 2. The regression corpus through the Python command line (`python -m polyccd corpus
@@ -34,7 +35,8 @@ if ! command -v valgrind >/dev/null; then
 fi
 
 # ---- 1. the C tests ------------------------------------------------------------------
-for prog in test_api test_motion test_body test_scene test_index; do
+for prog in test_config test_query test_result test_solve test_solve_face test_motion test_body \
+            test_scene test_index; do
   log="$BUILD/valgrind-$prog.log"
   echo "== valgrind $BUILD/$prog (log: $log)"
   "${VG[@]}" --log-file="$log" "$BUILD/$prog" > "$BUILD/valgrind-$prog.out"

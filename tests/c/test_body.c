@@ -50,8 +50,8 @@ static void tetrahedron(void)
   tris[0] = 99;
   FAILS(pccd_body_edge_triangles(b, 0, tris, 1, NULL), PCCD_ERANGE, "needed");
   CHECK(tris[0] == 99);
-  FAILS(pccd_body_edge(b, 6, v), PCCD_EINVAL, "edge 6 out of range (the body has 6 edges)");
-  FAILS(pccd_body_edge(b, 0, NULL), PCCD_EINVAL, "v is NULL");
+  FAILS(pccd_body_edge(b, 6, v), PCCD_EINVAL, "pccd_body_edge: i: edge 6 out of range (the body has 6 edges)");
+  FAILS(pccd_body_edge(b, 0, NULL), PCCD_EINVAL, "pccd_body_edge: v: is NULL");
   pccd_body_free(b);
 }
 
@@ -114,9 +114,9 @@ static void errors(void)
   memset(ten, 0, sizeof ten);
   memcpy(bad, kTetV, sizeof bad);
 
-  FAILS(pccd_body_new_mesh_d(NULL, kTetV, 4, kTetT, 4), PCCD_EINVAL, "out is NULL");
+  FAILS(pccd_body_new_mesh_d(NULL, kTetV, 4, kTetT, 4), PCCD_EINVAL, "pccd_body_new_mesh_d: out: is NULL");
   b = (pccd_body *)&n; /* *out is reset to NULL on error */
-  FAILS(pccd_body_new_mesh_d(&b, kTetV, 4, kTetT, 0), PCCD_EINVAL, "at least one triangle");
+  FAILS(pccd_body_new_mesh_d(&b, kTetV, 4, kTetT, 0), PCCD_EINVAL, "triangles: a mesh needs at least one triangle");
   CHECK(b == NULL);
   FAILS(pccd_body_new_mesh_d(&b, kTetV, 4, far, 1), PCCD_EINVAL,
         "triangles[0][1]: index 12 out of range (4 vertices)");
@@ -124,37 +124,37 @@ static void errors(void)
   FAILS(pccd_body_new_mesh_d(&b, ten, 10, tri10, 4), PCCD_EINVAL,
         "triangles[3][1]: index 12 out of range (10 vertices)");
   bad[7] = NAN;
-  FAILS(pccd_body_new_mesh_d(&b, bad, 4, kTetT, 4), PCCD_EINVAL, "vertices[2][1]: NaN");
+  FAILS(pccd_body_new_mesh_d(&b, bad, 4, kTetT, 4), PCCD_EINVAL, "pccd_body_new_mesh_d: vertices[2][1]: NaN");
   bad[7] = -INFINITY;
   FAILS(pccd_body_new_mesh_d(&b, bad, 4, kTetT, 4), PCCD_EINVAL, "vertices[2][1]: infinity");
-  FAILS(pccd_body_new_mesh_d(&b, NULL, 4, kTetT, 4), PCCD_EINVAL, "vertices is NULL");
-  FAILS(pccd_body_new_mesh_d(&b, kTetV, 4, NULL, 4), PCCD_EINVAL, "triangles is NULL");
+  FAILS(pccd_body_new_mesh_d(&b, NULL, 4, kTetT, 4), PCCD_EINVAL, "vertices: is NULL");
+  FAILS(pccd_body_new_mesh_d(&b, kTetV, 4, NULL, 4), PCCD_EINVAL, "triangles: is NULL");
   FAILS(pccd_body_new_mesh_d(&b, kTetV, (size_t)PCCD_MAX_BODY_ELEMENTS + 1, kTetT, 4),
         PCCD_ELIMIT, "vertices");
   FAILS(pccd_body_new_mesh_d(&b, kTetV, 4, kTetT, (size_t)PCCD_MAX_BODY_ELEMENTS + 1),
         PCCD_ELIMIT, "triangles");
   FAILS(pccd_body_new_mesh_s(&b, vs_bad, 1, far, 1), PCCD_EINVAL,
         "vertices[0][1]: \"1/0\" has a zero denominator");
-  FAILS(pccd_body_new_mesh_s(&b, NULL, 1, far, 1), PCCD_EINVAL, "vertices is NULL");
+  FAILS(pccd_body_new_mesh_s(&b, NULL, 1, far, 1), PCCD_EINVAL, "vertices: is NULL");
   CHECK(b == NULL);
 
   FAILS(pccd_body_new_spheres_d(&b, c, rneg, 1), PCCD_EINVAL, "radii[0]: -1/2 is not > 0");
   FAILS(pccd_body_new_spheres_d(&b, c, rzero, 1), PCCD_EINVAL, "radii[0]: 0 is not > 0");
   FAILS(pccd_body_new_spheres_d(&b, c, rnan, 1), PCCD_EINVAL, "radii[0]: NaN");
-  FAILS(pccd_body_new_spheres_d(&b, c, rneg, 0), PCCD_EINVAL, "at least one ball");
-  FAILS(pccd_body_new_spheres_d(&b, NULL, rneg, 1), PCCD_EINVAL, "centers is NULL");
-  FAILS(pccd_body_new_spheres_d(&b, c, NULL, 1), PCCD_EINVAL, "radii is NULL");
+  FAILS(pccd_body_new_spheres_d(&b, c, rneg, 0), PCCD_EINVAL, "centers: a sphere body needs at least one ball");
+  FAILS(pccd_body_new_spheres_d(&b, NULL, rneg, 1), PCCD_EINVAL, "centers: is NULL");
+  FAILS(pccd_body_new_spheres_d(&b, c, NULL, 1), PCCD_EINVAL, "radii: is NULL");
   FAILS(pccd_body_new_spheres_d(&b, c, rneg, (size_t)PCCD_MAX_BODY_ELEMENTS + 1), PCCD_ELIMIT,
         "spheres");
   FAILS(pccd_body_new_spheres_s(&b, cs, rs_neg, 1), PCCD_EINVAL, "radii[0]: -1/2 is not > 0");
   FAILS(pccd_body_new_spheres_s(&b, cs, rs_bad, 1), PCCD_EINVAL, "radii[0]: \"abc\"");
-  FAILS(pccd_body_new_spheres_s(&b, cs, rs_null, 1), PCCD_EINVAL, "radii[0] is NULL");
+  FAILS(pccd_body_new_spheres_s(&b, cs, rs_null, 1), PCCD_EINVAL, "pccd_body_new_spheres_s: radii[0]: is NULL");
   CHECK(b == NULL);
 
-  FAILS(pccd_body_kind(NULL, &kind), PCCD_EINVAL, "body is NULL");
-  FAILS(pccd_body_counts(NULL, &n, NULL, NULL), PCCD_EINVAL, "body is NULL");
-  FAILS(pccd_body_edge(NULL, 0, NULL), PCCD_EINVAL, "body is NULL");
-  FAILS(pccd_body_edge_triangles(NULL, 0, NULL, 0, NULL), PCCD_EINVAL, "body is NULL");
+  FAILS(pccd_body_kind(NULL, &kind), PCCD_EINVAL, "b: is NULL");
+  FAILS(pccd_body_counts(NULL, &n, NULL, NULL), PCCD_EINVAL, "b: is NULL");
+  FAILS(pccd_body_edge(NULL, 0, NULL), PCCD_EINVAL, "b: is NULL");
+  FAILS(pccd_body_edge_triangles(NULL, 0, NULL, 0, NULL), PCCD_EINVAL, "b: is NULL");
   pccd_body_free(NULL); /* does nothing */
 }
 

@@ -122,7 +122,7 @@ static void known_answers(int broad, unsigned threads)
                     time_is(rep, 0, c, 2, "1/2");
   }
   CHECK(all_on_faces);
-  FAILS(pccd_report_pair(rep, 1, NULL, NULL, NULL), PCCD_EINVAL, "pair index 1 out of range");
+  FAILS(pccd_report_pair(rep, 1, NULL, NULL, NULL), PCCD_EINVAL, "pair: 1 out of range");
 
   /* All contacts: the first ones above again, then later ones, ordered by time (one
    * thread count only: the slowest query here, run under valgrind too). */
@@ -301,10 +301,10 @@ static void errors(void)
   OK(pccd_report_new(&rep));
 
   /* pccd_index_new: *out is NULL after every error. */
-  FAILS(pccd_index_new(NULL, cube, NULL), PCCD_EINVAL, "out is NULL");
+  FAILS(pccd_index_new(NULL, cube, NULL), PCCD_EINVAL, "pccd_index_new: out: is NULL");
   sentinel = (pccd_index *)&v; /* any non-NULL value */
   ix = sentinel;
-  FAILS(pccd_index_new(&ix, NULL, NULL), PCCD_EINVAL, "body is NULL");
+  FAILS(pccd_index_new(&ix, NULL, NULL), PCCD_EINVAL, "body: is NULL");
   CHECK(ix == NULL);
   CHECK(strstr(pccd_last_error(), "pccd_index_new") != NULL);
   ix = sentinel;
@@ -314,41 +314,41 @@ static void errors(void)
 
   /* pccd_index_query. */
   OK(pccd_index_new(&ix, cube, NULL));
-  FAILS(pccd_index_query(NULL, cube, m, NULL, NULL, rep), PCCD_EINVAL, "index is NULL");
-  FAILS(pccd_index_query(ix, NULL, m, NULL, NULL, rep), PCCD_EINVAL, "body is NULL");
-  FAILS(pccd_index_query(ix, cube, m, NULL, NULL, NULL), PCCD_EINVAL, "report is NULL");
+  FAILS(pccd_index_query(NULL, cube, m, NULL, NULL, rep), PCCD_EINVAL, "pccd_index_query: ix: is NULL");
+  FAILS(pccd_index_query(ix, NULL, m, NULL, NULL, rep), PCCD_EINVAL, "body: is NULL");
+  FAILS(pccd_index_query(ix, cube, m, NULL, NULL, NULL), PCCD_EINVAL, "rep: is NULL");
   FAILS(pccd_index_query(ix, cube, bad, NULL, NULL, rep), PCCD_EINVAL, "motion: ");
   CHECK(strstr(pccd_last_error(), "pccd_index_query") != NULL &&
         strstr(pccd_last_error(), "vanishes at t = 1/2") != NULL);
-  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "no scene has been solved");
+  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "rep: holds no answer");
   OK(pccd_scene_options_init(&opt));
   opt.struct_size = 3;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt->struct_size is 3");
+  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.struct_size: 3 is not");
   OK(pccd_scene_options_init(&opt));
   opt.threads = 0;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt->threads is 0");
+  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.threads: 0 is outside");
   opt.threads = 1025;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt->threads is 1025");
+  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.threads: 1025 is outside");
   OK(pccd_scene_options_init(&opt));
   opt.all_contacts = 2;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt->all_contacts is 2");
+  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.all_contacts: 2 is not 0 or 1");
   OK(pccd_scene_options_init(&opt));
   opt.broad_phase = 4;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt->broad_phase is 4");
+  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.broad_phase: 4 is not");
   CHECK(strstr(pccd_last_error(), "PCCD_BROAD_AUTO (3)") != NULL);
   opt.broad_phase = -1;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt->broad_phase is -1");
+  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.broad_phase: -1 is not");
   OK(pccd_config_init(&cfg));
   cfg.time_tolerance = "0";
-  FAILS(pccd_index_query(ix, cube, m, &cfg, NULL, rep), PCCD_EINVAL, "time_tolerance");
-  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "no scene has been solved");
+  FAILS(pccd_index_query(ix, cube, m, &cfg, NULL, rep), PCCD_EINVAL, "pccd_index_query: config.time_tolerance: ");
+  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "rep: holds no answer");
   /* A failed call leaves no earlier answer readable: solve, then fail on bad options. */
   OK(pccd_index_query(ix, cube, m, NULL, NULL, rep));
   OK(pccd_report_collides(rep, &v));
   OK(pccd_scene_options_init(&opt));
   opt.threads = 0;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt->threads is 0");
-  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "no scene has been solved");
+  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.threads: 0 is outside");
+  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "rep: holds no answer");
   /* The defaults of pccd_scene_options_init: PCCD_BROAD_AUTO, 1 thread, first contacts. */
   OK(pccd_scene_options_init(&opt));
   CHECK(opt.broad_phase == PCCD_BROAD_AUTO && opt.threads == 1 && opt.all_contacts == 0 &&
@@ -407,23 +407,23 @@ static void many(unsigned threads)
         "bodies[1].motion: ");
   CHECK(strstr(pccd_last_error(), "vanishes at t = 1/2") != NULL);
   for (k = 0; k < 3; ++k)
-    FAILS(pccd_report_collides(reps[k], &collides), PCCD_ESTATE, "no scene has been solved");
+    FAILS(pccd_report_collides(reps[k], &collides), PCCD_ESTATE, "rep: holds no answer");
   motions[1] = far;
-  FAILS(pccd_index_query_many(NULL, bodies, motions, 3, NULL, NULL, reps), PCCD_EINVAL, "NULL");
-  FAILS(pccd_index_query_many(ix, NULL, motions, 3, NULL, NULL, reps), PCCD_EINVAL, "NULL");
-  FAILS(pccd_index_query_many(ix, bodies, motions, 3, NULL, NULL, NULL), PCCD_EINVAL, "NULL");
+  FAILS(pccd_index_query_many(NULL, bodies, motions, 3, NULL, NULL, reps), PCCD_EINVAL, "ix: is NULL");
+  FAILS(pccd_index_query_many(ix, NULL, motions, 3, NULL, NULL, reps), PCCD_EINVAL, "bodies: is NULL");
+  FAILS(pccd_index_query_many(ix, bodies, motions, 3, NULL, NULL, NULL), PCCD_EINVAL, "reports: is NULL");
   bodies[2] = NULL;
   FAILS(pccd_index_query_many(ix, bodies, motions, 3, NULL, NULL, reps), PCCD_EINVAL,
-        "bodies[2] is NULL");
+        "pccd_index_query_many: bodies[2]: is NULL");
   bodies[2] = cube;
   {
     pccd_report *const with_null[3] = {reps[0], NULL, reps[2]};
     FAILS(pccd_index_query_many(ix, bodies, motions, 3, NULL, NULL, with_null), PCCD_EINVAL,
-          "reports[1] is NULL");
+          "reports[1]: is NULL");
   }
   opt.threads = 0;
   FAILS(pccd_index_query_many(ix, bodies, motions, 3, NULL, &opt, reps), PCCD_EINVAL,
-        "opt->threads is 0");
+        "opt.threads: 0 is outside");
 done:
   for (k = 0; k < 3; ++k) pccd_report_free(reps[k]);
   pccd_report_free(one);

@@ -200,36 +200,36 @@ static void error_paths(void)
   OK(pccd_motion_new(&m));
   FAILS(pccd_motion_copy(NULL, m), PCCD_EINVAL, "out");
   c = m; /* must be reset to NULL on error */
-  FAILS(pccd_motion_copy(&c, NULL), PCCD_EINVAL, "motion");
+  FAILS(pccd_motion_copy(&c, NULL), PCCD_EINVAL, "pccd_motion_copy: m: is NULL");
   CHECK(c == NULL);
-  FAILS(pccd_motion_set_translation_d(NULL, 0, NULL, 0), PCCD_EINVAL, "motion");
-  FAILS(pccd_motion_set_translation_d(m, 3, NULL, 0), PCCD_EINVAL, "axis 3");
-  FAILS(pccd_motion_set_rotation_d(m, 4, NULL, 0), PCCD_EINVAL, "component 4");
-  FAILS(pccd_motion_set_translation_d(m, 0, NULL, 2), PCCD_EINVAL, "coeffs");
+  FAILS(pccd_motion_set_translation_d(NULL, 0, NULL, 0), PCCD_EINVAL, "m: is NULL");
+  FAILS(pccd_motion_set_translation_d(m, 3, NULL, 0), PCCD_EINVAL, "pccd_motion_set_translation_d: axis: 3 out of range");
+  FAILS(pccd_motion_set_rotation_d(m, 4, NULL, 0), PCCD_EINVAL, "pccd_motion_set_rotation_d: component: 4 out of range");
+  FAILS(pccd_motion_set_translation_d(m, 0, NULL, 2), PCCD_EINVAL, "coeffs: is NULL");
   FAILS(pccd_motion_set_translation_d(m, 1, nan_coeffs, 2), PCCD_EINVAL,
-        "translation y coefficient 1: NaN");
-  FAILS(pccd_motion_set_rotation_s(m, 3, bad, 2), PCCD_EINVAL, "rotation z coefficient 1");
-  FAILS(pccd_motion_set_rotation_d(m, 2, big, 66), PCCD_ELIMIT, "rotation y: degree 65");
+        "pccd_motion_set_translation_d: translation[1][1]: NaN");
+  FAILS(pccd_motion_set_rotation_s(m, 3, bad, 2), PCCD_EINVAL, "pccd_motion_set_rotation_s: rotation[3][1]: ");
+  FAILS(pccd_motion_set_rotation_d(m, 2, big, 66), PCCD_ELIMIT, "pccd_motion_set_rotation_d: rotation[2]: degree 65");
   OK(pccd_motion_set_rotation_d(m, 2, big, 65)); /* degree 64 of zeros: allowed */
-  FAILS(pccd_motion_set_linear_translation_s(m, zero3, bad3), PCCD_EINVAL, "p1[1]");
-  FAILS(pccd_motion_set_hermite_translation_s(m, zero3, zero3, zero3, NULL), PCCD_EINVAL, "v1");
-  FAILS(pccd_motion_set_axis_rotation_s(m, zero3, zero3, "0", "1"), PCCD_EINVAL, "zero vector");
-  FAILS(pccd_motion_set_axis_rotation_s(m, e1, zero3, "0", "x"), PCCD_EINVAL, "tau1");
-  FAILS(pccd_motion_set_screw_s(m, e1, zero3, "0", "1", NULL), PCCD_EINVAL, "advance");
-  FAILS(pccd_motion_compose_pose_s(m, 2, one_q, zero3), PCCD_EINVAL, "side");
-  FAILS(pccd_motion_compose_pose_s(m, PCCD_POSE_WORLD, zero_q, zero3), PCCD_EINVAL, "zero");
-  FAILS(pccd_motion_compose_pose_s(m, PCCD_POSE_BODY, one_q, bad3), PCCD_EINVAL, "offset[1]");
+  FAILS(pccd_motion_set_linear_translation_s(m, zero3, bad3), PCCD_EINVAL, "pccd_motion_set_linear_translation_s: p1[1]: ");
+  FAILS(pccd_motion_set_hermite_translation_s(m, zero3, zero3, zero3, NULL), PCCD_EINVAL, "v1: is NULL");
+  FAILS(pccd_motion_set_axis_rotation_s(m, zero3, zero3, "0", "1"), PCCD_EINVAL, "axis: the direction is the zero vector");
+  FAILS(pccd_motion_set_axis_rotation_s(m, e1, zero3, "0", "x"), PCCD_EINVAL, "tau1: \"x\"");
+  FAILS(pccd_motion_set_screw_s(m, e1, zero3, "0", "1", NULL), PCCD_EINVAL, "advance: is NULL");
+  FAILS(pccd_motion_compose_pose_s(m, 2, one_q, zero3), PCCD_EINVAL, "side: 2 is not");
+  FAILS(pccd_motion_compose_pose_s(m, PCCD_POSE_WORLD, zero_q, zero3), PCCD_EINVAL, "quat: the zero quaternion");
+  FAILS(pccd_motion_compose_pose_s(m, PCCD_POSE_BODY, one_q, bad3), PCCD_EINVAL, "pccd_motion_compose_pose_s: offset[1]: ");
   /* On error the motion is unchanged: still the identity. */
   POS(m, "1", "2", "3", "1", "1 2 3");
-  FAILS(pccd_motion_position_s(m, e1, "2", buf, sizeof buf, NULL), PCCD_EINVAL, "outside");
-  FAILS(pccd_motion_position_s(m, bad3, "0", buf, sizeof buf, NULL), PCCD_EINVAL, "p[1]");
-  FAILS(pccd_motion_position_s(m, e1, NULL, buf, sizeof buf, NULL), PCCD_EINVAL, "t is NULL");
+  FAILS(pccd_motion_position_s(m, e1, "2", buf, sizeof buf, NULL), PCCD_EINVAL, "t: 2 is outside [0, 1]");
+  FAILS(pccd_motion_position_s(m, bad3, "0", buf, sizeof buf, NULL), PCCD_EINVAL, "pccd_motion_position_s: p[1]: ");
+  FAILS(pccd_motion_position_s(m, e1, NULL, buf, sizeof buf, NULL), PCCD_EINVAL, "pccd_motion_position_s: t: is NULL");
 
   g_case = "ERANGE protocol";
   /* "1 0 0" needs 6 bytes. */
-  FAILS(pccd_motion_position_s(m, e1, "0", buf, 5, &needed), PCCD_ERANGE, "6 needed");
+  FAILS(pccd_motion_position_s(m, e1, "0", buf, 5, &needed), PCCD_ERANGE, "buf: 5 bytes are too few; 6 needed");
   CHECK(needed == 6 && strcmp(buf, "keep") == 0);
-  FAILS(pccd_motion_position_s(m, e1, "0", NULL, 0, &needed), PCCD_ERANGE, "too small");
+  FAILS(pccd_motion_position_s(m, e1, "0", NULL, 0, &needed), PCCD_ERANGE, "buf: 0 bytes are too few");
   OK(pccd_motion_position_s(m, e1, "0", buf, 6, &needed));
   CHECK(needed == 6 && strcmp(buf, "1 0 0") == 0);
 

@@ -1,7 +1,9 @@
 """polyccd: exact continuous collision detection of moving primitives.
 
 Python bindings of libpolyccd (see bindings/python/API.md). Every answer comes from the C
-library; this package converts inputs exactly and raises clear errors.
+library; this package converts inputs exactly and raises clear errors. The applications
+(command line, file readers, corpus runner, data loaders, rendering, demo) live in
+polyccd.apps, which `import polyccd` does not import.
 """
 __version__ = "0.1.0"
 
@@ -29,7 +31,7 @@ from ._results import KINDS, ContactTime, Feature, Result  # noqa: E402
 from ._solve import collides_linear, solve, solve_linear  # noqa: E402
 from ._motion import Motion  # noqa: E402
 from ._body import Mesh, Spheres  # noqa: E402
-from ._scene import Body, Contact, PairResult, SceneResult, load_scene  # noqa: E402
+from ._scene import Body, Contact, PairResult, SceneResult  # noqa: E402
 from ._scene import check_scene as check  # noqa: E402
 from ._index import Index  # noqa: E402
 
@@ -37,3 +39,12 @@ __all__ = ["__version__", "KINDS", "solve", "solve_linear", "collides_linear", "
            "ContactTime", "Feature", "Motion", "Mesh", "Spheres", "Body", "check", "load_scene", "Index",
            "SceneResult", "PairResult", "Contact", "Error", "InputError",
            "LimitError", "InternalError"]
+
+
+def __getattr__(name):
+    """polyccd.load_scene, the scene-file reader of polyccd.apps, imported on first use
+    (so that `import polyccd` does not import the applications)."""
+    if name == "load_scene":
+        from .apps._scene_file import load_scene
+        return load_scene
+    raise AttributeError(f"module 'polyccd' has no attribute {name!r}")

@@ -1,6 +1,6 @@
-"""python -m polyccd: the polyccd command line."""
+"""python -m polyccd: forwards to the polyccd command line (polyccd.apps.cli)."""
 import sys
 
-from .cli import main
+from .apps.cli import main
 
 sys.exit(main())

@@ -6,28 +6,21 @@ library as doubles (their exact binary values, pccd_body_new_*_d); anything else
 lists of int, Fraction, str, float; integer or object arrays; long double arrays) goes
 as exact number texts (pccd_body_new_*_s). Validation (index range, radii > 0, finite
 numbers) and the edge list come from the C library; errors name the place in the
-caller's terms ("vertices[4][2]", "triangles[3][1]", "radii[2]"). Bodies never change.
+caller's terms ("vertices[4][2]", "triangles[3][1]", "radii[2]"): the C message is
+raised as it is (_errors.check). Bodies never change.
 """
 import numbers
-import re
 
 import numpy as np
 
-from ._errors import InputError, error_for, last_error
+from . import _handles as handles
+from ._errors import InputError, check
 from ._numbers import number_text, show
 from ._pccd import ffi, lib
 from ._solve import _items, _texts
 
-_C_PREFIX = re.compile(r"^pccd_\w+: ")
 _UINT_MAX = 2 ** 32 - 1  # unsigned int of the C API (checked at build time, see below)
 assert ffi.sizeof("unsigned int") == 4
-
-
-def _check(rc):
-    """Raises the exception of a negative status; the C message already names the place
-    in the caller's terms, so only the function name is dropped."""
-    if rc != 0:
-        raise error_for(rc, _C_PREFIX.sub("", last_error(), count=1))
 
 
 def _points(value, place, width=3):
@@ -82,10 +75,6 @@ def _indices(value):
     return len(rows), np.array(flat, dtype=np.uint32)
 
 
-def _handle(out):
-    return ffi.gc(out[0], lib.pccd_body_free)
-
-
 class _Body:
     __slots__ = ("_handle",)
 
@@ -100,7 +89,7 @@ class _Body:
 
     def _counts(self):
         counts = ffi.new("size_t[3]")
-        _check(lib.pccd_body_counts(self._handle, counts, counts + 1, counts + 2))
+        check(lib.pccd_body_counts(self._handle, counts, counts + 1, counts + 2))
         return tuple(counts)
 
 
@@ -113,14 +102,14 @@ class Mesh(_Body):
     def __init__(self, vertices, triangles):
         nv, doubles, texts = _points(vertices, "vertices")
         nt, tris = _indices(triangles)
-        out = ffi.new("pccd_body **")
         t = ffi.from_buffer("unsigned int[]", tris)
         if doubles is not None:
-            _check(lib.pccd_body_new_mesh_d(out, ffi.from_buffer("double[]", doubles), nv, t, nt))
+            handle = handles.new("body", ffi.from_buffer("double[]", doubles), nv, t, nt,
+                                 via="new_mesh_d")
         else:
             array, _keep = _texts(texts)
-            _check(lib.pccd_body_new_mesh_s(out, array, nv, t, nt))
-        object.__setattr__(self, "_handle", _handle(out))
+            handle = handles.new("body", array, nv, t, nt, via="new_mesh_s")
+        object.__setattr__(self, "_handle", handle)
 
     @property
     def n_vertices(self):
@@ -142,7 +131,7 @@ class Mesh(_Body):
         out = np.empty((n, 2), dtype=np.int64)
         v = ffi.new("size_t[2]")
         for i in range(n):
-            _check(lib.pccd_body_edge(self._handle, i, v))
+            check(lib.pccd_body_edge(self._handle, i, v))
             out[i] = v[0], v[1]
         return out
 
@@ -153,9 +142,9 @@ class Mesh(_Body):
         count = ffi.new("size_t *")
         rc = lib.pccd_body_edge_triangles(self._handle, i, ffi.NULL, 0, count)
         if rc != lib.PCCD_ERANGE:
-            _check(rc)
+            check(rc)
         tris = ffi.new("size_t[]", count[0])
-        _check(lib.pccd_body_edge_triangles(self._handle, i, tris, count[0], count))
+        check(lib.pccd_body_edge_triangles(self._handle, i, tris, count[0], count))
         return tuple(tris)
 
     def __repr__(self):
@@ -173,10 +162,9 @@ class Spheres(_Body):
         nr, r_doubles, r_texts = _points(radii, "radii", width=None)
         if nr != n:
             raise InputError(f"radii: expected {n} radii (one per center), got {nr}")
-        out = ffi.new("pccd_body **")
         if c_doubles is not None and r_doubles is not None:
-            _check(lib.pccd_body_new_spheres_d(out, ffi.from_buffer("double[]", c_doubles),
-                                               ffi.from_buffer("double[]", r_doubles), n))
+            handle = handles.new("body", ffi.from_buffer("double[]", c_doubles),
+                                 ffi.from_buffer("double[]", r_doubles), n, via="new_spheres_d")
         else:  # mixed inputs: both as exact texts (a double's text is its binary value)
             if c_texts is None:
                 c_texts = [number_text(float(x), f"centers[{i // 3}][{i % 3}]")
@@ -185,8 +173,8 @@ class Spheres(_Body):
                 r_texts = [number_text(float(x), f"radii[{i}]") for i, x in enumerate(r_doubles)]
             c, _kc = _texts(c_texts)
             r, _kr = _texts(r_texts)
-            _check(lib.pccd_body_new_spheres_s(out, c, r, n))
-        object.__setattr__(self, "_handle", _handle(out))
+            handle = handles.new("body", c, r, n, via="new_spheres_s")
+        object.__setattr__(self, "_handle", handle)
 
     @property
     def n_spheres(self):

@@ -1,12 +1,12 @@
-"""Exceptions of polyccd and the one place that maps a C status to one of them."""
-import re
+"""Exceptions of polyccd and the one place that maps a C status to one of them.
 
+The C library's messages read "pccd_function: PLACE: what is wrong" (polyccd.h, "Error
+messages"), PLACE named as the Python arguments nest (points[1][0][2], radii[0],
+translation[1][2], config.time_tolerance, ...). Every C error becomes an exception by
+error_for(): the class from the status, the message the C message without its
+"pccd_function: " prefix. Errors found in Python use the same "PLACE: what" form.
+"""
 from ._pccd import ffi, lib
-
-# The C library writes "pccd_function: where: what". When the bindings know the place in
-# the caller's own terms (points[1][2][0], radii[0], ...), they keep only "what".
-_C_PLACE = re.compile(r"^pccd_\w+: (?:point \d+ [xyz] coefficient \d+: |point \d+ axis \d+: "
-                      r"|radius \d+: |config\.time_tolerance: )?")
 
 
 class Error(Exception):
@@ -32,9 +32,11 @@ def last_error():
     return ffi.string(lib.pccd_last_error()).decode("utf-8", "replace")
 
 
-def error_for(rc, message, place=None):
-    """The exception for status `rc`, its message prefixed with `place` when given."""
-    text = f"{place}: {_C_PLACE.sub('', message, count=1)}" if place else message
+def error_for(rc, message):
+    """The exception of status rc with the C message (its "pccd_function: " prefix
+    dropped: Python callers know which call they made)."""
+    function, sep, rest = message.partition(": ")
+    text = rest if sep and function.startswith("pccd_") else message
     if rc == lib.PCCD_EINVAL:
         return InputError(text)
     if rc == lib.PCCD_ELIMIT:
@@ -44,7 +46,7 @@ def error_for(rc, message, place=None):
     return InternalError(f"{text} (status {rc}; this is a bug in polyccd, please report it)")
 
 
-def check(rc, place=None):
+def check(rc):
     """Raises the exception of a negative status; call right after the C call."""
     if rc != 0:
-        raise error_for(rc, last_error(), place)
+        raise error_for(rc, last_error())

@@ -4,10 +4,11 @@ Only conversion here: the index is built in C (pccd_index_new: the stored body's
 primitives as lifted points in range trees) and queried there (pccd_index_query); the
 answers are read back like a two-body scene (body 0 the indexed body, body 1 the query).
 """
-from ._errors import InputError
+from . import _handles as handles
+from ._errors import InputError, check
 from ._numbers import show
 from ._pccd import ffi, lib
-from ._scene import Body, _bodies_list, _motion_handle, _names, _new, _options, _read, _solved
+from ._scene import Body, _bodies_list, _motion_handle, _names, _options, _read
 
 
 class Index:
@@ -18,10 +19,9 @@ class Index:
     def __init__(self, body):
         if not isinstance(body, Body):
             raise InputError(f"body: expected a polyccd.Body, got {show(body)}")
-        out = ffi.new("pccd_index **")
-        _solved(lib.pccd_index_new(out, body.shape._handle, _motion_handle(body.motion)))
+        handle = handles.new("index", body.shape._handle, _motion_handle(body.motion))
         object.__setattr__(self, "body", body)
-        object.__setattr__(self, "_handle", ffi.gc(out[0], lib.pccd_index_free))
+        object.__setattr__(self, "_handle", handle)
 
     def __setattr__(self, name, value):
         raise AttributeError("an Index cannot be changed; make a new one")
@@ -36,8 +36,8 @@ class Index:
         if not isinstance(body, Body):
             raise InputError(f"body: expected a polyccd.Body, got {show(body)}")
         cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact)
-        rep = _new("report")
-        _solved(lib.pccd_index_query(self._handle, body.shape._handle, _motion_handle(body.motion),
+        rep = handles.new("report")
+        check(lib.pccd_index_query(self._handle, body.shape._handle, _motion_handle(body.motion),
                                      cfg, opt, rep))
         return _read(rep, _names([self.body, body]))
 
@@ -50,7 +50,7 @@ class Index:
         n = len(bodies)
         shapes = ffi.new("pccd_body *[]", [b.shape._handle for b in bodies] or 1)
         motions = ffi.new("pccd_motion *[]", [_motion_handle(b.motion) for b in bodies] or 1)
-        reps = [_new("report") for _ in range(n)]
+        reps = [handles.new("report") for _ in range(n)]
         rep_array = ffi.new("pccd_report *[]", reps or 1)
-        _solved(lib.pccd_index_query_many(self._handle, shapes, motions, n, cfg, opt, rep_array))
+        check(lib.pccd_index_query_many(self._handle, shapes, motions, n, cfg, opt, rep_array))
         return [_read(r, _names([self.body, b])) for r, b in zip(reps, bodies)]

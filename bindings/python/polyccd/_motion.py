@@ -2,57 +2,17 @@
 
 No geometry here: every number is converted exactly (see _numbers) and every motion is
 built, composed and evaluated by the C library. A Motion never changes after it is
-built; compose() returns a new one. Errors name the place of a bad input in the
-caller's terms ("translation[1][2]", "ctrl[3][0]", "tau0"), from the C message.
+built; compose() returns a new one. The C library names a bad number as the Python
+arguments nest it ("translation[1][2]", "ctrl[3][0]", "tau0"); its message is raised
+as it is (_errors.check).
 """
-import re
-
-from ._errors import InputError, error_for, last_error
+from . import _handles as handles
+from ._errors import InputError, check
 from ._numbers import fraction_from_text, number_text, show
 from ._pccd import ffi, lib
 from ._solve import _items, _texts
 
-# The place at the start of a C message about a motion: "pccd_fn: <place>: <what>".
-_C_PLACE = re.compile(r"pccd_\w+: ((translation|rotation) ([wxyz])(?: coefficient (\d+))?"
-                      r"|(p0|p1|v0|v1|ctrl|axis|center|quat|offset|p)\[(\d+)\]"
-                      r"|tau0|tau1|advance|t): (.*)", re.DOTALL)
-_COMPONENT = {"translation": "xyz", "rotation": "wxyz"}
 _SIDES = {"body": lib.PCCD_POSE_BODY, "world": lib.PCCD_POSE_WORLD}
-
-
-def _python_place(match):
-    """The caller's name of the place a C message names."""
-    if match.group(2):  # a coordinate polynomial: translation[axis][i], rotation[k][i]
-        place = f"{match.group(2)}[{_COMPONENT[match.group(2)].index(match.group(3))}]"
-        return place + (f"[{match.group(4)}]" if match.group(4) else "")
-    if match.group(5) == "ctrl":  # C takes 12 numbers, Python 4 points of 3
-        k = int(match.group(6))
-        return f"ctrl[{k // 3}][{k % 3}]"
-    return match.group(1)
-
-
-def _check(rc, default_place=None):
-    """Raises the exception of a negative status, placed in the caller's terms when the
-    C message names a place (or at default_place when it names none)."""
-    if rc == 0:
-        return
-    message = last_error()
-    match = _C_PLACE.fullmatch(message)
-    if match:
-        raise error_for(rc, match.group(7), _python_place(match))
-    raise error_for(rc, message, default_place)
-
-
-def _new_handle():
-    out = ffi.new("pccd_motion **")
-    _check(lib.pccd_motion_new(out))
-    return ffi.gc(out[0], lib.pccd_motion_free)
-
-
-def _copy_handle(handle):
-    out = ffi.new("pccd_motion **")
-    _check(lib.pccd_motion_copy(out, handle))
-    return ffi.gc(out[0], lib.pccd_motion_free)
 
 
 def _vector(value, place, size=3):
@@ -91,15 +51,15 @@ class Motion:
     def __init__(self, translation=None, rotation=None):
         """translation: [xs, ys, zs] and rotation: [ws, xs, ys, zs], coefficient lists in
         ascending powers of t (omitted: zero translation, identity rotation)."""
-        handle = _new_handle()
+        handle = handles.new("motion")
         if translation is not None:
             for axis, texts in enumerate(_polys(translation, "translation", 3, "xs, ys, zs")):
                 array, _keep = _texts(texts)
-                _check(lib.pccd_motion_set_translation_s(handle, axis, array, len(texts)))
+                check(lib.pccd_motion_set_translation_s(handle, axis, array, len(texts)))
         if rotation is not None:
             for c, texts in enumerate(_polys(rotation, "rotation", 4, "ws, xs, ys, zs")):
                 array, _keep = _texts(texts)
-                _check(lib.pccd_motion_set_rotation_s(handle, c, array, len(texts)))
+                check(lib.pccd_motion_set_rotation_s(handle, c, array, len(texts)))
         object.__setattr__(self, "_handle", handle)
 
     def __setattr__(self, name, value):
@@ -118,10 +78,10 @@ class Motion:
         return motion
 
     @classmethod
-    def _built(cls, setter, *arrays, default_place=None):
+    def _built(cls, setter, *arrays):
         """A new motion from one C setter taking (const char *[]) arrays / strings."""
-        handle = _new_handle()
-        _check(setter(handle, *arrays), default_place)
+        handle = handles.new("motion")
+        check(setter(handle, *arrays))
         return cls._wrap(handle)
 
     @classmethod
@@ -161,7 +121,7 @@ class Motion:
         a, ka = _texts(_vector(axis, "axis"))
         c, kc = _texts(_vector(center, "center"))
         return cls._built(lib.pccd_motion_set_axis_rotation_s, a, c, _number(tau0, "tau0"),
-                          _number(tau1, "tau1"), default_place="axis")
+                          _number(tau1, "tau1"))
 
     @classmethod
     def screw(cls, axis, center, tau0, tau1, advance):
@@ -169,8 +129,7 @@ class Motion:
         a, ka = _texts(_vector(axis, "axis"))
         c, kc = _texts(_vector(center, "center"))
         return cls._built(lib.pccd_motion_set_screw_s, a, c, _number(tau0, "tau0"),
-                          _number(tau1, "tau1"), _number(advance, "advance"),
-                          default_place="axis")
+                          _number(tau1, "tau1"), _number(advance, "advance"))
 
     def compose(self, quat, offset, side="body"):
         """A new motion: this one composed with the constant pose (R(quat), offset).
@@ -179,14 +138,14 @@ class Motion:
             raise InputError(f'side: {show(side)} is not "body" or "world"')
         q, kq = _texts(_vector(quat, "quat", 4))
         o, ko = _texts(_vector(offset, "offset"))
-        handle = _copy_handle(self._handle)
-        _check(lib.pccd_motion_compose_pose_s(handle, _SIDES[side], q, o), "quat")
+        handle = handles.new("motion", self._handle, via="copy")
+        check(lib.pccd_motion_compose_pose_s(handle, _SIDES[side], q, o))
         return Motion._wrap(handle)
 
     def validate(self):
         """Returns self when r(t) vanishes nowhere on [0, 1]; else InputError with the
         first vanishing time (exact, or an enclosure when irrational)."""
-        _check(lib.pccd_motion_validate(self._handle))
+        check(lib.pccd_motion_validate(self._handle))
         return self
 
     def position(self, p, t):
@@ -199,5 +158,5 @@ class Motion:
         if rc == lib.PCCD_ERANGE:
             buf = ffi.new("char[]", needed[0])
             rc = lib.pccd_motion_position_s(self._handle, point, time, buf, needed[0], needed)
-        _check(rc)
+        check(rc)
         return tuple(fraction_from_text(x) for x in ffi.string(buf).decode().split(" "))

@@ -1,14 +1,16 @@
 """solve, solve_linear and collides_linear: convert the inputs, call C, raise or read.
 
 No geometry here: every decision is the C library's. This module only checks shapes,
-converts numbers exactly (see _numbers) and names the place of a bad input.
+converts numbers exactly (see _numbers); the C library names the place of a bad number
+(points[i][axis][coefficient], radii[which], p_t0[i][axis], config.time_tolerance).
 """
 import threading
 
 import numpy as np
 
 from ._arrays import linear_coords
-from ._errors import InputError, check, error_for, last_error
+from . import _handles as handles
+from ._errors import InputError, check
 from ._numbers import number_text, show
 from ._pccd import ffi, lib
 from ._results import KINDS, read_result
@@ -53,32 +55,10 @@ def _items(value, place, what):
         raise InputError(f"{place}: expected {what}, got {show(value)}") from None
 
 
-def _new(kind_of_handle, *args):
-    out = ffi.new(f"pccd_{kind_of_handle} **")
-    check(getattr(lib, f"pccd_{kind_of_handle}_new")(out, *args))
-    return ffi.gc(out[0], getattr(lib, f"pccd_{kind_of_handle}_free"))
-
-
 def _texts(texts):
     """A const char *[] of texts; the returned list keeps the strings alive."""
     keep = [ffi.new("char[]", t.encode("utf-8", "replace")) for t in texts]
     return ffi.new("const char *[]", keep) if keep else ffi.NULL, keep
-
-
-def _set_coord(query, code, i, axis, texts, place):
-    array, keep = _texts(texts)
-    rc = lib.pccd_query_set_coord_s(query, i, axis, array, len(texts))
-    if rc == 0:
-        return
-    message = last_error()
-    # Which coefficient? The shortest failing prefix, on a scratch query (error path only).
-    scratch = _new("query", code)
-    for m in range(1, min(len(texts), lib.PCCD_MAX_TRAJ_DEGREE + 1) + 1):
-        array, keep = _texts(texts[:m])
-        rc_m = lib.pccd_query_set_coord_s(scratch, i, axis, array, m)
-        if rc_m != 0:
-            raise error_for(rc_m, last_error(), f"{place}[{m - 1}]")
-    raise error_for(rc, message, place)
 
 
 class _Thread(threading.local):
@@ -89,32 +69,35 @@ class _Thread(threading.local):
 
     def __init__(self):
         self.cache = {}
-        self.res = _new("result")
-        self.decide_cfg, _ = _config(None, False, True, "time_tolerance")
+        self.res = handles.new("result")
+        self.decide_cfg, _ = _config(None, False, True)
         self.out = ffi.new("int *")
 
 
 
-def _cached_config(time_tolerance, want_time, want_exact, place):
+def _cached_config(time_tolerance, want_time, want_exact):
     try:
         key = (type(time_tolerance), time_tolerance, bool(want_time), bool(want_exact))
         hit = _thread.cache.get(key)
     except TypeError:  # an unhashable tolerance: no caching
-        return _config(time_tolerance, want_time, want_exact, place)
+        return _config(time_tolerance, want_time, want_exact)
     if hit is None:
-        hit = _config(time_tolerance, want_time, want_exact, place)
+        hit = _config(time_tolerance, want_time, want_exact)
         if len(_thread.cache) > 32:
             _thread.cache.clear()
         _thread.cache[key] = hit
     return hit
 
 
-def _config(time_tolerance, want_time, want_exact, place):
+def _config(time_tolerance, want_time, want_exact):
+    """(pccd_config, keep-alive) of the keyword arguments. The tolerance is named by its
+    C field, config.time_tolerance, here as in the library's messages."""
     cfg = ffi.new("pccd_config *")
     check(lib.pccd_config_init(cfg))
     keep = None
     if time_tolerance is not None:
-        keep = ffi.new("char[]", number_text(time_tolerance, place).encode("utf-8", "replace"))
+        text = number_text(time_tolerance, "config.time_tolerance")
+        keep = ffi.new("char[]", text.encode("utf-8", "replace"))
         cfg.time_tolerance = keep
     cfg.want_time = 1 if want_time else 0
     cfg.want_exact = 1 if want_exact else 0
@@ -124,29 +107,12 @@ def _config(time_tolerance, want_time, want_exact, place):
 _thread = _Thread()  # after _config, which its __init__ calls
 
 
-def _solve_error(rc, message, cfg, tolerance_place, radii=None):
-    """Raises the error of a failed solve. The place of a bad time tolerance or radius
-    is found by solving small valid queries that differ only in it (error path only)."""
-    if rc == lib.PCCD_EINVAL and cfg.time_tolerance != ffi.NULL:
-        probe = _new("query", lib.PCCD_VERTEX_VERTEX)
-        if lib.pccd_query_solve(probe, cfg, _new("result")) != 0:
-            raise error_for(rc, last_error(), tolerance_place)
-    if rc == lib.PCCD_EINVAL and radii:
-        for which, text in enumerate(radii):
-            probe = _new("query", lib.PCCD_SPHERE_SPHERE)
-            check(lib.pccd_query_set_radius_s(probe, 1 - which, b"1"))
-            check(lib.pccd_query_set_radius_s(probe, which, text))
-            if lib.pccd_query_solve(probe, ffi.NULL, _new("result")) != 0:
-                raise error_for(rc, last_error(), f"radii[{which}]")
-    raise error_for(rc, message)
-
-
-def solve_query(kind, points, radii, time_tolerance, want_time, want_exact,
-                tolerance_place="time_tolerance"):
-    """solve(), with the name of the tolerance's place for error messages."""
+def solve_query(kind, points, radii, time_tolerance, want_time, want_exact):
+    """solve(), positional. Shapes are checked here; every number and index is checked
+    by C, which names it as points[i][axis][coefficient] or radii[which]."""
     code = kind_code(kind)
     count = _NPOINTS[kind]
-    query = _new("query", code)
+    query = handles.new("query", code)
     trajs = _items(points, "points", f"a list of {count} point trajectories")
     if len(trajs) != count:
         raise InputError(f"points: {kind} queries have {count} points, got {len(trajs)}")
@@ -158,9 +124,8 @@ def solve_query(kind, points, radii, time_tolerance, want_time, want_exact,
         for axis, coeffs in enumerate(axes):
             place = f"points[{i}][{axis}]"
             items = _items(coeffs, place, "a list of polynomial coefficients")
-            texts = [number_text(c, f"{place}[{j}]") for j, c in enumerate(items)]
-            _set_coord(query, code, i, axis, texts, place)
-    radius_texts = []
+            array, _keep = _texts([number_text(c, f"{place}[{j}]") for j, c in enumerate(items)])
+            check(lib.pccd_query_set_coord_s(query, i, axis, array, len(items)))
     if kind == "sphere-sphere":
         if radii is None:
             raise InputError("radii: a sphere-sphere query needs radii (ra, rb)")
@@ -169,15 +134,12 @@ def solve_query(kind, points, radii, time_tolerance, want_time, want_exact,
             raise InputError(f"radii: expected 2 radii (ra, rb), got {len(values)}")
         for which, r in enumerate(values):
             text = number_text(r, f"radii[{which}]").encode("utf-8", "replace")
-            check(lib.pccd_query_set_radius_s(query, which, text), f"radii[{which}]")
-            radius_texts.append(text)
+            check(lib.pccd_query_set_radius_s(query, which, text))
     elif radii is not None:
         raise InputError(f"radii: only sphere-sphere queries have radii, not {kind}")
-    cfg, keep = _config(time_tolerance, want_time, want_exact, tolerance_place)
-    res = _new("result")
-    rc = lib.pccd_query_solve(query, cfg, res)
-    if rc != 0:
-        _solve_error(rc, last_error(), cfg, tolerance_place, radius_texts)
+    cfg, keep = _config(time_tolerance, want_time, want_exact)
+    res = handles.new("result")
+    check(lib.pccd_query_solve(query, cfg, res))
     return read_result(res)
 
 
@@ -195,24 +157,11 @@ def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
     code = kind_code(kind, linear=True)
     a0 = linear_coords(p_t0, "p_t0", _NPOINTS[kind])
     a1 = linear_coords(p_t1, "p_t1", _NPOINTS[kind])
-    cfg, _keep = _cached_config(time_tolerance, want_time, want_exact, "time_tolerance")
+    cfg, _keep = _cached_config(time_tolerance, want_time, want_exact)
     res = _thread.res
-    rc = lib.pccd_solve_linear_d(code, ffi.from_buffer("double[]", a0),
-                                 ffi.from_buffer("double[]", a1), cfg, res)
-    if rc != 0:
-        _linear_error(rc, a0, a1, cfg)
+    check(lib.pccd_solve_linear_d(code, ffi.from_buffer("double[]", a0),
+                                  ffi.from_buffer("double[]", a1), cfg, res))
     return read_result(res)
-
-
-def _linear_error(rc, a0, a1, cfg):
-    """Raises the error of a failed pccd_solve_linear_d, naming a non-finite input."""
-    message = last_error()
-    for name, a in (("p_t0", a0), ("p_t1", a1)):
-        bad = np.argwhere(~np.isfinite(a))
-        if len(bad):
-            i, axis = (int(k) for k in bad[0])
-            raise InputError(f"{name}[{i}][{axis}]: {float(a[i, axis])} is not a finite number")
-    _solve_error(rc, message, cfg, "time_tolerance")
 
 
 _ND, _F64 = np.ndarray, np.dtype(np.float64)
@@ -240,6 +189,6 @@ def collides_linear(kind, p_t0, p_t1):
     rc = _solve_linear_d(code, _from_buffer("double[]", p_t0), _from_buffer("double[]", p_t1),
                          state.decide_cfg, state.res)
     if rc != 0:
-        _linear_error(rc, p_t0, p_t1, state.decide_cfg)
+        check(rc)
     check(lib.pccd_result_collides(state.res, state.out))
     return state.out[0] != 0

@@ -7,16 +7,17 @@ import argparse
 import json
 import sys
 
-from . import __version__
+from .. import __version__
 from ._corpus import (DEFAULT_TOLERANCE, check_case, files_under, read_case, solve_case,
                       solve_scene_case)
 from ._csv import CSV_KINDS
 from ._demo import query_dir, run_cases
-from ._errors import Error, InputError
-from ._index import Index
+from .._errors import Error, InputError
+from .._index import Index
 from ._queries import mismatch_lines, run_file
-from ._results import result_json, time_json
-from ._scene import BROAD_PHASES, load_scene
+from .._results import result_json, time_json
+from .._scene import BROAD_PHASES
+from ._scene_file import load_scene
 
 OK, FAILED, BAD_INPUT = 0, 1, 2
 

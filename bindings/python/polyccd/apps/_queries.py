@@ -6,7 +6,7 @@ from typing import List, Tuple
 import numpy as np
 
 from ._csv import ROWS, kind_of, read_csv
-from ._solve import collides_linear, solve_query
+from .._solve import collides_linear, solve_query
 
 
 @dataclass

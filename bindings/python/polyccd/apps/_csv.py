@@ -13,8 +13,8 @@ from typing import Dict, List
 
 import numpy as np
 
-from ._errors import InputError
-from ._numbers import ratio_text
+from .._errors import InputError
+from .._numbers import ratio_text
 
 CSV_KINDS = ("vertex-face", "edge-edge")
 POINTS = 4  # both kinds: v, f0, f1, f2 or a0, a1, b0, b1

@@ -9,10 +9,10 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import List, Optional, Tuple, Union
 
-from ._errors import InputError
-from ._numbers import exact_fraction, show
-from ._results import KINDS
-from ._solve import npoints
+from .._errors import InputError
+from .._numbers import exact_fraction, show
+from .._results import KINDS
+from .._solve import npoints
 
 QUERY_FORMAT = "polyccd-query/1"
 SCENE_FORMAT = "polyccd/1"
@@ -167,13 +167,17 @@ def _expect_at(value, path):
 
 
 def options_and_labels(top):
-    """The options.time_tolerance text of a case (None when absent), after checking
-    the optional "name" and "source" labels are strings."""
+    """The options.time_tolerance text of a case (None when absent), checked to be a
+    number > 0 here so that the error names the file's path, after checking the
+    optional "name" and "source" labels are strings."""
     tolerance = None
     if "options" in top:
         options = _object_at(top["options"], "options")
         if "time_tolerance" in options:
-            tolerance = number_at(options["time_tolerance"], "options.time_tolerance")
+            path = "options.time_tolerance"
+            tolerance = number_at(options["time_tolerance"], path)
+            if exact_fraction(tolerance, path) <= 0:
+                raise InputError(f"{path}: {show(tolerance)} must be greater than 0")
     for key in ("name", "source"):
         if key in top:
             _string_at(top[key], key)

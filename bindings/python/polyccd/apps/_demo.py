@@ -4,8 +4,8 @@ import os
 from fractions import Fraction
 from pathlib import Path
 
-from ._numbers import ratio_text
-from ._solve import solve
+from .._numbers import ratio_text
+from .._solve import solve
 
 # A static triangle in the plane z = 0 (used by the vertex-face cases).
 TRIANGLE = [[[0], [0], [0]], [[1], [0], [0]], [[0], [1], [0]]]
@@ -86,7 +86,7 @@ def run_cases(out):
 def query_dir():
     """The shared benchmark query folder, or None when it is not there."""
     env = os.environ.get("POLYCCD_QUERY_DIR")
-    repo = Path(__file__).resolve().parents[3]  # bindings/python/polyccd -> the repo
+    repo = Path(__file__).resolve().parents[4]  # bindings/python/polyccd/apps -> the repo
     candidates = ([Path(env), repo / env] if env else
                   [repo / "../shared/data/ccd-queries", Path("/work/shared/data/ccd-queries")])
     for d in candidates:

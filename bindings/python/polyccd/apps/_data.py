@@ -1,4 +1,4 @@
-"""Example data for polyccd (exported as polyccd.data): meshes and molecules of Debian's
+"""Example data for polyccd (polyccd.apps._data): meshes and molecules of Debian's
 libcgal-demo package, read into exact polyccd bodies.
 
 - cgal_data_file(name): a file of the libcgal-demo tarballs (data, examples, demo),
@@ -10,7 +10,7 @@ libcgal-demo package, read into exact polyccd bodies.
 
 The bodies returned are subclasses of Mesh / Spheres that also carry the float arrays
 they were built from (LoadedMesh.vertices / .triangles, LoadedSpheres.centers / .radii),
-for drawing (polyccd._render). trimesh and gemmi are imported only when needed.
+for drawing (polyccd.apps._render). trimesh and gemmi are imported only when needed.
 """
 import os
 import subprocess
@@ -21,8 +21,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ._body import Mesh, Spheres
-from ._errors import InputError
+from .._body import Mesh, Spheres
+from .._errors import InputError
 
 # Where Debian puts the tarballs of libcgal-demo (/usr/share/doc/libcgal-demo is a
 # symbolic link to libcgal-dev's folder in bookworm).
@@ -46,7 +46,7 @@ def data_dir():
     env = os.environ.get("POLYCCD_DATA_DIR")
     if env:
         return Path(env)
-    root = Path(__file__).resolve().parents[3]
+    root = Path(__file__).resolve().parents[4]
     if (root / "Makefile").is_file() and (root / "bindings" / "python").is_dir():
         return root / "build" / "data"
     return Path.home() / ".cache" / "polyccd" / "data"

@@ -1,11 +1,11 @@
-"""The body demo: the two scenes of polyccd._demo_scenes (two CGAL pinions meshing;
+"""The body demo: the two scenes of polyccd.apps._demo_scenes (two CGAL pinions meshing;
 darunavir and the HIV-1 protease of 1t7i) checked exactly with polyccd.check, printed,
 and drawn at their first contact time (scene_mechanical.png, scene_ligand.png)."""
 import time
 from pathlib import Path
 
 from ._demo_scenes import ligand_scene, mechanical_scene
-from ._numbers import ratio_text
+from .._numbers import ratio_text
 from ._render import _float_pose, render_scene
 
 

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ._errors import InputError
+from .._errors import InputError
 
 BODY_COLORS = ("#4f7fbf", "#e0a040", "#5fae6e", "#a070c0", "#8c8c8c", "#c0c060")
 HIGHLIGHT = "#e8001c"

@@ -4,11 +4,12 @@ import glob
 from fractions import Fraction
 from pathlib import Path
 
-from ._errors import Error, InputError
+from .._errors import Error, InputError
 from ._json import SceneNotSupported, load, query_case
-from ._numbers import exact_fraction, ratio_text
-from ._scene import check_scene, scene_from_doc
-from ._solve import solve_query
+from .._numbers import exact_fraction, ratio_text
+from .._scene import check_scene
+from ._scene_file import scene_from_doc
+from .._solve import solve_query
 
 DEFAULT_TOLERANCE = "1e-12"
 
@@ -33,8 +34,7 @@ def files_under(paths, pattern):
 def solve_case(case):
     """The Result of a validated QueryCase (its time tolerance applies)."""
     return solve_query(case.kind, case.points, case.radii,
-                       case.time_tolerance or DEFAULT_TOLERANCE, True, True,
-                       tolerance_place="options.time_tolerance")
+                       case.time_tolerance or DEFAULT_TOLERANCE, True, True)
 
 
 def _text(x):
