@@ -68,6 +68,22 @@ int pccd_query_solve(const pccd_query *q, const pccd_config *cfg, pccd_result *r
 int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const double *p_t1,
                         const pccd_config *cfg, pccd_result *res);
 
+typedef struct pccd_batch_options {
+  size_t struct_size;
+  unsigned threads;
+} pccd_batch_options;
+int pccd_batch_options_init(pccd_batch_options *opt);
+typedef struct pccd_batch_out {
+  size_t struct_size;
+  unsigned char *collides;
+  int *stage;
+  double *lo, *hi;
+  unsigned char *exact;
+} pccd_batch_out;
+int pccd_solve_linear_batch_d(pccd_kind kind, size_t n, const double *t0,
+                              const double *t1, const pccd_config *cfg,
+                              const pccd_batch_options *opt, pccd_batch_out *out);
+
 int pccd_result_collides(const pccd_result *res, int *collides);
 int pccd_result_stage(const pccd_result *res, int *stage);
 int pccd_result_time(const pccd_result *res, int which, char *buf, size_t cap,

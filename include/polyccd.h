@@ -178,6 +178,42 @@ PCCD_API int pccd_query_solve(const pccd_query *q, const pccd_config *cfg, pccd_
 PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const double *p_t1,
                                  const pccd_config *cfg, pccd_result *res);
 
+/* ---- Batches of linear queries ---- */
+
+/* Options of pccd_solve_linear_batch_d; initialise with pccd_batch_options_init. */
+typedef struct pccd_batch_options {
+  size_t struct_size;  /* sizeof(pccd_batch_options), set by pccd_batch_options_init */
+  unsigned threads;    /* worker threads, 1 to 1024 (default 1); answers do not depend on it */
+} pccd_batch_options;
+PCCD_API int pccd_batch_options_init(pccd_batch_options *opt);
+
+/* Where pccd_solve_linear_batch_d writes its answers: caller-owned arrays of n entries
+ * each; a NULL array is not written. Entry k answers query k exactly as
+ * pccd_solve_linear_d would:
+ *   collides[k]  1 when the primitives touch during [0, 1], else 0;
+ *   stage[k]     the pccd_stage that decided;
+ *   lo[k], hi[k] the first contact time's enclosure (pccd_result_time) rounded outward
+ *                to doubles, lo[k] <= t* <= hi[k] (with cfg->want_time = 0 it may be as
+ *                wide as [0, 1]); NaN when there is no contact;
+ *   exact[k]     1 when t* is known exactly (then lo[k], hi[k] are the doubles around
+ *                it, equal when t* is a double), else 0. */
+typedef struct pccd_batch_out {
+  size_t struct_size; /* sizeof(pccd_batch_out) */
+  unsigned char *collides;
+  int *stage;
+  double *lo, *hi;
+  unsigned char *exact;
+} pccd_batch_out;
+
+/* n linear queries of one kind (not SPHERE_SPHERE) in contiguous arrays: query k's
+ * point i moves from t0[(k * npoints + i) * 3 + a] to t1[...], a = 0, 1, 2, npoints =
+ * pccd_kind_points(kind). opt may be NULL (one thread). Every coordinate is checked
+ * before any query is solved: PCCD_EINVAL names the first bad one "t0[k][i][a]" (or
+ * t1) and writes no answer. n = 0 does nothing. */
+PCCD_API int pccd_solve_linear_batch_d(pccd_kind kind, size_t n, const double *t0,
+                                       const double *t1, const pccd_config *cfg,
+                                       const pccd_batch_options *opt, pccd_batch_out *out);
+
 /* *collides = 1 when the primitives touch during [0, 1], else 0.
  * PCCD_ESTATE when nothing was solved into res. */
 PCCD_API int pccd_result_collides(const pccd_result *res, int *collides);

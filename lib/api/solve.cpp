@@ -1,11 +1,10 @@
-// pccd_config_init, pccd_query_solve, pccd_solve_linear_d.
+// pccd_config_init, pccd_query_solve, and reading a pccd_config.
 #include <cmath>
 #include <cstring>
 #include <string>
 
 #include "api/guard.h"
 #include "api/handles.h"
-#include "pred/linear_filter.h"
 
 using pccd::api::guard;
 using pccd::api::place;
@@ -110,75 +109,6 @@ PCCD_API int pccd_query_solve(const pccd_query *q, const pccd_config *cfg, pccd_
     require(q, "q");
     pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
     res->r = pccd::api::solve_query(*q, opt);
-    res->solved = true;
-    return PCCD_OK;
-  });
-}
-
-PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const double *p_t1,
-                                 const pccd_config *cfg, pccd_result *res) {
-  return guard(__func__, [&] {
-    require(res, "res");
-    res->solved = false;
-    pccd::api::reset(res->r);
-    require(p_t0, "p_t0");
-    require(p_t1, "p_t1");
-    const long k = pccd::api::raw_kind(kind);
-    if (k == PCCD_SPHERE_SPHERE)
-      throw Input_error("kind: sphere-sphere queries need radii: use pccd_query_new");
-    const size_t n = pccd::api::kind_points(k);
-    pccd::api::checked_config(cfg);
-    // A non-finite coordinate a of point i is named p_t0[i][a] (or p_t1[i][a]).
-    for (size_t i = 0; i < n; ++i)
-      for (size_t a = 0; a < 3; ++a) {
-        const double x0 = p_t0[3 * i + a], x1 = p_t1[3 * i + a];
-        if (!std::isfinite(x0)) pccd::arith::rational_from_double(x0, place("p_t0", {i, a}));
-        if (!std::isfinite(x1)) pccd::arith::rational_from_double(x1, place("p_t1", {i, a}));
-      }
-    // The static filter (pred/linear_filter.h) proves most misses without allocating.
-    switch (pccd::pred::linear_filter(static_cast<int>(k), p_t0, p_t1)) {
-      case pccd::pred::Linear_verdict::boxes_apart:
-        res->r.stage = pccd::pred::STAGE_BOUNDS;
-        res->solved = true;
-        return PCCD_OK;
-      case pccd::pred::Linear_verdict::no_root:
-        res->r.stage = pccd::pred::STAGE_BERNSTEIN;
-        res->solved = true;
-        return PCCD_OK;
-      case pccd::pred::Linear_verdict::misses:
-        res->r.stage = pccd::pred::STAGE_INTERVAL;
-        res->solved = true;
-        return PCCD_OK;
-      case pccd::pred::Linear_verdict::unknown:
-        break;
-    }
-    pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
-    const pccd::arith::Nearest_scope nearest;  // before any interval arithmetic
-    // The interval stages see the doubles as exact points; the exact trajectories are
-    // built only if those stages cannot decide.
-    pccd::pred::Query_data<Interval> iq;
-    iq.kind = static_cast<int>(k);
-    iq.p.resize(n);
-    for (size_t i = 0; i < n; ++i)
-      for (size_t a = 0; a < 3; ++a) {
-        const double x0 = p_t0[3 * i + a], x1 = p_t1[3 * i + a];
-        // x(t) = x0 + (x1 - x0) t: the slope is enclosed, not rounded.
-        iq.p[i][static_cast<int>(a)] = pccd::poly::Poly<Interval>(
-            std::vector<Interval>{Interval(x0), Interval(x1) - Interval(x0)});
-      }
-    auto exact = [&] {
-      pccd::pred::Query_data<Rational> eq;
-      eq.kind = static_cast<int>(k);
-      eq.p.resize(n);
-      for (size_t i = 0; i < n; ++i)
-        for (int a = 0; a < 3; ++a) {
-          Rational x0 = pccd::arith::rational_from_double(p_t0[3 * i + a], "p_t0");
-          Rational x1 = pccd::arith::rational_from_double(p_t1[3 * i + a], "p_t1");
-          eq.p[i][a] = pccd::poly::Poly<Rational>(std::vector<Rational>{x0, x1 - x0});
-        }
-      return eq;
-    };
-    res->r = pccd::pred::solve(iq, exact, opt);
     res->solved = true;
     return PCCD_OK;
   });

@@ -35,3 +35,18 @@ def linear_coords(x, place, npoints):
     if a.shape != (npoints, 3):
         raise InputError(f"{place}: expected shape ({npoints}, 3), got {a.shape}")
     return a if a.flags.c_contiguous else np.ascontiguousarray(a)
+
+
+def linear_batch(x, place, npoints):
+    """A C-contiguous float64 array of shape (n, npoints, 3), or InputError naming place."""
+    a = x if type(x) is np.ndarray else None
+    if a is None:
+        try:
+            a = np.asarray(x)
+        except (ValueError, TypeError) as e:
+            raise InputError(f"{place}: not an array of shape (n, {npoints}, 3): {e}") from None
+    if a.dtype != _F64:
+        a = _exact_float64(a, place)
+    if a.ndim != 3 or a.shape[1:] != (npoints, 3):
+        raise InputError(f"{place}: expected shape (n, {npoints}, 3), got {a.shape}")
+    return a if a.flags.c_contiguous else np.ascontiguousarray(a)
