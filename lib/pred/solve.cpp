@@ -67,13 +67,50 @@ Query_data<Interval> restricted(const Query_data<Interval> &q, double u) {
 // touching first), is certainly irrational: each of their exact polynomials, as an
 // integer polynomial, misses a root modulo some small prime, so has no rational root
 // (poly::may_have_rational_root). Builds those systems alone, not the whole set.
-bool first_time_irrational(const Query_data<Rational> &q, const std::vector<Feature> &active) {
-  const Feature_set<Rational> part = build_systems(q, &active);
-  if (part.systems.empty()) return false;
-  for (const System<Rational> &s : part.systems) {
-    if (s.kind == System<Rational>::Kind::zero_f || s.f.degree() < 1) return false;
-    if (poly::may_have_rational_root(poly::primitive_positive(s.f))) return false;
+//
+// The points are first scaled by the common denominator L > 0 of their coefficients and
+// the radii: every condition is homogeneous in point differences and radii (the scale D
+// is kept), so the roots are the same, and the systems are built from integers, which
+// GMP multiplies without reducing fractions.
+bool first_time_irrational(Query_data<Rational> q, const std::vector<Feature> &active) {
+  arith::Integer L = 1;
+  auto take = [&](const Rational &x) { mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t()); };
+  for (const auto &pt : q.p)
+    for (int a = 0; a < 3; ++a)
+      for (const Rational &c : pt[a].c) take(c);
+  for (const Rational &r : q.radius) take(r);
+  if (L != 1) {
+    const Rational l(L);
+    for (auto &pt : q.p)
+      for (int a = 0; a < 3; ++a)
+        for (Rational &c : pt[a].c) c *= l;
+    for (Rational &r : q.radius) r *= l;
   }
+  // The face and edge-edge polynomials directly (the common case: their side
+  // conditions are not needed here); any other feature through its system.
+  std::vector<Poly<Rational>> fs;
+  std::vector<Feature> others;
+  for (const Feature &f : active) {
+    const auto &p = q.p;
+    const auto &i = f.points;
+    if (f.kind == VERTEX_FACE && q.kind == VERTEX_FACE)
+      fs.push_back(motion::dot(motion::cross(p[i[2]] - p[i[1]], p[i[3]] - p[i[1]]), p[i[0]] - p[i[1]]));
+    else if (f.kind == EDGE_EDGE && q.kind == EDGE_EDGE)
+      fs.push_back(motion::dot(motion::cross(p[i[1]] - p[i[0]], p[i[2]] - p[i[0]]), p[i[3]] - p[i[0]]));
+    else
+      others.push_back(f);
+  }
+  if (!others.empty()) {
+    const Feature_set<Rational> part = build_systems(q, &others);
+    if (part.systems.size() != others.size()) return false;
+    for (const System<Rational> &s : part.systems) {
+      if (s.kind == System<Rational>::Kind::zero_f) return false;
+      fs.push_back(s.f);
+    }
+  }
+  if (fs.empty()) return false;
+  for (const Poly<Rational> &f : fs)
+    if (f.degree() < 1 || poly::may_have_rational_root(poly::primitive_positive(f))) return false;
   return true;
 }
 
