@@ -22,7 +22,8 @@ SRCS := $(sort $(wildcard lib/*/*.cpp))
 OBJS := $(patsubst lib/%.cpp,$(BUILD)/%.o,$(SRCS))
 DEPS := $(OBJS:.o=.d)
 
-APT_PKGS := libgmp-dev libmpfr-dev libcgal-dev libcgal-demo libeigen3-dev g++ make python3-venv python3-dev valgrind
+# The system packages, one list shared with .ci/run (comments after # dropped).
+APT_PKGS := $(strip $(shell sed 's/\#.*//' .ci/apt-packages.txt))
 
 .PHONY: all deps lib venv test test-c test-py check-header check-symbols bench demo clean sanitize valgrind
 
