@@ -15,7 +15,7 @@ import pytest
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 HEADER = os.path.join(ROOT, "include", "polyccd.h")
-LIBRARY = os.path.join(ROOT, "lib", "libpolyccd.so")
+LIBRARY = os.path.join(ROOT, "build", "libpolyccd.so")
 sys.path.insert(0, os.path.join(ROOT, "bindings", "python"))
 from gen_cdef import cdef_from_header   # noqa: E402
 

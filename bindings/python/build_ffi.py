@@ -1,4 +1,4 @@
-"""Builds the cffi extension polyccd/_pccd (API mode) in place, against lib/libpolyccd.so.
+"""Builds the cffi extension polyccd/_pccd (API mode) in place, against build/libpolyccd.so.
 
 Run from bindings/python (make venv does): python build_ffi.py
 
@@ -23,10 +23,10 @@ ffibuilder.set_source(
     "polyccd._pccd",
     '#include "polyccd.h"',
     include_dirs=[str(REPO / "include")],
-    library_dirs=[str(REPO / "lib")],
+    library_dirs=[str(REPO / "build")],
     libraries=["polyccd"],
-    # polyccd/_pccd*.so finds the library at <repo>/lib without LD_LIBRARY_PATH.
-    extra_link_args=["-Wl,-rpath,$ORIGIN/../../../lib"],
+    # polyccd/_pccd*.so finds the library at <repo>/build without LD_LIBRARY_PATH.
+    extra_link_args=["-Wl,-rpath,$ORIGIN/../../../build"],
     extra_compile_args=["-Werror"],
 )
 

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Memory checks of libpolyccd under valgrind (`make valgrind`, which builds build/test_*).
 #
-# 1. The C API tests (build/test_api, test_motion, test_body, test_scene, test_index)
-#    under memcheck: no error of any kind, no definite or indirect leak, and each test
-#    itself must pass.
+# Usage: run_valgrind.sh [PROGRAM...], programs by name in build/ (default: one per
+# tests/c/test_*.c, what `make valgrind` passes).
+#
+# 1. The C API tests (build/test_api, test_motion, ...) under memcheck: no error of any
+#    kind, no definite or indirect leak, and each test itself must pass.
 # 2. The regression corpus through the Python command line (`python -m polyccd corpus
 #    corpus/`), plus the queries of VALGRIND_QUERY_FILES (default: the 324 degenerate
 #    unit-test queries of the shared benchmark, unit-tests/*/*.csv, when present; about a
@@ -34,7 +36,11 @@ if ! command -v valgrind >/dev/null; then
 fi
 
 # ---- 1. the C tests ------------------------------------------------------------------
-for prog in test_api test_motion test_body test_scene test_index; do
+progs=("$@")
+if [ ${#progs[@]} -eq 0 ]; then
+  for src in tests/c/test_*.c; do progs+=("$(basename "$src" .c)"); done
+fi
+for prog in "${progs[@]}"; do
   log="$BUILD/valgrind-$prog.log"
   echo "== valgrind $BUILD/$prog (log: $log)"
   "${VG[@]}" --log-file="$log" "$BUILD/$prog" > "$BUILD/valgrind-$prog.out"
