@@ -117,7 +117,7 @@ valgrind: deps
 
 # ASan + UBSan build of the library and the C tests (tests/c/run_sanitizers.sh).
 sanitize: deps
-	bash tests/c/run_sanitizers.sh
+	+bash tests/c/run_sanitizers.sh
 
 bench: all
 	$(VENV)/bin/pip install -q -r tests/bench/requirements.txt
