@@ -1,16 +1,18 @@
-# polyccd build. `make` = library + Python venv; `make test` = every test; `make bench`;
-# `make demo`. Run as root on a fresh Debian machine, missing system packages are
-# installed with apt-get (see deps).
+# polyccd build. `make` = library + Python venv (it prints the library's path);
+# `make test` = install what is missing (deps), then `make check` = build and run every
+# test with what is installed; `make bench`; `make demo`. Run as root on a fresh Debian
+# machine, missing system packages are installed with apt-get (see deps).
 
 CXX      ?= g++
 CC       ?= gcc
 PYTHON   ?= python3
 BUILD    := build
-LIB      := lib/libpolyccd.so
+# Every build product is under build/ (lib/ is source only).
+LIB      := $(BUILD)/libpolyccd.so
 VENV     := .venv
 VPY      := $(VENV)/bin/python
 # -ffp-contract=off: no fused multiply-add may change a rounding the interval layer
-# relies on (see lib/arith/interval.h; tests/c/check.h, check_no_fma, checks it is not fused).
+# relies on (see lib/arith/interval.h; tests/c/check.h checks it is not fused).
 CXXFLAGS ?= -O2 -g
 CXXFLAGS += -std=c++17 -fPIC -fvisibility=hidden -fvisibility-inlines-hidden \
             -ffp-contract=off -frounding-math -Wall -Wextra -Wno-unused-parameter \
@@ -22,11 +24,24 @@ SRCS := $(sort $(wildcard lib/*/*.cpp))
 OBJS := $(patsubst lib/%.cpp,$(BUILD)/%.o,$(SRCS))
 DEPS := $(OBJS:.o=.d)
 
-APT_PKGS := libgmp-dev libmpfr-dev libcgal-dev libcgal-demo libeigen3-dev g++ make python3-venv python3-dev valgrind
+# The test programs, found by name so that a new tests/c/test_*.c or tests/cpp/test_*.cpp
+# needs no Makefile edit: C tests link the shared library (the public API only), C++
+# tests link the library's objects (internal code). Headers they include are tracked by
+# -MMD, never listed here.
+C_TESTS   := $(patsubst tests/c/%.c,$(BUILD)/%,$(sort $(wildcard tests/c/test_*.c)))
+CPP_TESTS := $(patsubst tests/cpp/%.cpp,$(BUILD)/%,$(sort $(wildcard tests/cpp/test_*.cpp)))
 
-.PHONY: all deps lib venv test test-c test-py check-header check-symbols bench demo clean sanitize valgrind
+# The system packages, one list shared with .ci/run (comments after # dropped).
+APT_PKGS := $(strip $(shell sed 's/\#.*//' .ci/apt-packages.txt))
 
-all: lib venv
+.PHONY: all deps lib venv check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind
+
+# The entry points of a fresh machine (all, test, demo, bench, valgrind, sanitize) run
+# deps first, then make the rest in a sub-make, so nothing compiles while apt-get is still
+# installing (also under -j). `make check` and the targets below it use what is installed.
+all: deps
+	@$(MAKE) --no-print-directory lib venv
+	@echo "libpolyccd: $(abspath $(LIB))"
 
 # Installs what is missing, only when run as root (CI, fresh machines).
 deps:
@@ -41,77 +56,37 @@ lib: $(LIB)
 $(LIB): $(OBJS) lib/exports.map
 	$(CXX) -shared -Wl,--version-script=lib/exports.map -o $@ $(OBJS) $(LDLIBS) $(SAN)
 
-$(BUILD)/%.o: lib/%.cpp | deps
+$(BUILD)/%.o: lib/%.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) $(SAN) -MMD -MP -c $< -o $@
 
--include $(DEPS)
-
-$(VENV)/.stamp: bindings/python/requirements.txt | deps
+$(VENV)/.stamp: bindings/python/requirements.txt
 	$(PYTHON) -m venv $(VENV)
 	$(VENV)/bin/pip install -q --upgrade pip
 	$(VENV)/bin/pip install -q -r bindings/python/requirements.txt
 	touch $@
 
+# build_ffi.py generates the cffi declarations from include/polyccd.h on every run.
 venv: $(VENV)/.stamp $(LIB)
 	cd bindings/python && ../../$(VPY) build_ffi.py
 	$(VENV)/bin/pip install -q --no-build-isolation --no-deps -e bindings/python
 
-# The query / result / config C tests (each a handle kind of polyccd.h), linked against
-# the shared library.
-API_TESTS := test_config test_query test_result test_solve test_solve_face
-$(API_TESTS:%=$(BUILD)/%): $(BUILD)/%: tests/c/%.c tests/c/check.h tests/c/query_check.h tests/c/exact_rational.h include/polyccd.h $(LIB)
-	@mkdir -p $(BUILD)
-	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ $< \
-	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
+# A C test program: one source file, linked against the shared library, which it finds
+# beside itself (rpath $ORIGIN). -MMD -MP write build/test_X.d, the headers it includes.
+$(C_TESTS): $(BUILD)/%: tests/c/%.c $(LIB)
+	$(CC) -std=c99 -Wall -Wextra -Werror -g -Iinclude $(SAN) -MMD -MP -MF $@.d -MT $@ \
+	  -o $@ $< -L$(BUILD) -lpolyccd -Wl,-rpath,'$$ORIGIN' -lm
 
-# Internal probe of lib/poly for tests/test_hermite.py (links the objects directly).
-$(BUILD)/poly_probe: tests/cpp/poly_probe.cpp $(OBJS)
-	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/poly_probe.cpp $(OBJS) $(LDLIBS)
+# An internal C++ test: one source file, linked with the library's objects (the objects
+# it does not use are harmless); its lib/ headers are tracked by -MMD. poly_probe is no
+# test but a probe of lib/poly that tests/test_hermite.py runs; it is built the same way.
+$(CPP_TESTS) $(BUILD)/poly_probe: $(BUILD)/%: tests/cpp/%.cpp $(OBJS)
+	$(CXX) $(CXXFLAGS) -MMD -MP -MF $@.d -MT $@ -o $@ $< $(OBJS) $(LDLIBS)
 
-# The rigid-motion C test (pccd_motion_*), linked against the shared library.
-$(BUILD)/test_motion: tests/c/test_motion.c include/polyccd.h $(LIB)
-	@mkdir -p $(BUILD)
-	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_motion.c \
-	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
-
-# The scene C test (pccd_scene_*, pccd_report_*), linked against the shared library.
-$(BUILD)/test_scene: tests/c/test_scene.c tests/c/check.h tests/c/scene_fixtures.h include/polyccd.h $(LIB)
-	@mkdir -p $(BUILD)
-	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_scene.c \
-	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
-
-# The on-line index C test (pccd_index_*), linked against the shared library.
-$(BUILD)/test_index: tests/c/test_index.c tests/c/check.h tests/c/scene_fixtures.h include/polyccd.h $(LIB)
-	@mkdir -p $(BUILD)
-	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_index.c \
-	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
-
-# The body C test (pccd_body_*), linked against the shared library.
-$(BUILD)/test_body: tests/c/test_body.c tests/c/check.h include/polyccd.h $(LIB)
-	@mkdir -p $(BUILD)
-	$(CC) -std=c99 -Wall -Wextra -Werror -Iinclude $(SAN) -o $@ tests/c/test_body.c \
-	  -Llib -lpolyccd -Wl,-rpath,'$$ORIGIN/../lib' -lm
-
-# Internal test of the interval layer's ulp steps (links no library code: header only).
-$(BUILD)/test_ulp: tests/cpp/test_ulp.cpp lib/arith/interval.h
-	@mkdir -p $(BUILD)
-	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/test_ulp.cpp
-
-# Internal test of the range tree's clause bounds against exact rationals.
-$(BUILD)/test_halfspace_bounds: tests/cpp/test_halfspace_bounds.cpp lib/range/halfspaces.h lib/arith/interval.h
-	@mkdir -p $(BUILD)
-	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/test_halfspace_bounds.cpp $(LDLIBS)
-
-# Internal test of the fixed-axis rotation detection (links the objects directly).
-$(BUILD)/test_axis_rotation: tests/cpp/test_axis_rotation.cpp $(OBJS)
-	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/test_axis_rotation.cpp $(OBJS) $(LDLIBS)
-
-# Internal test of the static filter of linear queries against exact rationals.
-$(BUILD)/test_linear_filter: tests/cpp/test_linear_filter.cpp $(OBJS)
-	$(CXX) $(CXXFLAGS) -o $@ tests/cpp/test_linear_filter.cpp $(OBJS) $(LDLIBS)
+-include $(DEPS) $(addsuffix .d,$(C_TESTS) $(CPP_TESTS) $(BUILD)/poly_probe)
 
 check-header:
+	@mkdir -p $(BUILD)
 	@echo '#include "polyccd.h"' > $(BUILD)/hdr.c
 	$(CC) -std=c99 -pedantic -Werror -Wall -Wextra -Iinclude -c $(BUILD)/hdr.c -o $(BUILD)/hdr.o
 	@echo "header compiles with -std=c99 -pedantic -Werror"
@@ -121,33 +96,28 @@ check-symbols: $(LIB)
 	if [ -n "$$bad" ]; then echo "exported symbols without pccd_ prefix:"; echo "$$bad"; exit 1; fi; \
 	echo "nm -D: only pccd_ symbols exported ($$(nm -D --defined-only $(LIB) | grep -c ' T pccd_') functions)"
 
-test-c: $(API_TESTS:%=$(BUILD)/%) $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index $(BUILD)/test_ulp $(BUILD)/test_halfspace_bounds $(BUILD)/test_axis_rotation $(BUILD)/test_linear_filter check-header check-symbols
-	$(BUILD)/test_ulp
-	$(BUILD)/test_halfspace_bounds
-	$(BUILD)/test_axis_rotation
-	$(BUILD)/test_linear_filter
-	$(BUILD)/test_config
-	$(BUILD)/test_query
-	$(BUILD)/test_result
-	$(BUILD)/test_solve
-	$(BUILD)/test_solve_face
-	$(BUILD)/test_motion
-	$(BUILD)/test_body
-	$(BUILD)/test_scene
-	$(BUILD)/test_index
+# Every test program: the internal C++ tests first (the layers below the API), then the
+# C API tests; the first failure stops the run.
+test-c: $(CPP_TESTS) $(C_TESTS) check-header check-symbols
+	@set -e; for t in $(CPP_TESTS) $(C_TESTS); do echo "== $$t"; $$t; done
 
-test-py: all $(BUILD)/poly_probe
+test-py: lib venv $(BUILD)/poly_probe
 	POLYCCD_QUERY_DIR=$${POLYCCD_QUERY_DIR:-../shared/data/ccd-queries} $(VPY) -m pytest -q tests
 
-test: all test-c test-py
+# Builds and runs every test (C, C++ and Python) with what is installed: no apt-get.
+check: test-c test-py
 
-# Memory checks: the C test and the corpus under valgrind (see tests/c/run_valgrind.sh).
-valgrind: $(API_TESTS:%=$(BUILD)/%) $(BUILD)/test_motion $(BUILD)/test_body $(BUILD)/test_scene $(BUILD)/test_index
-	bash tests/c/run_valgrind.sh
+test: deps
+	@$(MAKE) --no-print-directory check
 
-# ASan + UBSan build of the library and the C test (tests/c/run_sanitizers.sh).
-sanitize:
-	bash tests/c/run_sanitizers.sh
+# Memory checks: the C tests and the corpus under valgrind (see tests/c/run_valgrind.sh).
+valgrind: deps
+	@$(MAKE) --no-print-directory $(C_TESTS)
+	bash tests/c/run_valgrind.sh $(notdir $(C_TESTS))
+
+# ASan + UBSan build of the library and the C tests (tests/c/run_sanitizers.sh).
+sanitize: deps
+	+bash tests/c/run_sanitizers.sh
 
 bench: all
 	$(VENV)/bin/pip install -q -r tests/bench/requirements.txt
@@ -158,5 +128,6 @@ bench: all
 demo: all
 	$(VENV)/bin/polyccd demo
 
+# lib/libpolyccd.so: where builds before the move to build/ left the library.
 clean:
-	rm -rf $(BUILD) build-asan $(LIB) bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c
+	rm -rf $(BUILD) build-asan lib/libpolyccd.so bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c

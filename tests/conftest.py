@@ -5,6 +5,12 @@ import sys
 
 import pytest
 
+# The independent oracles (tests/oracle/) and the corpus generators (tests/tools/) are
+# imported by plain name (`import oracle`, `import make_corpus`), as they import each
+# other and as the generators run as scripts (`python tests/tools/make_corpus.py`).
+_HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path[:0] = [os.path.join(_HERE, "oracle"), os.path.join(_HERE, "tools")]
+
 
 @pytest.fixture
 def run_cli(tmp_path):

@@ -1,8 +1,9 @@
-"""Self-checks of the body oracle (tests/oracle_body.py), which are not allowed to pass by
-accident: hand-derived answers (derivations in the comments), invariances that change
-every polynomial the oracle sees but not the answer, 1e-30 perturbations on both sides
-of a contact, a pointwise cross-check with a second, world-frame formulation at rational
-times, and the corpus files on disk equal to what tests/make_body_corpus.py writes.
+"""Self-checks of the body oracle (tests/oracle/oracle_body.py), which are not allowed to
+pass by accident: hand-derived answers (derivations in the comments), invariances that
+change every polynomial the oracle sees but not the answer, 1e-30 perturbations on both
+sides of a contact, a pointwise cross-check with a second, world-frame formulation at
+rational times, and the corpus files on disk equal to what
+tests/tools/make_body_corpus.py writes.
 No polyccd here: the oracle is checked on its own.
 """
 import itertools
@@ -436,7 +437,7 @@ def test_corpus_files_are_what_the_generator_writes():
     on_disk = {str(p.relative_to(CORPUS)): p.read_text() for p in CORPUS.rglob("*.json")}
     assert set(on_disk) == set(files), set(on_disk) ^ set(files)
     stale = [rel for rel, text in files.items() if on_disk[rel] != text]
-    assert not stale, "run `python tests/make_body_corpus.py`: %s" % stale
+    assert not stale, "run `python tests/tools/make_body_corpus.py`: %s" % stale
 
 
 def test_corpus_covers_the_categories():

@@ -1,5 +1,5 @@
 """Every corpus/**/*.json primitive case: polyccd against its `expect` block (formats.md,
-EXPECT), and the `expect` block itself against the independent oracle (tests/oracle.py),
+EXPECT), and the `expect` block itself against the independent oracle (tests/oracle/oracle.py),
 so a wrong hand-written expectation fails too. Scene files (polyccd/1, corpus/bodies/)
 are tested by test_scene_corpus.py; test_cli_corpus_passes runs `polyccd corpus` over
 the whole directory.
@@ -14,7 +14,7 @@ import polyccd
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"
 # Primitive cases only: the scene cases under corpus/bodies/ have their own tests
-# (test_scene_corpus.py, against tests/oracle_body.py).
+# (test_scene_corpus.py, against tests/oracle/oracle_body.py).
 FILES = sorted(p for p in CORPUS.rglob("*.json") if "bodies" not in p.relative_to(CORPUS).parts)
 DEFAULT_TOLERANCE = Fraction(1, 10 ** 12)
 
@@ -111,8 +111,8 @@ def test_cli_corpus_passes(run_cli):
 
 
 def test_generated_files_are_up_to_date():
-    """The files tests/make_corpus.py writes are on disk unchanged (reproducible data)."""
+    """The files tests/tools/make_corpus.py writes are on disk unchanged (reproducible data)."""
     import make_corpus
     stale = [rel for rel, text in make_corpus.all_files().items()
              if not (CORPUS / rel).exists() or (CORPUS / rel).read_text() != text]
-    assert not stale, "run `python tests/make_corpus.py`: %s" % stale
+    assert not stale, "run `python tests/tools/make_corpus.py`: %s" % stale

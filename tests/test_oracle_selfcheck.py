@@ -1,7 +1,7 @@
-"""The oracle's own tests (tests/oracle.py), independent of polyccd.
+"""The oracle's own tests (tests/oracle/oracle.py), independent of polyccd.
 
 1. Hand-constructed cases whose answer follows from reasoning (stated per case).
-2. A pointwise cross-check against a different formulation (tests/oracle_hull.py,
+2. A pointwise cross-check against a different formulation (tests/oracle/oracle_hull.py,
    Caratheodory subsets) at rational times: t = 0, 1, every rational critical time,
    random rationals, and just below the first contact time.
 3. Invariances (vertex order of a triangle, edge order and direction, swapping the two

@@ -1,8 +1,8 @@
-"""Property tests: polyccd.solve against the independent exact oracle (tests/oracle.py).
+"""Property tests: polyccd.solve against the independent exact oracle (tests/oracle/oracle.py).
 
 Per kind: RANDOM_COUNT random queries (free trajectories, contacts planted at rational
 and irrational times, planted then moved off by 10^-k) and DEGENERATE_COUNT deliberately
-degenerate ones (tests/oracle_degen.py: coplanar or collinear for all t, parallel edges,
+degenerate ones (tests/oracle/oracle_degen.py: coplanar or collinear for all t, parallel edges,
 coincident points, zero-length edges, collinear triangles, grazing double roots, contact
 at t = 0 or 1, near misses). Both must agree on `collides` and on the first contact time:
 exactly when it is rational; for an irrational time the reported enclosure must contain

@@ -43,7 +43,7 @@ def test_c_example_runs(tmp_path):
     src = tmp_path / "ex.c"
     src.write_text(_block("c"))
     exe = tmp_path / "ex"
-    lib = os.path.join(ROOT, "lib")
+    lib = os.path.join(ROOT, "build")   # where `make` puts libpolyccd.so
     subprocess.run(["cc", "-std=c99", "-Wall", "-Werror", "-I" + os.path.join(ROOT, "include"),
                     str(src), "-L" + lib, "-lpolyccd", "-Wl,-rpath," + lib, "-o", str(exe)],
                    check=True)

@@ -1,6 +1,6 @@
 """Every corpus/bodies/**/*.json scene (polyccd/1): polyccd's scene API against the case's
-`expect` block, which tests/make_body_corpus.py wrote from the independent body oracle
-(tests/oracle_body.py), never from polyccd.
+`expect` block, which tests/tools/make_body_corpus.py wrote from the independent body oracle
+(tests/oracle/oracle_body.py), never from polyccd.
 
 Checked (formats.md, EXPECT; bindings/python/API.md, Scenes): collides; first_contact
 (an exact rational is reported exactly; an enclosure [lo, hi] must meet the expected
@@ -145,7 +145,7 @@ def test_corpus_is_big_enough():
 
 def _holds(G, A, B, fa, fb, t):
     """Exactly: feature fa of body A and fb of body B touch at the oracle time t (in the
-    frame of A, tests/oracle_body.py predicates)."""
+    frame of A, tests/oracle/oracle_body.py predicates)."""
     ev = oracle_body.Ev(t, record=False)
 
     def pts(tag, body, f):

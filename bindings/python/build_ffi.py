@@ -1,29 +1,32 @@
-"""Builds the cffi extension polyccd/_pccd (API mode) in place, against lib/libpolyccd.so.
+"""Builds the cffi extension polyccd/_pccd (API mode) in place, against build/libpolyccd.so.
 
 Run from bindings/python (make venv does): python build_ffi.py
 
-The declarations come from bindings/pccd_cdef.h. The generated C file includes the real
-include/polyccd.h and is compiled with -Werror, so a function whose cdef type drifted
-from the header fails the build; enum values and the pccd_config layout are checked by
-cffi when the module is loaded (polyccd/__init__.py imports it).
+The declarations are generated from include/polyccd.h by gen_cdef.py at each build. The
+generated C file includes the real header and is compiled with -Werror, so a declaration
+the generator got wrong fails the build; enum and #define values come from the compiler,
+and the struct layouts are checked by cffi when the module is loaded
+(polyccd/__init__.py imports it).
 """
 from pathlib import Path
 
 from cffi import FFI
 
+from gen_cdef import header_cdef
+
 HERE = Path(__file__).absolute().parent
 REPO = HERE.parent.parent
 
 ffibuilder = FFI()
-ffibuilder.cdef((HERE.parent / "pccd_cdef.h").read_text())
+ffibuilder.cdef(header_cdef(REPO / "include" / "polyccd.h"))
 ffibuilder.set_source(
     "polyccd._pccd",
     '#include "polyccd.h"',
     include_dirs=[str(REPO / "include")],
-    library_dirs=[str(REPO / "lib")],
+    library_dirs=[str(REPO / "build")],
     libraries=["polyccd"],
-    # polyccd/_pccd*.so finds the library at <repo>/lib without LD_LIBRARY_PATH.
-    extra_link_args=["-Wl,-rpath,$ORIGIN/../../../lib"],
+    # polyccd/_pccd*.so finds the library at <repo>/build without LD_LIBRARY_PATH.
+    extra_link_args=["-Wl,-rpath,$ORIGIN/../../../build"],
     extra_compile_args=["-Werror"],
 )
 

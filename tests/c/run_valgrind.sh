@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Memory checks of libpolyccd under valgrind (`make valgrind`, which builds build/test_*).
 #
-# 1. The C API tests (build/test_config, test_query, test_result, test_solve,
-#    test_solve_face, test_motion, test_body, test_scene, test_index)
-#    under memcheck: no error of any kind, no definite or indirect leak, and each test
-#    itself must pass.
+# Usage: run_valgrind.sh [PROGRAM...], programs by name in build/ (default: one per
+# tests/c/test_*.c, what `make valgrind` passes).
+#
+# 1. The C API tests (build/test_config, test_query, ...) under memcheck: no error of any
+#    kind, no definite or indirect leak, and each test itself must pass.
 # 2. The regression corpus through the Python command line (`python -m polyccd corpus
 #    corpus/`), plus the queries of VALGRIND_QUERY_FILES (default: the 324 degenerate
 #    unit-test queries of the shared benchmark, unit-tests/*/*.csv, when present; about a
@@ -35,8 +36,11 @@ if ! command -v valgrind >/dev/null; then
 fi
 
 # ---- 1. the C tests ------------------------------------------------------------------
-for prog in test_config test_query test_result test_solve test_solve_face test_motion test_body \
-            test_scene test_index; do
+progs=("$@")
+if [ ${#progs[@]} -eq 0 ]; then
+  for src in tests/c/test_*.c; do progs+=("$(basename "$src" .c)"); done
+fi
+for prog in "${progs[@]}"; do
   log="$BUILD/valgrind-$prog.log"
   echo "== valgrind $BUILD/$prog (log: $log)"
   "${VG[@]}" --log-file="$log" "$BUILD/$prog" > "$BUILD/valgrind-$prog.out"
@@ -75,7 +79,7 @@ heads = ("Invalid ", "Conditional jump", "Use of uninitialised", "Syscall param"
 # polyccd code: the library (by object or source path, pccd:: or pccd_ functions) and the
 # cffi wrappers _cffi_f_pccd_* of the bindings. Not cffi's one-time module initialisation
 # (_cffi_init -> _my_Py_InitModule allocates a module definition it never frees).
-ours = re.compile(r"libpolyccd\.so|\bpccd::|: pccd_\w+ \(|_cffi_f_pccd_\w+ \(|(^|/)lib/(arith|poly|motion|pred|broad|api)/")
+ours = re.compile(r"libpolyccd\.so|\bpccd::|: pccd_\w+ \(|_cffi_f_pccd_\w+ \(|(^|/)lib/(util|arith|poly|motion|pred|narrow|boxes|range|scene|api)/")
 mine, theirs = [], 0
 for rec in records:
     head = rec[0]

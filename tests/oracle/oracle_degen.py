@@ -1,4 +1,4 @@
-"""Deliberately degenerate query constructions (see tests/oracle_gen.py for helpers).
+"""Deliberately degenerate query constructions (see tests/oracle/oracle_gen.py for helpers).
 
 degenerate_query(rng, kind) picks one construction of that kind at random. Most build
 the configuration in simple coordinates (a plane z = 0, a line, a fixed direction) and

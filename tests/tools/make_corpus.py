@@ -1,7 +1,7 @@
 """Builds corpus/<kind>/*.json (polyccd-query/1 cases) with expectations computed by the
-independent oracle (tests/oracle.py), never by polyccd.
+independent oracle (tests/oracle/oracle.py), never by polyccd.
 
-    python tests/make_corpus.py [--out corpus] [--check]
+    python tests/tools/make_corpus.py [--out corpus] [--check]
 
 Hand-constructed cases carry the answer derived by reasoning (`want`); the script stops
 if the oracle disagrees with it. Generated cases come from the property-test generators
@@ -15,7 +15,9 @@ import random
 import sys
 from fractions import Fraction as F
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+TESTS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# The oracles live in tests/oracle/ and import each other by plain name.
+sys.path.insert(0, os.path.join(TESTS, "oracle"))
 import oracle              # noqa: E402
 import oracle_degen        # noqa: E402
 import oracle_gen          # noqa: E402
@@ -114,7 +116,7 @@ def generated_cases():
                 rng = random.Random("%d:%s:%s:%d" % (GENERATED_SEED, kind, mode, i))
                 k, pts, radii, label = gen(rng, kind)
                 name = "%s-generated-%s-%d" % (SHORT[kind], mode, i)
-                src = ("generator: tests/make_corpus.py seed %d (%s query %d of %s): %s"
+                src = ("generator: tests/tools/make_corpus.py seed %d (%s query %d of %s): %s"
                        % (GENERATED_SEED, mode, i, kind, label))
                 out.append((name, kind, pts, radii, src, "any"))
     return out
@@ -135,7 +137,7 @@ def all_files():
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "..", "corpus"))
+    ap.add_argument("--out", default=os.path.join(TESTS, "..", "corpus"))
     ap.add_argument("--check", action="store_true")
     args = ap.parse_args()
     files = all_files()

@@ -1,4 +1,4 @@
-"""Exact real algebraic numbers in [0, 1] for the test oracle (tests/oracle.py).
+"""Exact real algebraic numbers in [0, 1] for the test oracle (tests/oracle/oracle.py).
 
 Independent of the engine: no root counting by Hermite/Hankel forms. A polynomial with
 rational coefficients is factored into irreducible factors over Q (python-flint); the

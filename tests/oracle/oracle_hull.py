@@ -1,6 +1,6 @@
 """A second, pointwise contact test used only to check the oracle (and its generators):
 at a RATIONAL time t, decide contact with plain Fractions by a formulation unrelated to
-tests/oracle_pred.py.
+tests/oracle/oracle_pred.py.
 
 Every kind except spheres is "does the origin lie in the convex hull of finitely many
 points?": vertex-face 0 in conv{f_i - v}, vertex-edge 0 in conv{e_i - v}, vertex-vertex

@@ -1,4 +1,4 @@
-"""Query generators shared by tests/test_property.py and tests/make_corpus.py.
+"""Query generators shared by tests/test_property.py and tests/tools/make_corpus.py.
 
 Every generator takes a random.Random and returns (kind, points, radii, label): points
 in the polyccd-query/1 layout with Fraction coefficients, radii None except for spheres,

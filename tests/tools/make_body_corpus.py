@@ -1,7 +1,7 @@
 """Builds corpus/bodies/<category>/<name>.json (polyccd/1 scene cases) whose expectations
-come from the independent body oracle (tests/oracle_body.py), never from polyccd.
+come from the independent body oracle (tests/oracle/oracle_body.py), never from polyccd.
 
-    python tests/make_body_corpus.py [--out corpus/bodies] [--check]
+    python tests/tools/make_body_corpus.py [--out corpus/bodies] [--check]
 
 Every case carries the answer reasoned out by hand (`want`, derivation in the comment
 next to it) and the script stops if the oracle disagrees; a few cases say "any" (the
@@ -18,13 +18,15 @@ import sys
 import time
 from fractions import Fraction as F
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+TESTS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# The oracles live in tests/oracle/ and import each other by plain name.
+sys.path.insert(0, os.path.join(TESTS, "oracle"))
 import oracle_body as OB          # noqa: E402
 from oracle import decimal_str, fraction_str, time_strictly_in   # noqa: E402
 
-SOURCE = "tests/make_body_corpus.py (oracle: tests/oracle_body.py)"
+SOURCE = "tests/tools/make_body_corpus.py (oracle: tests/oracle/oracle_body.py)"
 ENCLOSURE = F(1, 10 ** 20)
-OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "corpus", "bodies")
+OUT = os.path.join(TESTS, "..", "corpus", "bodies")
 E30 = F(1, 10 ** 30)
 
 

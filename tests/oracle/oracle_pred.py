@@ -4,7 +4,7 @@ geometry of closed sets (formats.md, "Meaning of a contact").
 A predicate decides contact at ONE time tau. All arithmetic is done on polynomials of t
 (the coordinates are polynomials, so every derived quantity is too); the only place the
 time enters is `ev.sign(p)`, the exact sign of p(tau). The predicates branch on these
-signs (degenerate triangle? parallel edges?), and the driver (tests/oracle.py) records
+signs (degenerate triangle? parallel edges?), and the driver (tests/oracle/oracle.py) records
 every polynomial whose sign was asked, which is what makes the answer piecewise constant
 between the roots of those polynomials.
 

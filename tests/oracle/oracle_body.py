@@ -34,7 +34,7 @@ evaluation.
 Each feature pair is decided by a contact predicate written as a decision tree over
 exact signs of such rational functions (point in closed triangle, closed segments meet,
 ball meets closed triangle, balls meet). The decision over t in [0, 1] is the critical
-time cylindrical decomposition of tests/oracle.py, re-implemented here for rational
+time cylindrical decomposition of tests/oracle/oracle.py, re-implemented here for rational
 functions: the predicate is evaluated at a rational sample of each gap between critical
 times, recording every quantity whose sign it asks; every real root in [0, 1] of the
 irreducible factors of their numerators (and denominators) becomes a critical time;

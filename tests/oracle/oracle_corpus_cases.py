@@ -1,4 +1,4 @@
-"""Hand-constructed corpus cases for tests/make_corpus.py.
+"""Hand-constructed corpus cases for tests/tools/make_corpus.py.
 
 Each entry: (file name, kind, points, radii, source, want). `want` is the answer derived
 by reasoning (stated in the source text): a first contact time, None for no contact, or

@@ -6,7 +6,7 @@
 
 Method (deliberately unlike the engine's Hermite/Hankel root counting): a direct
 cylindrical decomposition of [0, 1] in t.
-  1. The contact predicate of the kind (tests/oracle_pred.py) is a decision tree over
+  1. The contact predicate of the kind (tests/oracle/oracle_pred.py) is a decision tree over
      exact signs of polynomials of t. Evaluate it at a rational sample of each open gap
      between the current critical times, recording every polynomial whose sign it asks.
   2. Every real root in [0, 1] of every irreducible factor of a recorded, non-zero
