@@ -217,7 +217,7 @@ void report_kind(const char *kind, const std::vector<std::size_t> &idx, const st
   json.open("ratio_to_ti", '{');
   for (int m : {DECIDE, TIME}) {
     double rmed = st[m].median / st[TI].median, rmean = st[m].mean / st[TI].mean;
-    std::printf("      %s/TI: median %.2fx, mean %.2fx\n", method_name(m), rmed, rmean);
+    std::printf("      %s/TI: median %.3gx, mean %.3gx\n", method_name(m), rmed, rmean);
     json.open(method_name(m), '{');
     json.num("median", rmed), json.num("mean", rmean);
     json.close('}');
