@@ -119,7 +119,10 @@ valgrind: deps
 sanitize: deps
 	+bash tests/c/run_sanitizers.sh
 
-bench: all
+include tests/bench/bench.mk
+
+bench: all $(BUILD)/bench_linear
+	$(BUILD)/bench_linear $(BENCH_LINEAR_ARGS)
 	$(VENV)/bin/pip install -q -r tests/bench/requirements.txt
 	$(VPY) tests/bench/bench_queries.py
 	$(VPY) tests/bench/bench_bodies.py

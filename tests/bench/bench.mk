@@ -1,0 +1,42 @@
+# bench_linear: polyccd's C API against Tight Inclusion's C++ in one process
+# (tests/bench/bench_linear.cpp). Included by the top Makefile; `make bench-linear` runs it
+# alone, `make bench` runs it before the Python benchmarks. Arguments: BENCH_LINEAR_ARGS,
+# e.g. make bench-linear BENCH_LINEAR_ARGS="--workloads public --repeat 5 --json b.json".
+
+# The directory holding libpolyccd.so (the only place the bench names it).
+PCCD_LIBDIR ?= lib
+# Tight Inclusion's source (../shared/peers/tight-inclusion/README.md) and Eigen.
+TI_DIR      ?= ../shared/peers/tight-inclusion
+EIGEN_DIR   ?= /usr/include/eigen3
+BENCH_LINEAR_ARGS ?=
+
+BENCH_DIR   := $(BUILD)/bench
+# As the peer README builds Tight Inclusion; the bench's own files get the same flags.
+BENCH_OPT   := -O3 -march=native -std=c++17 -DNDEBUG
+TI_OBJS     := $(patsubst %,$(BENCH_DIR)/ti_%.o,avx ccd interval interval_root_finder)
+BENCH_LINEAR_OBJS := $(patsubst %,$(BENCH_DIR)/%.o,bench_linear bench_linear_input \
+                       bench_linear_report bench_linear_batch)
+# The batch hook (bench_linear_batch.cpp) is compiled in once polyccd.h declares the call.
+BENCH_BATCH_DEF := $(shell grep -q 'pccd_solve_linear_batch_d' include/polyccd.h && echo -DPCCD_HAVE_LINEAR_BATCH)
+
+.PHONY: bench-linear
+
+$(BENCH_DIR)/ti_%.o: $(TI_DIR)/tight_inclusion/%.cpp | deps
+	@mkdir -p $(dir $@)
+	$(CXX) $(BENCH_OPT) -I$(TI_DIR) -I$(EIGEN_DIR) -MMD -MP -c $< -o $@
+
+# Our files: warnings on, Tight Inclusion and Eigen as system headers (their warnings
+# are not ours); polyccd only through its public header.
+$(BENCH_DIR)/%.o: tests/bench/%.cpp | deps
+	@mkdir -p $(dir $@)
+	$(CXX) $(BENCH_OPT) -Wall -Wextra -Iinclude -isystem $(TI_DIR) -isystem $(EIGEN_DIR) \
+	  $(BENCH_BATCH_DEF) -MMD -MP -c $< -o $@
+
+$(BUILD)/bench_linear: $(BENCH_LINEAR_OBJS) $(TI_OBJS) $(PCCD_LIBDIR)/libpolyccd.so
+	$(CXX) -o $@ $(BENCH_LINEAR_OBJS) $(TI_OBJS) -L$(PCCD_LIBDIR) -lpolyccd \
+	  -Wl,-rpath,'$$ORIGIN/../$(PCCD_LIBDIR)' -pthread
+
+bench-linear: $(BUILD)/bench_linear
+	$(BUILD)/bench_linear $(BENCH_LINEAR_ARGS)
+
+-include $(BENCH_LINEAR_OBJS:.o=.d) $(TI_OBJS:.o=.d)
