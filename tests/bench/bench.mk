@@ -4,7 +4,7 @@
 # e.g. make bench-linear BENCH_LINEAR_ARGS="--workloads public --repeat 5 --json b.json".
 
 # The directory holding libpolyccd.so (the only place the bench names it).
-PCCD_LIBDIR ?= lib
+PCCD_LIBDIR ?= $(BUILD)
 # Tight Inclusion's source (../shared/peers/tight-inclusion/README.md) and Eigen.
 TI_DIR      ?= ../shared/peers/tight-inclusion
 EIGEN_DIR   ?= /usr/include/eigen3
@@ -34,7 +34,7 @@ $(BENCH_DIR)/%.o: tests/bench/%.cpp | deps
 
 $(BUILD)/bench_linear: $(BENCH_LINEAR_OBJS) $(TI_OBJS) $(PCCD_LIBDIR)/libpolyccd.so
 	$(CXX) -o $@ $(BENCH_LINEAR_OBJS) $(TI_OBJS) -L$(PCCD_LIBDIR) -lpolyccd \
-	  -Wl,-rpath,'$$ORIGIN/../$(PCCD_LIBDIR)' -pthread
+	  -Wl,-rpath,$(abspath $(PCCD_LIBDIR)) -pthread
 
 bench-linear: $(BUILD)/bench_linear
 	$(BUILD)/bench_linear $(BENCH_LINEAR_ARGS)

@@ -1,11 +1,8 @@
 // The `batch` workload of bench_linear: pccd_solve_linear_batch_d (1 and 2 threads)
 // against single pccd_solve_linear_d calls on the same sim queries, decide only.
 //
-// HOOK: the batch API is being added to the library on another branch. This file times it
-// only when PCCD_HAVE_LINEAR_BATCH is defined: by polyccd.h itself, or by
-// tests/bench/bench.mk when `grep pccd_solve_linear_batch_d include/polyccd.h` finds the
-// declaration. Without it the workload prints that it was skipped, and the bench builds
-// and runs as before.
+// Compiled when tests/bench/bench.mk finds pccd_solve_linear_batch_d in polyccd.h
+// (PCCD_HAVE_LINEAR_BATCH); otherwise the workload prints that it was skipped.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -17,12 +14,6 @@
 namespace bench {
 
 #ifdef PCCD_HAVE_LINEAR_BATCH
-// ASSUMED until the header lands (planned signature: int pccd_solve_linear_batch_d(
-// pccd_kind kind, size_t n, const double *t0, const double *t1, const pccd_config *cfg,
-// const pccd_batch_options *opt, pccd_batch_out *out)). The field names below are
-// guesses, all in batch_call(): check them against polyccd.h when merging.
-//   - pccd_batch_options_init(&opt) fills the defaults; opt.threads is the thread count;
-//   - out.collides (int *, n entries, owned by the caller) receives the answers.
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -32,9 +23,13 @@ int batch_call(pccd_kind kind, const std::vector<double> &t0, const std::vector<
   pccd_batch_options opt;
   pccd_batch_options_init(&opt);
   opt.threads = threads;
+  std::vector<unsigned char> hit(collides.size());
   pccd_batch_out out{};
-  out.collides = collides.data();
-  return pccd_solve_linear_batch_d(kind, collides.size(), t0.data(), t1.data(), &cfg, &opt, &out);
+  out.struct_size = sizeof out;
+  out.collides = hit.data();
+  const int rc = pccd_solve_linear_batch_d(kind, collides.size(), t0.data(), t1.data(), &cfg, &opt, &out);
+  for (std::size_t i = 0; i < hit.size(); ++i) collides[i] = rc == PCCD_OK ? hit[i] : -1;
+  return rc;
 }
 
 double seconds_since(Clock::time_point a) {

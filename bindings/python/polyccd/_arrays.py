@@ -22,31 +22,28 @@ def _exact_float64(a, place):
     return b
 
 
-def linear_coords(x, place, npoints):
-    """A C-contiguous float64 array of shape (npoints, 3), or InputError naming place."""
+def _float64_array(x, place, shape_text, fits):
+    """A C-contiguous float64 array of x when fits(shape), or InputError naming place and
+    the expected shape_text."""
     a = x if type(x) is np.ndarray else None
     if a is None:
         try:
             a = np.asarray(x)
         except (ValueError, TypeError) as e:
-            raise InputError(f"{place}: not an array of shape ({npoints}, 3): {e}") from None
+            raise InputError(f"{place}: not an array of shape {shape_text}: {e}") from None
     if a.dtype != _F64:
         a = _exact_float64(a, place)
-    if a.shape != (npoints, 3):
-        raise InputError(f"{place}: expected shape ({npoints}, 3), got {a.shape}")
+    if not fits(a.shape):
+        raise InputError(f"{place}: expected shape {shape_text}, got {a.shape}")
     return a if a.flags.c_contiguous else np.ascontiguousarray(a)
+
+
+def linear_coords(x, place, npoints):
+    """A C-contiguous float64 array of shape (npoints, 3), or InputError naming place."""
+    return _float64_array(x, place, f"({npoints}, 3)", lambda s: s == (npoints, 3))
 
 
 def linear_batch(x, place, npoints):
     """A C-contiguous float64 array of shape (n, npoints, 3), or InputError naming place."""
-    a = x if type(x) is np.ndarray else None
-    if a is None:
-        try:
-            a = np.asarray(x)
-        except (ValueError, TypeError) as e:
-            raise InputError(f"{place}: not an array of shape (n, {npoints}, 3): {e}") from None
-    if a.dtype != _F64:
-        a = _exact_float64(a, place)
-    if a.ndim != 3 or a.shape[1:] != (npoints, 3):
-        raise InputError(f"{place}: expected shape (n, {npoints}, 3), got {a.shape}")
-    return a if a.flags.c_contiguous else np.ascontiguousarray(a)
+    return _float64_array(x, place, f"(n, {npoints}, 3)",
+                          lambda s: len(s) == 3 and s[1:] == (npoints, 3))
