@@ -3,7 +3,8 @@ against the independent exact oracle (tests/oracle.py) on the queries it is buil
 simulation-like vertex-face and edge-edge steps whose primitives cross each other's plane
 once, missing by a relative margin of 10^-1 to 10^-13 (the filter's "misses" verdict),
 touching inside by 0 or 10^-1 to 10^-17 ("graze": the filter must leave those to the solver), or
-well inside, plus boxes apart and planes never reached.
+well inside, plus boxes apart and planes never reached; with and without a time (without
+one, certified transversal hits are answered by the filter too).
 
 Every query is doubles at t = 0 and t = 1 (the positions of a planted configuration at a
 time t_c, moved back and forth along random velocities in floating point: the oracle
@@ -82,19 +83,22 @@ def _edge_edge(rng, mode):
 
 @pytest.mark.parametrize("kind", ["vertex-face", "edge-edge"])
 @pytest.mark.parametrize("mode", ["miss", "graze", "hit"])
-def test_filter_agrees_with_the_oracle(kind, mode):
+@pytest.mark.parametrize("want_time", [True, False])
+def test_filter_agrees_with_the_oracle(kind, mode, want_time):
     make = _vertex_face if kind == "vertex-face" else _edge_edge
     bad, stages = [], {}
     for i in range(COUNT):
         rng = random.Random(f"linear-filter:{kind}:{mode}:{i}")
         t0, t1 = make(rng, mode)
-        got = polyccd.solve_linear(kind, t0, t1)
+        got = polyccd.solve_linear(kind, t0, t1, want_time=want_time)
         stages[got.stage] = stages.get(got.stage, 0) + 1
         pts = [[[Fraction(a[k]), Fraction(b[k]) - Fraction(a[k])] for k in range(3)]
                for a, b in zip(t0, t1)]
         want = oracle.solve(kind, pts)
         if got.collides != want.collides:
             bad.append((i, t0, t1, got.collides, want.collides))
+        elif not want_time:
+            pass
         elif want.collides and oracle.is_rational(want.first):
             if got.first_contact.exact != want.first:
                 bad.append((i, t0, t1, got.first_contact, want.first))
@@ -104,3 +108,24 @@ def test_filter_agrees_with_the_oracle(kind, mode):
     # The misses must be decided without the exact stage for the filter to matter.
     if mode == "miss":
         assert stages.get("exact", 0) < COUNT // 10, stages
+
+
+@pytest.mark.parametrize("kind", ["vertex-face", "edge-edge"])
+@pytest.mark.parametrize("want_time,tolerance", [(True, "1e-12"), (True, "1e-6"), (False, "1e-12")])
+def test_filter_answers_equal_the_staged_solver(kind, want_time, tolerance):
+    """The filter's answers (misses and certified hits) are the staged solver's: the same
+    query through polyccd.solve (pccd_query_solve, which has no filter) gives the same
+    collides, enclosure, exactness and features (the stage may differ)."""
+    make = _vertex_face if kind == "vertex-face" else _edge_edge
+    bad = 0
+    for i in range(COUNT):
+        rng = random.Random(f"linear-filter-same:{kind}:{i}")
+        t0, t1 = make(rng, ("miss", "graze", "hit")[i % 3])
+        got = polyccd.solve_linear(kind, t0, t1, time_tolerance=tolerance, want_time=want_time)
+        pts = [[[Fraction(a[k]), Fraction(b[k]) - Fraction(a[k])] for k in range(3)]
+               for a, b in zip(t0, t1)]
+        ref = polyccd.solve(kind, pts, time_tolerance=tolerance, want_time=want_time)
+        if (got.collides, got.first_contact, got.features) != (ref.collides, ref.first_contact, ref.features):
+            bad += 1
+            first = (i, got, ref)
+    assert bad == 0, f"{bad} differ, first: {first}"

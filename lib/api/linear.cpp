@@ -1,13 +1,14 @@
 // pccd_solve_linear_d and its batch twin pccd_solve_linear_batch_d: queries of points
-// moving linearly, given as doubles. Both run the static filter (pred/linear_filter.h)
-// first and the staged solver only when it cannot decide, so a batch entry is exactly
-// the single call's answer.
+// moving linearly, given as doubles. Both run the static filter (pred/linear_filter.h),
+// then the hit certificate (pred/linear_crossing.h), and the staged solver only when
+// neither decides, so a batch entry is exactly the single call's answer.
 #include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "api/guard.h"
 #include "api/handles.h"
+#include "pred/linear_crossing.h"
 #include "pred/linear_filter.h"
 #include "util/thread_pool.h"
 
@@ -48,6 +49,13 @@ bool filtered(long kind, const double *p0, const double *p1, pred::Contact_resul
     case pred::Linear_verdict::unknown: break;
   }
   return false;
+}
+
+// The hit certificate (pred/linear_crossing.h): the decide-only answer of a single
+// transversal crossing (with a time, the staged solver's enclosure is kept).
+bool certified_hit(long kind, const double *p0, const double *p1, const pred::Solve_options &opt,
+                   pred::Contact_result &out) {
+  return !opt.want_time && pred::crossing_hit(static_cast<int>(kind), p0, p1, out);
 }
 
 // The staged solver on n points with finite coordinates.
@@ -109,8 +117,11 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
     pccd::api::checked_config(cfg);
     pccd::api::check_finite(p_t0, n, "p_t0", nullptr);
     pccd::api::check_finite(p_t1, n, "p_t1", nullptr);
-    if (!pccd::api::filtered(k, p_t0, p_t1, res->r))
-      res->r = pccd::api::solve_staged(k, n, p_t0, p_t1, pccd::api::read_config(cfg));
+    if (!pccd::api::filtered(k, p_t0, p_t1, res->r)) {
+      const pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
+      if (!pccd::api::certified_hit(k, p_t0, p_t1, opt, res->r))
+        res->r = pccd::api::solve_staged(k, n, p_t0, p_t1, opt);
+    }
     res->solved = true;
     return PCCD_OK;
   });
@@ -161,7 +172,8 @@ PCCD_API int pccd_solve_linear_batch_d(pccd_kind kind, size_t n, const double *t
       for (size_t q = c * pccd::api::kChunk; q < end; ++q) {
         const double *p0 = t0 + 3 * np * q, *p1 = t1 + 3 * np * q;
         pccd::api::reset(r);
-        if (!pccd::api::filtered(k, p0, p1, r)) r = pccd::api::solve_staged(k, np, p0, p1, so);
+        if (!pccd::api::filtered(k, p0, p1, r) && !pccd::api::certified_hit(k, p0, p1, so, r))
+          r = pccd::api::solve_staged(k, np, p0, p1, so);
         pccd::api::write(*out, q, r);
       }
     });

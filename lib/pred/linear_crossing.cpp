@@ -65,29 +65,46 @@ double estimate_root(const Cubic_bernstein &f) {
   return 0.5 * (lo + hi);
 }
 
-// Some side condition certainly says "apart" on all of T (linear_crossing.h).
-bool apart_on(int kind, const double *p0, const double *p1, const Interval &T) {
+// The side conditions over T, each as a certain sign (0: not certain): vertex-face g_0,
+// g_1, g_2; edge-edge s(b0), s(b1), s(a0), s(a1) (linear_crossing.h).
+struct Sides {
+  int s[4] = {0, 0, 0, 0};
+};
+Sides sides_on(int kind, const double *p0, const double *p1, const Interval &T) {
   const I3 x0 = position(p0, p1, 0, T), x1 = position(p0, p1, 1, T), x2 = position(p0, p1, 2, T),
            x3 = position(p0, p1, 3, T);
+  Sides out;
   if (kind == VERTEX_FACE) {  // v = x0, triangle x1 x2 x3
     const I3 f[3] = {x1, x2, x3};
     const I3 n = cross(x2 - x1, x3 - x1);
-    for (int i = 0; i < 3; ++i)
-      if (certain_sign(dot(n, cross(f[(i + 1) % 3] - f[i], x0 - f[i]))) < 0) return true;
-    return false;
+    for (int i = 0; i < 3; ++i) out.s[i] = certain_sign(dot(n, cross(f[(i + 1) % 3] - f[i], x0 - f[i])));
+    return out;
   }
   // edge-edge: a0 = x0, a1 = x1, b0 = x2, b1 = x3
   const I3 ea = x1 - x0, eb = x3 - x2, n = cross(ea, eb);
-  const int sb0 = certain_sign(dot(n, cross(ea, x2 - x0))), sb1 = certain_sign(dot(n, cross(ea, x3 - x0)));
-  const int sa0 = certain_sign(dot(n, cross(eb, x0 - x2))), sa1 = certain_sign(dot(n, cross(eb, x1 - x2)));
-  return sb0 * sb1 > 0 || sa0 * sa1 > 0;
+  out.s[0] = certain_sign(dot(n, cross(ea, x2 - x0)));
+  out.s[1] = certain_sign(dot(n, cross(ea, x3 - x0)));
+  out.s[2] = certain_sign(dot(n, cross(eb, x0 - x2)));
+  out.s[3] = certain_sign(dot(n, cross(eb, x1 - x2)));
+  return out;
 }
 
-}  // namespace
+// Some side condition certainly says "apart" on all of T.
+bool apart(int kind, const Sides &d) {
+  if (kind == VERTEX_FACE) return d.s[0] < 0 || d.s[1] < 0 || d.s[2] < 0;
+  return d.s[0] * d.s[1] > 0 || d.s[2] * d.s[3] > 0;
+}
 
-bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_bernstein &f) {
-  if (!f.ok || (kind != VERTEX_FACE && kind != EDGE_EDGE)) return false;
-  Interval c[4];
+// Every side condition certainly says "inside" on all of T.
+bool inside(int kind, const Sides &d) {
+  if (kind == VERTEX_FACE) return d.s[0] > 0 && d.s[1] > 0 && d.s[2] > 0;
+  return d.s[0] * d.s[1] < 0 && d.s[2] * d.s[3] < 0;
+}
+
+// f's only root in [0, 1] and a bracket [ta, tb] of it with certainly opposite signs of
+// f at its ends (c: the enclosed coefficients); false when the Descartes part fails or no
+// bracket certifies.
+bool single_root_bracket(const Cubic_bernstein &f, Interval c[4], double &ta, double &tb) {
   coefficients(f, c);
   int changes = 0;
   for (int k = 0; k < 4; ++k) {
@@ -99,11 +116,42 @@ bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_b
   // The narrowest bracket whose ends certainly differ in sign (f's enclosure error
   // sets how narrow it can be).
   for (double h : {0x1p-40, 0x1p-28, 0x1p-16, 0x1p-6}) {
-    const double ta = r - h > 0 ? r - h : 0.0, tb = r + h < 1 ? r + h : 1.0;
-    if (certain_sign(eval(c, ta)) * certain_sign(eval(c, tb)) < 0)
-      return apart_on(kind, p0, p1, Interval(ta, tb));
+    ta = r - h > 0 ? r - h : 0.0;
+    tb = r + h < 1 ? r + h : 1.0;
+    if (certain_sign(eval(c, ta)) * certain_sign(eval(c, tb)) < 0) return true;
   }
   return false;
+}
+
+}  // namespace
+
+bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_bernstein &f) {
+  if (!f.ok || (kind != VERTEX_FACE && kind != EDGE_EDGE)) return false;
+  Interval c[4];
+  double ta, tb;
+  return single_root_bracket(f, c, ta, tb) && apart(kind, sides_on(kind, p0, p1, Interval(ta, tb)));
+}
+
+bool crossing_hit(int kind, const double *p0, const double *p1, Contact_result &out) {
+  if (kind != VERTEX_FACE && kind != EDGE_EDGE) return false;
+  const double *P[4][2];
+  for (int i = 0; i < 4; ++i) {
+    P[i][0] = p0 + 3 * i;
+    P[i][1] = p1 + 3 * i;
+  }
+  const Cubic_bernstein f = kind == VERTEX_FACE ? cubic_bernstein(P[1], P[2], P[3], P[0])
+                                                : cubic_bernstein(P[0], P[1], P[2], P[3]);
+  Interval c[4];
+  double ta, tb;
+  if (!f.ok || !single_root_bracket(f, c, ta, tb) || !inside(kind, sides_on(kind, p0, p1, Interval(ta, tb))))
+    return false;
+  out.collides = true;
+  out.exact = false;
+  out.lo = 0;
+  out.hi = 1;
+  out.features.assign(1, Feature{kind, {{0, 1, 2, 3}}});
+  out.stage = STAGE_INTERVAL;
+  return true;
 }
 
 }  // namespace pccd::pred

@@ -19,14 +19,33 @@
 //    s(x1) not to have one strict sign).
 // The only time the primitives are coplanar is r, and there they are apart: no contact.
 // Anything else (several roots, tangency, uncertain signs) is left to the solver.
+//
+// The hit half: the same single crossing r, where the primitives certainly touch
+// transversally, answered without the staged solver. With the same bracket T of r, the
+// side conditions are certainly "inside" on all of T:
+//  - vertex-face: g_i > 0 for i = 0, 1, 2 (v in the open face; then not on an edge or
+//    a vertex, so the vertex-face feature alone touches);
+//  - edge-edge: s(b0) s(b1) < 0 and s(a0) s(a1) < 0 (the open edges cross at one point;
+//    no endpoint is on the other segment's line, so edge-edge alone touches).
+// So the query collides, only at r, with the one feature (points 0, 1, 2, 3): the
+// staged solver's decide-only answer (solve.h, poly/earliest.h without a time: the
+// enclosure [0, 1] and the features that touch somewhere). It is used without a time
+// only: with one, the solver's bisection may take other split points where its own
+// interval counts are unsure, and its enclosure is kept as it is.
 #pragma once
 
 #include "pred/linear_filter.h"
+#include "pred/solve.h"
 
 namespace pccd::pred {
 
 // kind: VERTEX_FACE or EDGE_EDGE; f: cubic_bernstein of the kind's coplanarity
 // determinant (linear_filter.cpp's order). True only when the proof above holds.
 bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_bernstein &f);
+
+// kind: VERTEX_FACE or EDGE_EDGE; p0, p1: finite doubles (linear_filter.h). True and the
+// decide-only answer in out (collides, [0, 1], the feature, stage interval; exact false)
+// when the certificate holds.
+bool crossing_hit(int kind, const double *p0, const double *p1, Contact_result &out);
 
 }  // namespace pccd::pred
