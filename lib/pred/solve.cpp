@@ -196,6 +196,19 @@ Contact_result solve(const Query_data<Interval> &iq,
       if (set.features[set.systems[i].tag].kind == f.kind &&
           set.features[set.systems[i].tag].points == f.points)
         active.push_back(i);
+  // The modular test first: when none of their polynomials can have a rational root, t*
+  // is irrational and the enclosure stays (what rational_first_contact would find, at a
+  // fraction of its cost).
+  bool irrational = !active.empty();
+  for (size_t i : active) {
+    const System<Rational> &s = set.systems[i];
+    if (s.kind == System<Rational>::Kind::zero_f || s.f.degree() < 1 ||
+        poly::may_have_rational_root(poly::primitive_positive(s.f))) {
+      irrational = false;
+      break;
+    }
+  }
+  if (irrational) return out;
   poly::Rational_root_result rr = poly::rational_first_contact(set.systems, active, out.lo, out.hi);
   if (rr.exact) {
     out.exact = true;
