@@ -94,7 +94,8 @@ typedef enum pccd_stage {
   PCCD_STAGE_BOUNDS = 1,    /* conservative space-time bounds separated the primitives */
   PCCD_STAGE_BERNSTEIN = 2, /* interval Bernstein enclosures excluded every contact */
   PCCD_STAGE_INTERVAL = 3,  /* the full algorithm ran in certified interval arithmetic */
-  PCCD_STAGE_EXACT = 4      /* the full algorithm ran in exact rational arithmetic */
+  PCCD_STAGE_EXACT = 4      /* the full algorithm ran in exact rational arithmetic, or the
+                               exact search for a rational first time did */
 } pccd_stage;
 
 /* Limits (PCCD_ELIMIT beyond them). */

@@ -210,6 +210,7 @@ Contact_result solve(const Query_data<Interval> &iq,
   }
   if (irrational) return out;
   poly::Rational_root_result rr = poly::rational_first_contact(set.systems, active, out.lo, out.hi);
+  out.stage = STAGE_EXACT;  // exact root isolation decided whether the time is rational
   if (rr.exact) {
     out.exact = true;
     out.lo = out.hi = rr.t;

@@ -13,7 +13,8 @@
 namespace pccd::pred {
 
 // Which stage decided (the values of pccd_stage in polyccd.h; lib/api/constants.cpp
-// checks that the two agree).
+// checks that the two agree). STAGE_EXACT also when the interval stage enclosed the
+// first time and the exact search for a rational one (poly/rational_root.h) had to run.
 enum Stage : int { STAGE_NONE = 0, STAGE_BOUNDS = 1, STAGE_BERNSTEIN = 2, STAGE_INTERVAL = 3, STAGE_EXACT = 4 };
 
 struct Solve_options {
