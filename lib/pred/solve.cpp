@@ -63,16 +63,12 @@ Query_data<Interval> restricted(const Query_data<Interval> &q, double u) {
   return r;
 }
 
-// True when t*, a root of the polynomial of one of the systems of `active` (the ones
-// touching first), is certainly irrational: each of their exact polynomials, as an
-// integer polynomial, misses a root modulo some small prime, so has no rational root
-// (poly::may_have_rational_root). Builds those systems alone, not the whole set.
-//
-// The points are first scaled by the common denominator L > 0 of their coefficients and
-// the radii: every condition is homogeneous in point differences and radii (the scale D
-// is kept), so the roots are the same, and the systems are built from integers, which
-// GMP multiplies without reducing fractions.
-bool first_time_irrational(Query_data<Rational> q, const std::vector<Feature> &active) {
+// The exact query with its points and radii scaled by the common denominator L > 0 of
+// their coefficients. Every contact condition is homogeneous in point differences and
+// radii (the scale D is kept; query_systems.h), so every system has the same roots and
+// signs, hence the same answers, and the exact stage works on integers, which GMP
+// multiplies without reducing fractions (the gcds of mpq arithmetic dominated it).
+Query_data<Rational> integral(Query_data<Rational> q) {
   arith::Integer L = 1;
   auto take = [&](const Rational &x) { mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t()); };
   for (const auto &pt : q.p)
@@ -86,6 +82,15 @@ bool first_time_irrational(Query_data<Rational> q, const std::vector<Feature> &a
         for (Rational &c : pt[a].c) c *= l;
     for (Rational &r : q.radius) r *= l;
   }
+  return q;
+}
+
+// True when t*, a root of the polynomial of one of the systems of `active` (the ones
+// touching first), is certainly irrational: each of their exact polynomials, as an
+// integer polynomial, misses a root modulo some small prime, so has no rational root
+// (poly::may_have_rational_root). Builds those systems alone, not the whole set, from
+// the integral query.
+bool first_time_irrational(const Query_data<Rational> &q, const std::vector<Feature> &active) {
   // The face and edge-edge polynomials directly (the common case: their side
   // conditions are not needed here); any other feature through its system.
   std::vector<Poly<Rational>> fs;
@@ -157,7 +162,7 @@ Contact_result solve(const Query_data<Interval> &iq,
     try {
       meets = ball_meets_triangle_at_zero(iq);
     } catch (const arith::Uncertain &) {
-      meets = ball_meets_triangle_at_zero(exact_points());
+      meets = ball_meets_triangle_at_zero(integral(exact_points()));
       stage = STAGE_EXACT;
     }
     if (meets) {
@@ -179,8 +184,9 @@ Contact_result solve(const Query_data<Interval> &iq,
 
   // A time was enclosed in intervals and may be rational. Most are not, which a cheap
   // modular test of the first-touching systems alone proves.
-  if (decided && first_time_irrational(exact_points(), out.features)) return out;
-  Feature_set<Rational> set = build_systems(exact_points());
+  const Query_data<Rational> eq = integral(exact_points());
+  if (decided && first_time_irrational(eq, out.features)) return out;
+  Feature_set<Rational> set = build_systems(eq);
   if (!decided) {
     poly::Search_result<Rational> r = search(set, opt);
     fill(out, set, r);
