@@ -126,6 +126,18 @@ void add_vertex_edge(Feature_set<NT> &set, const Point_traj<NT> &v, const Point_
              {motion::dot(v - e0, e), motion::dot(e1 - v, e)});
 }
 
+// The coplanarity polynomials every vertex-face / edge-edge contact is a root of:
+// n . (v - f0) with n = (f1 - f0) x (f2 - f0), and ((a1 - a0) x (b0 - a0)) . (b1 - a0).
+template <class NT>
+Poly<NT> vertex_face_polynomial(const Point_traj<NT> &v, const std::array<const Point_traj<NT> *, 3> &fv) {
+  return motion::dot(motion::cross(*fv[1] - *fv[0], *fv[2] - *fv[0]), v - *fv[0]);
+}
+template <class NT>
+Poly<NT> edge_edge_polynomial(const Point_traj<NT> &a0, const Point_traj<NT> &a1, const Point_traj<NT> &b0,
+                              const Point_traj<NT> &b1) {
+  return motion::dot(motion::cross(a1 - a0, b0 - a0), b1 - a0);
+}
+
 // v inside the open triangle (f0, f1, f2): coplanar, strictly left of each edge seen
 // along the normal n = (f1 - f0) x (f2 - f0) (n = 0 for a degenerate triangle makes
 // every condition fail, as it must).
@@ -136,7 +148,7 @@ void add_vertex_face(Feature_set<NT> &set, const Point_traj<NT> &v,
   Feature feat{VERTEX_FACE, idx};
   if (!set.wants(feat)) return skip_feature(set, feat);
   auto n = motion::cross(*fv[1] - *fv[0], *fv[2] - *fv[0]);
-  Poly<NT> f = motion::dot(n, v - *fv[0]);
+  Poly<NT> f = vertex_face_polynomial(v, fv);
   std::vector<Poly<NT>> g;
   for (int i = 0; i < 3; ++i)
     g.push_back(motion::dot(n, motion::cross(*fv[(i + 1) % 3] - *fv[i], v - *fv[i])));
@@ -153,7 +165,7 @@ void add_edge_edge(Feature_set<NT> &set, const Point_traj<NT> &a0, const Point_t
   Feature feat{EDGE_EDGE, {{0, 1, 2, 3}}};
   if (!set.wants(feat)) return skip_feature(set, feat);
   auto ea = a1 - a0, eb = b1 - b0;
-  Poly<NT> f = motion::dot(motion::cross(ea, b0 - a0), b1 - a0);
+  Poly<NT> f = edge_edge_polynomial(a0, a1, b0, b1);
   auto n = motion::cross(ea, eb);
   Poly<NT> sb0 = motion::dot(n, motion::cross(ea, b0 - a0));
   Poly<NT> sb1 = motion::dot(n, motion::cross(ea, b1 - a0));

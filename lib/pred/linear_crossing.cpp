@@ -133,14 +133,7 @@ bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_b
 }
 
 bool crossing_hit(int kind, const double *p0, const double *p1, Contact_result &out) {
-  if (kind != VERTEX_FACE && kind != EDGE_EDGE) return false;
-  const double *P[4][2];
-  for (int i = 0; i < 4; ++i) {
-    P[i][0] = p0 + 3 * i;
-    P[i][1] = p1 + 3 * i;
-  }
-  const Cubic_bernstein f = kind == VERTEX_FACE ? cubic_bernstein(P[1], P[2], P[3], P[0])
-                                                : cubic_bernstein(P[0], P[1], P[2], P[3]);
+  const Cubic_bernstein f = coplanarity_cubic(kind, p0, p1);  // not ok for other kinds
   Interval c[4];
   double ta, tb;
   if (!f.ok || !single_root_bracket(f, c, ta, tb) || !inside(kind, sides_on(kind, p0, p1, Interval(ta, tb))))

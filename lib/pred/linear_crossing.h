@@ -39,8 +39,7 @@
 
 namespace pccd::pred {
 
-// kind: VERTEX_FACE or EDGE_EDGE; f: cubic_bernstein of the kind's coplanarity
-// determinant (linear_filter.cpp's order). True only when the proof above holds.
+// kind: VERTEX_FACE or EDGE_EDGE; f: the query's coplanarity_cubic (linear_filter.h). True only when the proof above holds.
 bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_bernstein &f);
 
 // kind: VERTEX_FACE or EDGE_EDGE; p0, p1: finite doubles (linear_filter.h). True and the

@@ -155,6 +155,17 @@ Quadratic_bernstein cross_bernstein(int k, const double *const O[2], const doubl
   return r;
 }
 
+Cubic_bernstein coplanarity_cubic(int kind, const double *p0, const double *p1) {
+  const double *P[4][2];
+  for (int i = 0; i < 4; ++i) {
+    P[i][0] = p0 + 3 * i;
+    P[i][1] = p1 + 3 * i;
+  }
+  if (kind == VERTEX_FACE) return cubic_bernstein(P[1], P[2], P[3], P[0]);  // v, f0, f1, f2
+  if (kind == EDGE_EDGE) return cubic_bernstein(P[0], P[1], P[2], P[3]);    // a0, a1, b0, b1
+  return Cubic_bernstein{};
+}
+
 Linear_verdict linear_filter(int kind, const double *p0, const double *p1) {
   auto at = [&](int i) {
     struct Pair {
@@ -163,16 +174,10 @@ Linear_verdict linear_filter(int kind, const double *p0, const double *p1) {
     return Pair{{p0 + 3 * i, p1 + 3 * i}};
   };
   switch (kind) {
-    case VERTEX_FACE: {  // v, f0, f1, f2: det(f1 - f0, f2 - f0, v - f0)
-      if (boxes_apart(4, 1, p0, p1)) return Linear_verdict::boxes_apart;
-      const auto v = at(0), f0 = at(1), f1 = at(2), f2 = at(3);
-      return cubic_verdict(kind, p0, p1, cubic_bernstein(f0.x, f1.x, f2.x, v.x));
-    }
-    case EDGE_EDGE: {  // a0, a1, b0, b1: det(a1 - a0, b0 - a0, b1 - a0)
-      if (boxes_apart(4, 2, p0, p1)) return Linear_verdict::boxes_apart;
-      const auto a0 = at(0), a1 = at(1), b0 = at(2), b1 = at(3);
-      return cubic_verdict(kind, p0, p1, cubic_bernstein(a0.x, a1.x, b0.x, b1.x));
-    }
+    case VERTEX_FACE:  // v, f0, f1, f2
+    case EDGE_EDGE:    // a0, a1, b0, b1
+      if (boxes_apart(4, kind == VERTEX_FACE ? 1 : 2, p0, p1)) return Linear_verdict::boxes_apart;
+      return cubic_verdict(kind, p0, p1, coplanarity_cubic(kind, p0, p1));
     case VERTEX_EDGE: {  // v, e0, e1: a component of (e1 - e0) x (v - e0) never vanishes
       if (boxes_apart(3, 1, p0, p1)) return Linear_verdict::boxes_apart;
       const auto v = at(0), e0 = at(1), e1 = at(2);

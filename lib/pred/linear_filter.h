@@ -35,6 +35,11 @@ struct Cubic_bernstein {
 Cubic_bernstein cubic_bernstein(const double *const O[2], const double *const A[2],
                                 const double *const B[2], const double *const C[2]);
 
+// The cubic of a query of `kind` (VERTEX_FACE: det(f1 - f0, f2 - f0, v - f0); EDGE_EDGE:
+// det(a1 - a0, b0 - a0, b1 - a0), the polynomials of features.h); ok is false for other
+// kinds.
+Cubic_bernstein coplanarity_cubic(int kind, const double *p0, const double *p1);
+
 // The same for the quadratic cross-product component k (0, 1, 2) of
 // (A(t) - O(t)) x (B(t) - O(t)); the middle coefficient times 2.
 struct Quadratic_bernstein {

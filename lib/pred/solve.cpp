@@ -90,6 +90,11 @@ Query_data<Rational> integral(Query_data<Rational> q) {
 // integer polynomial, misses a root modulo some small prime, so has no rational root
 // (poly::may_have_rational_root). Builds those systems alone, not the whole set, from
 // the integral query.
+// f certainly has no rational root: its integer form misses a root modulo a small prime.
+bool no_rational_root(const Poly<Rational> &f) {
+  return f.degree() >= 1 && !poly::may_have_rational_root(poly::primitive_positive(f));
+}
+
 bool first_time_irrational(const Query_data<Rational> &q, const std::vector<Feature> &active) {
   // The face and edge-edge polynomials directly (the common case: their side
   // conditions are not needed here); any other feature through its system.
@@ -99,9 +104,9 @@ bool first_time_irrational(const Query_data<Rational> &q, const std::vector<Feat
     const auto &p = q.p;
     const auto &i = f.points;
     if (f.kind == VERTEX_FACE && q.kind == VERTEX_FACE)
-      fs.push_back(motion::dot(motion::cross(p[i[2]] - p[i[1]], p[i[3]] - p[i[1]]), p[i[0]] - p[i[1]]));
+      fs.push_back(vertex_face_polynomial(p[i[0]], {{&p[i[1]], &p[i[2]], &p[i[3]]}}));
     else if (f.kind == EDGE_EDGE && q.kind == EDGE_EDGE)
-      fs.push_back(motion::dot(motion::cross(p[i[1]] - p[i[0]], p[i[2]] - p[i[0]]), p[i[3]] - p[i[0]]));
+      fs.push_back(edge_edge_polynomial(p[i[0]], p[i[1]], p[i[2]], p[i[3]]));
     else
       others.push_back(f);
   }
@@ -115,7 +120,7 @@ bool first_time_irrational(const Query_data<Rational> &q, const std::vector<Feat
   }
   if (fs.empty()) return false;
   for (const Poly<Rational> &f : fs)
-    if (f.degree() < 1 || poly::may_have_rational_root(poly::primitive_positive(f))) return false;
+    if (!no_rational_root(f)) return false;
   return true;
 }
 
@@ -199,22 +204,17 @@ Contact_result solve(const Query_data<Interval> &iq,
   std::vector<size_t> active;
   for (size_t i = 0; i < set.systems.size(); ++i)
     for (const Feature &f : out.features)
-      if (set.features[set.systems[i].tag].kind == f.kind &&
-          set.features[set.systems[i].tag].points == f.points)
-        active.push_back(i);
-  // The modular test first: when none of their polynomials can have a rational root, t*
-  // is irrational and the enclosure stays (what rational_first_contact would find, at a
-  // fraction of its cost).
-  bool irrational = !active.empty();
-  for (size_t i : active) {
-    const System<Rational> &s = set.systems[i];
-    if (s.kind == System<Rational>::Kind::zero_f || s.f.degree() < 1 ||
-        poly::may_have_rational_root(poly::primitive_positive(s.f))) {
-      irrational = false;
-      break;
-    }
+      if (set.features[set.systems[i].tag] == f) active.push_back(i);
+  // After the exact search, the modular test first (the interval path ran it above): when
+  // none of their polynomials can have a rational root, t* is irrational and the
+  // enclosure stays (what rational_first_contact would find, at a fraction of its cost).
+  if (!decided) {
+    bool irrational = !active.empty();
+    for (size_t i : active)
+      irrational = irrational && set.systems[i].kind != System<Rational>::Kind::zero_f &&
+                   no_rational_root(set.systems[i].f);
+    if (irrational) return out;
   }
-  if (irrational) return out;
   poly::Rational_root_result rr = poly::rational_first_contact(set.systems, active, out.lo, out.hi);
   out.stage = STAGE_EXACT;  // exact root isolation decided whether the time is rational
   if (rr.exact) {
