@@ -10,6 +10,7 @@
 #pragma once
 #include <vector>
 
+#include "poly/isolated_root.h"
 #include "poly/system.h"
 
 namespace pccd::poly {
@@ -38,21 +39,27 @@ struct Search_result {
   std::vector<size_t> which;  // indices of the systems touching within [lo, hi]
 };
 
-// Split points inside (lo, hi) tried in order; with intervals a step may be uncertain
-// at one point (a root too close to it) and certain at another.
-template <class NT> std::vector<NT> split_points(const NT &lo, const NT &hi);
-template <> inline std::vector<Rational> split_points(const Rational &lo, const Rational &hi) {
-  return {(lo + hi) / 2};
+// The bisection always splits at the midpoint, so where it ends is a function of t*
+// and tol alone: every stage (intervals, exact rationals, the isolated-root sign test,
+// the linear fast path of lib/pred) that decides each step with certainty reaches the
+// same enclosure, whatever the rounding mode or the order of stages. With intervals the
+// midpoint of two doubles is exact (the bisection never goes below tol >> 2^-1000).
+template <class NT> NT midpoint(const NT &lo, const NT &hi);
+template <> inline Rational midpoint(const Rational &lo, const Rational &hi) { return (lo + hi) / 2; }
+template <> inline Interval midpoint(const Interval &lo, const Interval &hi) {
+  return Interval(lo.lo + (hi.lo - lo.lo) * 0.5);
 }
-template <> inline std::vector<Interval> split_points(const Interval &lo, const Interval &hi) {
-  std::vector<Interval> out;
-  const double w = hi.lo - lo.lo;
-  for (double f : {0.5, 0.4375, 0.5625, 0.375, 0.625}) {
-    double m = lo.lo + w * f;  // any double strictly inside is a valid split point
-    if (m > lo.lo && m < hi.lo) out.push_back(Interval(m));
-  }
-  return out;
-}
+
+// Where a bisection stands after its last certain step: lo < t* <= hi and `active`
+// are the systems meeting (lo, hi]. A search stopped by arith::Uncertain leaves it in
+// `progress`, and another search over the same systems (same order, exact numbers) can
+// resume from it: the steps it would have taken from scratch are the same.
+template <class NT>
+struct Search_state {
+  bool valid = false;
+  NT lo, hi;
+  std::vector<size_t> active;
+};
 
 template <class NT> bool wider_than(const NT &lo, const NT &hi, const Rational &tol);
 template <> inline bool wider_than(const Rational &lo, const Rational &hi, const Rational &tol) {
@@ -65,81 +72,91 @@ template <> inline bool wider_than(const Interval &lo, const Interval &hi, const
 
 template <class NT>
 Search_result<NT> earliest_contact(const std::vector<System<NT>> &sys,
-                                   const Search_options &opt) {
+                                   const Search_options &opt,
+                                   Search_state<NT> *progress = nullptr,
+                                   const Search_state<NT> *resume = nullptr) {
   using K = typename System<NT>::Kind;
   Search_result<NT> res;
   const NT zero = arith::from_int<NT>(0), one = arith::from_int<NT>(1);
-  for (size_t i = 0; i < sys.size(); ++i)
-    if (sys[i].contains(zero)) res.which.push_back(i);
-  if (!res.which.empty()) {
-    res.found = res.exact = true;
-    res.lo = res.hi = zero;
-    return res;
-  }
-  std::vector<size_t> active;
-  for (size_t i = 0; i < sys.size(); ++i)
-    if (sys[i].kind != K::zero_f && sys[i].meets(zero, one)) active.push_back(i);
-  if (active.empty()) return res;
-  res.found = true;
-  res.lo = zero;
-  res.hi = one;
-  if (!opt.want_time) {
-    res.which = active;
-    return res;
-  }
   NT lo = zero, hi = one;
+  std::vector<size_t> active;
   const bool bounded = opt.until < 1;
-  if (bounded) {
-    // No contact in (0, u] with u >= until: none that matters (cheap early answer).
-    const NT u = arith::from_rational_up<NT>(opt.until);
-    bool any = false;
-    for (size_t i : active)
-      if (sys[i].meets(zero, u)) {
-        any = true;
-        break;
-      }
-    if (!any) {
-      res = Search_result<NT>();
+  if (resume && resume->valid) {
+    lo = resume->lo;
+    hi = resume->hi;
+    active = resume->active;
+  } else {
+    for (size_t i = 0; i < sys.size(); ++i)
+      if (sys[i].contains(zero)) res.which.push_back(i);
+    if (!res.which.empty()) {
+      res.found = res.exact = true;
+      res.lo = res.hi = zero;
       return res;
     }
-  }
-  {
-    while (wider_than(lo, hi, opt.tol)) {
-      if (bounded && past(lo, opt.until)) {
-        res = Search_result<NT>();  // the first contact is after `until`
-        return res;
-      }
-      bool stepped = false;
-      for (const NT &m : split_points(lo, hi)) {
-        try {
-          std::vector<size_t> left;
-          for (size_t i : active)
-            if (sys[i].meets(lo, m)) left.push_back(i);
-          if (left.empty()) {
-            lo = m;
-          } else {
-            hi = m;
-            active = std::move(left);
-          }
-          stepped = true;
+    for (size_t i = 0; i < sys.size(); ++i)
+      if (sys[i].kind != K::zero_f && sys[i].meets(zero, one)) active.push_back(i);
+    if (active.empty()) return res;
+    if (!opt.want_time) {
+      res.found = true;
+      res.lo = zero;
+      res.hi = one;
+      res.which = active;
+      return res;
+    }
+    if (bounded) {
+      // No contact in (0, u] with u >= until: none that matters (cheap early answer).
+      const NT u = arith::from_rational_up<NT>(opt.until);
+      bool any = false;
+      for (size_t i : active)
+        if (sys[i].meets(zero, u)) {
+          any = true;
           break;
-        } catch (const arith::Uncertain &) {
-          // try the next split point
         }
-      }
-      if (!stepped) throw arith::Uncertain{};
+      if (!any) return res;
     }
   }
+  res.found = true;
+  // Bisection at midpoints. A system whose first contact in (lo, hi] has become the only
+  // root of its f there is stepped by one sign of f (poly/isolated_root.h), the others by
+  // root counts; both give the same decisions.
+  std::vector<Isolated_root<NT>> iso(sys.size());
+  std::vector<char> isolated(sys.size(), 0);
+  auto save = [&] {
+    if (!progress) return;
+    progress->valid = true;
+    progress->lo = lo;
+    progress->hi = hi;
+    progress->active = active;
+  };
+  save();
+  while (wider_than(lo, hi, opt.tol)) {
+    if (bounded && past(lo, opt.until)) return Search_result<NT>();  // first contact after `until`
+    for (size_t i : active)
+      if (!isolated[i] && sys[i].kind != K::zero_f) isolated[i] = iso[i].isolate(sys[i].f, lo, hi);
+    const NT m = midpoint(lo, hi);
+    std::vector<size_t> left;
+    for (size_t i : active)
+      if (isolated[i] ? iso[i].at_or_before(m) : sys[i].meets(lo, m)) left.push_back(i);
+    if (left.empty()) {
+      lo = m;
+    } else {
+      hi = m;
+      active = std::move(left);
+    }
+    save();
+  }
   // t* in (lo, hi]. It is exactly hi when some system hits hi and none has a contact
-  // in the open (lo, hi).
+  // in the open (lo, hi). An isolated system's only candidate r is in (lo, hi]: it hits
+  // hi exactly when f(hi) = 0 (r qualifies), and has a contact inside otherwise.
   res.lo = lo;
   res.hi = hi;
   res.which = active;
   std::vector<size_t> at_hi, inside;
   try {
     for (size_t i : active) {
-      if (sys[i].hits(hi)) at_hi.push_back(i);
-      if (sys[i].count_open(lo, hi) > 0) inside.push_back(i);
+      const bool hit = isolated[i] ? iso[i].sign_at(hi) == 0 : sys[i].hits(hi);
+      if (hit) at_hi.push_back(i);
+      if (isolated[i] ? !hit : sys[i].count_open(lo, hi) > 0) inside.push_back(i);
     }
   } catch (const arith::Uncertain &) {
     return res;  // [lo, hi] stays a valid enclosure; exactness is left undecided

@@ -31,12 +31,40 @@ void fill(Contact_result &out, const Feature_set<NT> &set, const poly::Search_re
 }
 
 template <class NT>
-poly::Search_result<NT> search(const Feature_set<NT> &set, const Solve_options &opt) {
+poly::Search_result<NT> search(const Feature_set<NT> &set, const Solve_options &opt,
+                               poly::Search_state<NT> *progress = nullptr,
+                               const poly::Search_state<NT> *resume = nullptr) {
   poly::Search_options so;
   so.tol = opt.tol;
   so.want_time = opt.want_time;
   so.until = opt.until;
-  return poly::earliest_contact(set.systems, so);
+  return poly::earliest_contact(set.systems, so, progress, resume);
+}
+
+// The exact twin of an interval search's last certain state: the same bounds (points,
+// exact doubles) and the same systems, matched by feature and kind. Not valid when a
+// system has no twin (then the exact search starts over, with the same result).
+poly::Search_state<Rational> exact_state(const poly::Search_state<Interval> &st,
+                                         const Feature_set<Interval> &iset,
+                                         const Feature_set<Rational> &eset) {
+  poly::Search_state<Rational> out;
+  if (!st.valid) return out;
+  for (size_t i : st.active) {
+    const System<Interval> &is = iset.systems[i];
+    const Feature &f = iset.features[is.tag];
+    bool found = false;
+    for (size_t k = 0; k < eset.systems.size() && !found; ++k)
+      if (eset.features[eset.systems[k].tag] == f &&
+          int(eset.systems[k].kind) == int(is.kind)) {
+        out.active.push_back(k);
+        found = true;
+      }
+    if (!found) return poly::Search_state<Rational>();
+  }
+  out.lo = to_rational(st.lo);
+  out.hi = to_rational(st.hi);
+  out.valid = true;
+  return out;
 }
 
 template <class NT>
@@ -176,10 +204,14 @@ Contact_result solve(const Query_data<Interval> &iq,
     }
   }
   bool decided = false;
+  // Where the interval bisection stood when it could not tell (the exact search goes on
+  // from there: the midpoint bisection's steps do not depend on the stage taking them).
+  poly::Search_state<Interval> progress;
+  Feature_set<Interval> iset;
   try {
-    Feature_set<Interval> set = build_systems(iq);
-    poly::Search_result<Interval> r = search(set, opt);
-    fill(out, set, r);
+    iset = build_systems(iq);
+    poly::Search_result<Interval> r = search(iset, opt, &progress);
+    fill(out, iset, r);
     out.stage = STAGE_INTERVAL;
     decided = true;
   } catch (const arith::Uncertain &) {
@@ -193,7 +225,8 @@ Contact_result solve(const Query_data<Interval> &iq,
   if (decided && first_time_irrational(eq, out.features)) return out;
   Feature_set<Rational> set = build_systems(eq);
   if (!decided) {
-    poly::Search_result<Rational> r = search(set, opt);
+    const poly::Search_state<Rational> resume = exact_state(progress, iset, set);
+    poly::Search_result<Rational> r = search<Rational>(set, opt, nullptr, &resume);
     fill(out, set, r);
     out.stage = STAGE_EXACT;
     if (!(out.collides && opt.want_time && opt.want_exact && !out.exact)) return out;
