@@ -34,6 +34,7 @@ from pathlib import Path
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
+from setuptools.command.build_py import build_py
 from setuptools.command.sdist import sdist
 
 HERE = Path(__file__).absolute().parent
@@ -175,13 +176,27 @@ class LibraryBuild:
         return lib
 
 
+class BuildPy(build_py):
+    """The package's modules, into a package directory emptied first: an in-tree build
+    (pip install ./bindings/python) reuses bindings/python/build/, where a module or
+    library of an earlier build must not linger into the wheel."""
+
+    def run(self):
+        if not getattr(self, "editable_mode", False):
+            shutil.rmtree(Path(self.build_lib) / "polyccd", ignore_errors=True)
+        super().run()
+
+
 class BuildExt(build_ext):
-    """libpolyccd, then the cffi extension linked with it, both in the package directory."""
+    """libpolyccd, then the cffi extension linked with it, both in the package directory.
+    Both are linked on every build (cffi leaves an unchanged C file untouched, so
+    setuptools would otherwise keep an extension linked with other arguments)."""
 
     def run(self):
         if getattr(self, "editable_mode", False):
             print("polyccd build: editable install: the extension is `make venv`'s (build_ffi.py)")
             return
+        self.force = True
         from build_ffi import extension_kwargs, ffibuilder
 
         root = source_root()
@@ -216,5 +231,5 @@ class Sdist(sdist):
 setup(
     # One placeholder: build_ext replaces it by cffi's generated extension.
     ext_modules=[Extension("polyccd._pccd", sources=[])],
-    cmdclass={"build_ext": BuildExt, "sdist": Sdist},
+    cmdclass={"build_py": BuildPy, "build_ext": BuildExt, "sdist": Sdist},
 )
