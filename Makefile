@@ -181,4 +181,4 @@ demo: all
 
 # lib/libpolyccd.so: where builds before the move to build/ left the library.
 clean:
-	rm -rf $(BUILD) build-asan lib/libpolyccd.so bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c
+	rm -rf $(BUILD) build-asan bindings/python/build lib/libpolyccd.so bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c

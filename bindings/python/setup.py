@@ -16,7 +16,11 @@ through pkg-config when it knows gmpxx, and Eigen's include directory is added w
 pkg-config knows eigen3 (no source includes Eigen today). A compile probe checks them
 first and says what is missing. CXX (default c++), CXXFLAGS (default -O2: no -g, the
 wheel stays small), CPPFLAGS and LDFLAGS are honoured; POLYCCD_BUILD_JOBS sets the
-number of parallel compiles (default: the CPU count).
+number of parallel compiles (default: the CPU count). An in-tree build keeps the
+library's objects in bindings/python/build/ and reuses one when the compile command and
+the compiler's version are unchanged and it is newer than its source and every header of
+lib/ and include/ (system headers are not tracked: delete that folder, or `make clean`,
+after upgrading GMP or CGAL).
 
 Editable installs are the checkout's dev venv (`make venv`): the Makefile builds the
 library into build/ and build_ffi.py the extension in place, so build_ext builds nothing
@@ -150,7 +154,8 @@ class LibraryBuild:
         # An object is reused when its command is unchanged and it is newer than its source
         # and every header (any header change recompiles everything).
         stamp = self.out_dir / "command.txt"
-        command = " ".join(self.cxx + self.compile_flags)
+        version = subprocess.run(self.cxx + ["--version"], capture_output=True, text=True).stdout
+        command = " ".join(self.cxx + self.compile_flags) + "\n" + version
         fresh = stamp.is_file() and stamp.read_text() == command
         newest_header = max((self.root / f).stat().st_mtime for f in sources(self.root)
                             if not f.endswith(".cpp"))
