@@ -11,13 +11,21 @@ BUILD    := build
 LIB      := $(BUILD)/libpolyccd.so
 VENV     := .venv
 VPY      := $(VENV)/bin/python
-# -ffp-contract=off: no fused multiply-add may change a rounding the interval layer
-# relies on (see lib/arith/interval.h; tests/c/check.h checks it is not fused).
+# The library's own flags (-ffp-contract=off, -frounding-math, hidden visibility, ...) are
+# in lib/flags.mk, shared with the pip build (bindings/python/setup.py).
+include lib/flags.mk
 CXXFLAGS ?= -O2 -g
-CXXFLAGS += -std=c++17 -fPIC -fvisibility=hidden -fvisibility-inlines-hidden \
-            -ffp-contract=off -frounding-math -Wall -Wextra -Wno-unused-parameter \
-            -pthread -Iinclude -Ilib -DPCCD_BUILDING
-LDLIBS   := -lgmpxx -lgmp -pthread
+CXXFLAGS += $(PCCD_CXXFLAGS) -Iinclude -Ilib
+LDLIBS   := $(PCCD_LIBS)
+# The shared library: the real file libpolyccd.so.VERSION (VERSION from polyccd.h) with the
+# soname libpolyccd.so.SOVERSION, and the symlinks libpolyccd.so.SOVERSION (what programs
+# load) and libpolyccd.so (what -lpolyccd links), as installed by `make install`.
+VERSION  := $(shell sed -n 's/^\#define PCCD_VERSION_STRING "\(.*\)"/\1/p' include/polyccd.h)
+SONAME   := libpolyccd.so.$(PCCD_SOVERSION)
+LIB_REAL := $(BUILD)/libpolyccd.so.$(VERSION)
+ifeq ($(VERSION),)
+$(error no PCCD_VERSION_STRING in include/polyccd.h)
+endif
 SAN      ?=
 
 SRCS := $(sort $(wildcard lib/*/*.cpp))
@@ -34,7 +42,7 @@ CPP_TESTS := $(patsubst tests/cpp/%.cpp,$(BUILD)/%,$(sort $(wildcard tests/cpp/t
 # The system packages, one list shared with .ci/run (comments after # dropped).
 APT_PKGS := $(strip $(shell sed 's/\#.*//' .ci/apt-packages.txt))
 
-.PHONY: all deps lib venv check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind
+.PHONY: all deps lib venv install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind
 
 # The entry points of a fresh machine (all, test, demo, bench, valgrind, sanitize) run
 # deps first, then make the rest in a sub-make, so nothing compiles while apt-get is still
@@ -53,23 +61,63 @@ deps:
 
 lib: $(LIB)
 
-$(LIB): $(OBJS) lib/exports.map
-	$(CXX) -shared -Wl,--version-script=lib/exports.map -o $@ $(OBJS) $(LDLIBS) $(SAN)
+$(LIB_REAL): $(OBJS) lib/exports.map lib/flags.mk
+	$(CXX) $(PCCD_LDFLAGS) -Wl,-soname,$(SONAME) -o $@ $(OBJS) $(LDLIBS) $(SAN)
+
+$(LIB): $(LIB_REAL)
+	ln -sf $(notdir $(LIB_REAL)) $(BUILD)/$(SONAME)
+	ln -sf $(SONAME) $@
 
 $(BUILD)/%.o: lib/%.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) $(SAN) -MMD -MP -c $< -o $@
 
-$(VENV)/.stamp: bindings/python/requirements.txt
+# The dev venv: runtime requirements (bindings/python/requirements.txt) and those of the
+# tests, the editable build and the demo (tests/requirements.txt, which includes them).
+$(VENV)/.stamp: bindings/python/requirements.txt tests/requirements.txt
 	$(PYTHON) -m venv $(VENV)
 	$(VENV)/bin/pip install -q --upgrade pip
-	$(VENV)/bin/pip install -q -r bindings/python/requirements.txt
+	$(VENV)/bin/pip install -q -r tests/requirements.txt
 	touch $@
 
 # build_ffi.py generates the cffi declarations from include/polyccd.h on every run.
 venv: $(VENV)/.stamp $(LIB)
 	cd bindings/python && ../../$(VPY) build_ffi.py
 	$(VENV)/bin/pip install -q --no-build-isolation --no-deps -e bindings/python
+
+# `make install PREFIX=/abs/path` (default /usr/local; DESTDIR for staging): the header,
+# the library (real file, soname symlink, link symlink), polyccd.pc and the CMake package
+# (packaging/README.md). `make uninstall` with the same variables removes exactly those.
+PREFIX     ?= /usr/local
+LIBDIR     ?= $(PREFIX)/lib
+INCLUDEDIR ?= $(PREFIX)/include
+DESTDIR    ?=
+INSTALL_SUBST := sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' \
+  -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|g' -e 's|@VERSION@|$(VERSION)|g' \
+  -e 's|@SOVERSION@|$(PCCD_SOVERSION)|g' -e 's|@LIBS@|$(PCCD_LIBS)|g'
+INSTALLED := $(INCLUDEDIR)/polyccd.h $(LIBDIR)/libpolyccd.so.$(VERSION) $(LIBDIR)/$(SONAME) \
+  $(LIBDIR)/libpolyccd.so $(LIBDIR)/pkgconfig/polyccd.pc \
+  $(LIBDIR)/cmake/polyccd/polyccdConfig.cmake $(LIBDIR)/cmake/polyccd/polyccdConfigVersion.cmake
+
+install-dirs-absolute:
+	@case "$(PREFIX)$(LIBDIR)$(INCLUDEDIR)" in /*) ;; *) echo "PREFIX must be an absolute path"; exit 1;; esac
+	@for d in "$(LIBDIR)" "$(INCLUDEDIR)"; do case "$$d" in /*) ;; *) echo "$$d: not absolute"; exit 1;; esac; done
+
+install: install-dirs-absolute $(LIB)
+	install -d $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(LIBDIR)/cmake/polyccd
+	install -m 644 include/polyccd.h $(DESTDIR)$(INCLUDEDIR)/polyccd.h
+	install -m 755 $(LIB_REAL) $(DESTDIR)$(LIBDIR)/libpolyccd.so.$(VERSION)
+	ln -sf libpolyccd.so.$(VERSION) $(DESTDIR)$(LIBDIR)/$(SONAME)
+	ln -sf $(SONAME) $(DESTDIR)$(LIBDIR)/libpolyccd.so
+	$(INSTALL_SUBST) packaging/polyccd.pc.in > $(DESTDIR)$(LIBDIR)/pkgconfig/polyccd.pc
+	$(INSTALL_SUBST) packaging/polyccdConfig.cmake.in > $(DESTDIR)$(LIBDIR)/cmake/polyccd/polyccdConfig.cmake
+	$(INSTALL_SUBST) packaging/polyccdConfigVersion.cmake.in \
+	  > $(DESTDIR)$(LIBDIR)/cmake/polyccd/polyccdConfigVersion.cmake
+	@echo "installed libpolyccd $(VERSION) into $(DESTDIR)$(PREFIX)"
+
+uninstall: install-dirs-absolute
+	rm -f $(addprefix $(DESTDIR),$(INSTALLED))
+	-rmdir $(DESTDIR)$(LIBDIR)/cmake/polyccd 2>/dev/null
 
 # A C test program: one source file, linked against the shared library, which it finds
 # beside itself (rpath $ORIGIN). -MMD -MP write build/test_X.d, the headers it includes.
@@ -133,4 +181,4 @@ demo: all
 
 # lib/libpolyccd.so: where builds before the move to build/ left the library.
 clean:
-	rm -rf $(BUILD) build-asan lib/libpolyccd.so bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c
+	rm -rf $(BUILD) build-asan bindings/python/build lib/libpolyccd.so bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c
