@@ -8,7 +8,7 @@
 namespace pccd::scene {
 
 // The values of pccd_broad_phase (polyccd.h; checked in lib/api/constants.cpp).
-enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3 };
+enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3, bvh = 4 };
 
 // The default (automatic), chosen by measurement (README, "Broad phases";
 // tests/bench/bench_online.py and tests/bench/broad_phases.py). online: the pair comes

@@ -6,6 +6,7 @@
 
 #include "boxes/box_source.h"
 #include "boxes/boxes.h"
+#include "bvh/bvh_source.h"
 #include "range/range_source.h"
 
 namespace pccd::scene {
@@ -15,6 +16,7 @@ std::unique_ptr<narrow::Candidate_source> make_source(Broad_phase p, const Pair_
     case Broad_phase::brute: return narrow::brute_source(ctx);
     case Broad_phase::range: return range::range_source(ctx, stored);
     case Broad_phase::boxes: return boxes::box_source(ctx);
+    case Broad_phase::bvh: return bvh::bvh_source(ctx);
     case Broad_phase::automatic: break;
   }
   throw arith::Internal_error("make_source: the broad phase is not resolved");
