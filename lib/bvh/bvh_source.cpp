@@ -135,7 +135,7 @@ class Bvh_source final : public narrow::Candidate_source {
     const Pose_piece pose[2] = {boxes::enclose_pose(ctx_.side(0), a, b),
                                 boxes::enclose_pose(ctx_.side(1), a, b)};
     const double spread = std::max(pose[0].spread, pose[1].spread);
-    bool final = depth >= kMax_depth || spread <= 0.25 * delta_;
+    bool final = depth >= kMax_depth || spread <= delta_;
     if (!final && front.size() <= kLeaf_pairs) {
       final = true;
       for (const Node_pair &p : front) final = final && H_[0]->nodes[p.x].leaf() && H_[1]->nodes[p.y].leaf();
