@@ -59,6 +59,7 @@ MOLS = {"1k": "mol-1k", "5k": "mol-5k", "30k": "mol-30k"}
 QUICK = ("1k",)
 TAU1 = Fraction(1, 2)  # rotation: tan(angle(1) / 2) = 1/2
 VARIANTS = ("far", "hit", "near", "rot")
+FCL_ROT_MAX_ATOMS = 5000
 
 
 def load_mesh(name):
@@ -230,7 +231,9 @@ def mol_rows(polyccd, fcl, label, opts, scaling):
             ns, rb = time_poly(polyccd, bodies, 1, 1, "boxes")
             row["boxes"] = ns
             row["same"] = poly_answer(rb)[0] == row["ans"]
-            if fcl:
+            # FCL's rotation query loops over every swept-box pair in Python (30 s at 5k
+            # atoms): skipped above FCL_ROT_MAX_ATOMS.
+            if fcl and (shift is not None or len(C) <= FCL_ROT_MAX_ATOMS):
                 for name in ("FCL-CA", "FCL-naive"):
                     ns, out = BB.timed(fcl_mol(fcl, C, R, shift, offx, ext, name), opts.repeat)
                     row[name] = ns
@@ -293,7 +296,9 @@ def show_rows(rows, rot_map):
     out = []
     for r in rows:
         ans = r["ans"]
-        t = "-" if not ans[0] else (str(ans[1][2]) if ans[1][2] is not None else f"{r['time']:.6g}")
+        exact = ans[1][2] if ans[0] else None
+        short = exact is not None and len(str(exact)) <= 12
+        t = "-" if not ans[0] else (str(exact) if short else f"{r['time']:.6g}" + (" (exact)" if exact is not None else ""))
         fca = r.get("FCL-CA ans")
         fnv = r.get("FCL-naive ans")
         pt = r["time"] if ans[0] else None
