@@ -554,8 +554,9 @@ PCCD_API void pccd_index_free(pccd_index *ix);
  * writes the answer to rep as a two-body scene: body 0 is the indexed body, body 1 the
  * query (so pccd_report_contact's feature_i is a feature of the indexed body). cfg and
  * opt may be NULL (defaults); opt as for pccd_scene_solve: PCCD_BROAD_AUTO and
- * PCCD_BROAD_RANGE search the index's trees, PCCD_BROAD_BOXES and PCCD_BROAD_BRUTE
- * solve the pair like a scene (same answers; for comparison). The index is only read:
+ * PCCD_BROAD_RANGE search the index's trees, PCCD_BROAD_BVH (the two bodies'
+ * hierarchies), PCCD_BROAD_BOXES and PCCD_BROAD_BRUTE solve the pair like a scene (same
+ * answers; for comparison). The index is only read:
  * several threads may query one index at once, each with its own report.
  * PCCD_EINVAL: ix, body or rep NULL, bad options (as pccd_scene_solve), or the query
  * motion's quaternion vanishes on [0, 1] ("motion: ..."). */
