@@ -174,6 +174,7 @@ bench: all $(BUILD)/bench_linear
 	$(VENV)/bin/pip install -q -r tests/bench/requirements.txt
 	$(VPY) tests/bench/bench_queries.py
 	$(VPY) tests/bench/bench_bodies.py
+	$(VPY) tests/bench/bench_bvh.py
 	$(VPY) tests/bench/bench_online.py
 
 demo: all

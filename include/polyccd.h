@@ -473,8 +473,10 @@ typedef enum pccd_broad_phase {
   PCCD_BROAD_BRUTE = 1, /* every feature pair (a reference; quadratic) */
   PCCD_BROAD_RANGE = 2, /* linearized contact conditions, lifted points in CGAL kd-trees
                            searched with halfspace queries (the paper's section 3) */
-  PCCD_BROAD_AUTO = 3   /* the default: the phase the benchmarks measured fastest for
+  PCCD_BROAD_AUTO = 3,  /* the default: the phase the benchmarks measured fastest for
                            the kind of problem (README, "Broad phases") */
+  PCCD_BROAD_BVH = 4    /* a bounding-volume hierarchy kept with each body, traversed
+                           for both bodies at once over time pieces (swept boxes) */
 } pccd_broad_phase;
 
 typedef struct pccd_scene pccd_scene;
@@ -552,8 +554,9 @@ PCCD_API void pccd_index_free(pccd_index *ix);
  * writes the answer to rep as a two-body scene: body 0 is the indexed body, body 1 the
  * query (so pccd_report_contact's feature_i is a feature of the indexed body). cfg and
  * opt may be NULL (defaults); opt as for pccd_scene_solve: PCCD_BROAD_AUTO and
- * PCCD_BROAD_RANGE search the index's trees, PCCD_BROAD_BOXES and PCCD_BROAD_BRUTE
- * solve the pair like a scene (same answers; for comparison). The index is only read:
+ * PCCD_BROAD_RANGE search the index's trees, PCCD_BROAD_BVH (the two bodies'
+ * hierarchies), PCCD_BROAD_BOXES and PCCD_BROAD_BRUTE solve the pair like a scene (same
+ * answers; for comparison). The index is only read:
  * several threads may query one index at once, each with its own report.
  * PCCD_EINVAL: ix, body or rep NULL, bad options (as pccd_scene_solve), or the query
  * motion's quaternion vanishes on [0, 1] ("motion: ..."). */

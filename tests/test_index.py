@@ -439,7 +439,7 @@ def test_errors():
         ix.query("x")
     with pytest.raises(P.InputError, match=r"^body: expected a polyccd.Body"):
         ix.query(TRIANGLE)
-    with pytest.raises(P.InputError, match=r'^broad_phase: expected "auto", "boxes", "brute" or "range", got "kd"$'):
+    with pytest.raises(P.InputError, match=r'^broad_phase: expected "auto", "boxes", "brute", "bvh" or "range", got "kd"$'):
         ix.query(q, broad_phase="kd")
     with pytest.raises(P.InputError, match=r"^broad_phase: "):
         ix.query(q, broad_phase=None)

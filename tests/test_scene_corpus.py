@@ -129,7 +129,9 @@ def test_threads_and_broad_phases_agree(path):
     _, tol, bodies, res = run(path)
     base = summary(res)
     for kw in ({"threads": 2}, {"broad_phase": "brute"}, {"threads": 2, "broad_phase": "brute"},
-               {"broad_phase": "range"}, {"threads": 2, "broad_phase": "range"}):
+               {"broad_phase": "range"}, {"threads": 2, "broad_phase": "range"},
+               {"broad_phase": "bvh"}, {"threads": 2, "broad_phase": "bvh"},
+               {"threads": 3, "broad_phase": "bvh"}):
         other = summary(polyccd.check(bodies, time_tolerance=tol, **kw))
         assert other == base, "%s differs from threads=1, boxes:\n%r\n%r" % (kw, other, base)
 

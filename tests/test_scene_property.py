@@ -94,7 +94,7 @@ def test_broad_phases_equal_brute_force(k):
     for all_contacts in (False, True):
         brute = summary(P.check(bodies, broad_phase="brute", all_contacts=all_contacts,
                                 time_tolerance="1e-9"))
-        for broad_phase in ("boxes", "range"):
+        for broad_phase in ("boxes", "range", "bvh"):
             for threads in (1, 2, 3):
                 got = summary(P.check(bodies, threads=threads, all_contacts=all_contacts,
                                       broad_phase=broad_phase, time_tolerance="1e-9"))

@@ -31,7 +31,8 @@ static_assert(int(narrow::F_VERTEX) == int(PCCD_FEATURE_VERTEX) && int(narrow::F
 static_assert(int(scene::Broad_phase::boxes) == PCCD_BROAD_BOXES &&
                   int(scene::Broad_phase::brute) == PCCD_BROAD_BRUTE &&
                   int(scene::Broad_phase::range) == PCCD_BROAD_RANGE &&
-                  int(scene::Broad_phase::automatic) == PCCD_BROAD_AUTO,
+                  int(scene::Broad_phase::automatic) == PCCD_BROAD_AUTO &&
+                  int(scene::Broad_phase::bvh) == PCCD_BROAD_BVH,
               "pccd_broad_phase");
 
 }  // namespace pccd::api

@@ -79,10 +79,10 @@ scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene
     throw Input_error("opt.threads: " + std::to_string(opt->threads) + " is outside 1..1024");
   if (opt->all_contacts != 0 && opt->all_contacts != 1)
     throw Input_error("opt.all_contacts: " + std::to_string(opt->all_contacts) + " is not 0 or 1");
-  if (opt->broad_phase < PCCD_BROAD_BOXES || opt->broad_phase > PCCD_BROAD_AUTO)
+  if (opt->broad_phase < PCCD_BROAD_BOXES || opt->broad_phase > PCCD_BROAD_BVH)
     throw Input_error("opt.broad_phase: " + std::to_string(opt->broad_phase) +
-                      " is not PCCD_BROAD_BOXES (0), PCCD_BROAD_BRUTE (1), PCCD_BROAD_RANGE (2) "
-                      "or PCCD_BROAD_AUTO (3)");
+                      " is not PCCD_BROAD_BOXES (0), PCCD_BROAD_BRUTE (1), PCCD_BROAD_RANGE (2), "
+                      "PCCD_BROAD_AUTO (3) or PCCD_BROAD_BVH (4)");
   so.threads = opt->threads;
   so.all_contacts = opt->all_contacts == 1;
   so.broad_phase = static_cast<scene::Broad_phase>(opt->broad_phase);  // constants.cpp

@@ -53,8 +53,73 @@ Box empty_box() {
   return e;
 }
 
+namespace {
+
+// A double estimate of R(t) = Rn(t) / W(t) and o(t) = O(t) / W(t) (midpoints of the
+// coefficient enclosures; a heuristic input only, never a bound).
+void approx_pose(const Moving_body &b, double t, double R[3][3], double o[3]) {
+  auto ev = [t](const poly::Poly<Interval> &p) {
+    double r = 0;
+    for (size_t i = p.c.size(); i-- > 0;) r = r * t + 0.5 * (p.c[i].lo + p.c[i].hi);
+    return r;
+  };
+  const double w = ev(b.W_i);
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) R[i][j] = ev(b.Rn_i[i][j]) / w;
+    o[i] = ev(b.O_i[i]) / w;
+  }
+}
+
+// The pivot of a piece (boxes.h, Pose_piece): q minimising |dR q + do|^2 + lam |q - c|^2,
+// dR = R(b) - R(a), do = o(b) - o(a) (so q moves least over the piece), c the body's box
+// centre, lam = |dR|^2 / 1000 (q = c for a translation). Any finite q is valid (the
+// bounds hold for every q); a non-finite estimate falls back to c.
+void choose_pivot(const Moving_body &b, double a, double t1, double q[3]) {
+  const auto &c = b.data->box_c;
+  for (int i = 0; i < 3; ++i) q[i] = c[i];
+  if (!(t1 > a)) return;
+  double Ra[3][3], Rb[3][3], oa[3], ob[3], D[3][3], d[3];
+  approx_pose(b, a, Ra, oa);
+  approx_pose(b, t1, Rb, ob);
+  double n2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    d[i] = ob[i] - oa[i];
+    for (int j = 0; j < 3; ++j) {
+      D[i][j] = Rb[i][j] - Ra[i][j];
+      n2 += D[i][j] * D[i][j];
+    }
+  }
+  if (!(n2 > 1e-24) || !std::isfinite(n2)) return;
+  const double lam = 1e-3 * n2;
+  double M[3][4];  // (D^T D + lam I) q = lam c - D^T d
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      M[i][j] = (i == j) ? lam : 0.0;
+      for (int k = 0; k < 3; ++k) M[i][j] += D[k][i] * D[k][j];
+    }
+    M[i][3] = lam * c[i];
+    for (int k = 0; k < 3; ++k) M[i][3] -= D[k][i] * d[k];
+  }
+  for (int i = 0; i < 3; ++i)  // Gaussian elimination (symmetric positive definite)
+    for (int r = i + 1; r < 3; ++r) {
+      const double f = M[r][i] / M[i][i];
+      for (int k = i; k < 4; ++k) M[r][k] -= f * M[i][k];
+    }
+  double x[3];
+  for (int i = 3; i-- > 0;) {
+    double v = M[i][3];
+    for (int k = i + 1; k < 3; ++k) v -= M[i][k] * x[k];
+    x[i] = v / M[i][i];
+  }
+  if (std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2]))
+    for (int i = 0; i < 3; ++i) q[i] = x[i];
+}
+
+}  // namespace
+
 Pose_piece enclose_pose(const Moving_body &b, double a, double t1) {
   Pose_piece p;
+  choose_pivot(b, a, t1, p.q);
   const Interval W = range_on(b.W_i, a, t1);
   const bool w_pos = W.lo > 0;
   double max_rr = 0, max_or = 0;
@@ -69,14 +134,23 @@ Pose_piece enclose_pose(const Moving_body &b, double a, double t1) {
       max_rr = std::fmax(max_rr, p.Rr[i][j]);
     }
     if (w_pos) {
-      mid_rad(range_on(b.O_i[i], a, t1) / W, p.om[i], p.orad[i]);
+      // O_q = O + Rn q, coefficient by coefficient in interval arithmetic (q is exact).
+      poly::Poly<Interval> Oq = b.O_i[i];
+      for (int j = 0; j < 3; ++j) {
+        const auto &r = b.Rn_i[i][j];
+        if (r.c.size() > Oq.c.size()) Oq.c.resize(r.c.size(), Interval(0.0));
+        for (size_t k = 0; k < r.c.size(); ++k) Oq.c[k] = Oq.c[k] + r.c[k] * Interval(p.q[j]);
+      }
+      mid_rad(range_on(Oq, a, t1) / W, p.om[i], p.orad[i]);
       p.finite = p.finite && std::isfinite(p.om[i]) && std::isfinite(p.orad[i]);
       max_or = std::fmax(max_or, p.orad[i]);
     } else {
       p.finite = false;  // om, orad stay 0 and unused (spread and boxes are unbounded)
     }
   }
-  p.spread = p.finite ? 3 * max_rr * b.data->reach + max_or : kInf;
+  // |p - q|_inf <= reach + |q|_inf for every body point (reach covers radii too).
+  const double qn = std::fmax(std::fabs(p.q[0]), std::fmax(std::fabs(p.q[1]), std::fabs(p.q[2])));
+  p.spread = p.finite ? 3 * max_rr * (b.data->reach + qn) + max_or : kInf;
   return p;
 }
 
@@ -89,12 +163,20 @@ Box frame_box(const Pose_piece &pose, const std::array<double, 3> &c, const std:
     }
     return out;
   }
+  // The box about the pivot: (cq, hq) holds the exact box [c - h, c + h] - q, since
+  // fl(c - q) errs by at most 2u |c - q| <= (|c| + |q|) kSlack / 16; the sum below then
+  // treats (cq, hq) as exact.
+  double cq[3], hq[3];
+  for (int j = 0; j < 3; ++j) {
+    cq[j] = c[j] - pose.q[j];
+    hq[j] = (h[j] + (std::fabs(c[j]) + std::fabs(pose.q[j])) * kSlack) * (1 + kSlack) + kTiny;
+  }
   for (int i = 0; i < 3; ++i) {
     double m = pose.om[i], r = pose.orad[i], mag = std::fabs(pose.om[i]) + pose.orad[i];
     for (int j = 0; j < 3; ++j) {
-      const double ac = std::fabs(c[j]);
-      m += pose.Rm[i][j] * c[j];
-      const double t = pose.Rr[i][j] * (ac + h[j]) + std::fabs(pose.Rm[i][j]) * h[j];
+      const double ac = std::fabs(cq[j]);
+      m += pose.Rm[i][j] * cq[j];
+      const double t = pose.Rr[i][j] * (ac + hq[j]) + std::fabs(pose.Rm[i][j]) * hq[j];
       r += t;
       mag += std::fabs(pose.Rm[i][j]) * ac + t;
     }

@@ -45,9 +45,17 @@ inline Box hull(const Box &a, const Box &b) {
 Box grow(const Box &a, double r);  // r >= 0, outward-safe
 Box empty_box();                    // hull identity
 
-// The motion of one body over a time piece, in midpoint-radius form.
+// The motion of one body over a time piece, in midpoint-radius form, about a pivot q
+// (a body-frame point, doubles): x(t) = R(t) (p - q) + o_q(t), o_q(t) = o(t) + R(t) q,
+// with R(t) in Rm +- Rr and o_q(t) in om +- orad. The pivot changes no bound's
+// validity, only its width: enclosing R(t) and o(t) apart forgets that a rotation about
+// an axis far from the body's origin moves the origin along an arc, so each box gains
+// |R(I) - R(t)| |q_axis|. enclose_pose picks q near the piece's instantaneous screw axis
+// (a least-squares estimate in doubles, pulled towards the body's box centre): for a
+// rotation about a fixed axis, o_q is then nearly constant.
 struct Pose_piece {
   double Rm[3][3], Rr[3][3];
+  double q[3] = {0, 0, 0};
   double om[3] = {0, 0, 0}, orad[3] = {0, 0, 0};
   bool finite = true;  // false when W(I) was not certainly positive: boxes are unbounded
   // Half-width the motion adds to the box of a point of the body (bounded by `reach`).

@@ -8,15 +8,15 @@
 namespace pccd::scene {
 
 // The values of pccd_broad_phase (polyccd.h; checked in lib/api/constants.cpp).
-enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3 };
+enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3, bvh = 4 };
 
 // The default (automatic), chosen by measurement (README, "Broad phases";
-// tests/bench/bench_online.py and tests/bench/broad_phases.py). online: the pair comes
-// from an on-line index (the stored side's trees exist already and are shared by every
-// query): range; otherwise a scene's body pair, solved once: boxes.
+// tests/bench/bench_bvh.py, tests/bench/bench_online.py). online: the pair comes from an
+// on-line index (the stored side's trees exist already and are shared by every query):
+// range; otherwise a scene's body pair: bvh (the hierarchies are built with the bodies).
 inline Broad_phase resolve(Broad_phase p, bool online) {
   if (p != Broad_phase::automatic) return p;
-  return online ? Broad_phase::range : Broad_phase::boxes;
+  return online ? Broad_phase::range : Broad_phase::bvh;
 }
 
 // The source of a resolved phase. stored: the range phase's stored side (-1: the

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
-#include <unordered_set>
+#include <limits>
+#include <unordered_map>
 
 #include "boxes/box_source.h"
 #include "boxes/boxes.h"
+#include "bvh/bvh_source.h"
 #include "range/range_source.h"
 
 namespace pccd::scene {
@@ -15,6 +17,7 @@ std::unique_ptr<narrow::Candidate_source> make_source(Broad_phase p, const Pair_
     case Broad_phase::brute: return narrow::brute_source(ctx);
     case Broad_phase::range: return range::range_source(ctx, stored);
     case Broad_phase::boxes: return boxes::box_source(ctx);
+    case Broad_phase::bvh: return bvh::bvh_source(ctx);
     case Broad_phase::automatic: break;
   }
   throw arith::Internal_error("make_source: the broad phase is not resolved");
@@ -43,12 +46,12 @@ class Driver final : public narrow::Candidate_sink {
     return ra > best_hi_;
   }
 
-  void whole(std::vector<Prim_pair> cand) override { solve_batch(fresh_of(std::move(cand))); }
+  void whole(std::vector<Prim_pair> cand) override { solve_batch(fresh_of(std::move(cand), 1.0), 1.0); }
 
   // Solves the candidates of [a, b] in the order of the first of kSub equal sub-pieces
   // on which their two boxes meet (pair_search.h).
   void piece(double a, double b, std::vector<Prim_pair> cand) override {
-    std::vector<Prim_pair> fresh = fresh_of(std::move(cand));
+    std::vector<Prim_pair> fresh = fresh_of(std::move(cand), b);
     if (fresh.empty()) return;
     constexpr int kSub = 8;
     constexpr size_t kBatch = 64;
@@ -74,7 +77,7 @@ class Driver final : public narrow::Candidate_sink {
       for (size_t i = start; i < std::min(order.size(), start + size); ++i)
         if (!pruned(order[i].first)) batch.push_back(order[i].second);
       if (batch.empty()) break;  // sorted: every later bound is pruned too
-      solve_batch(batch);
+      solve_batch(batch, b);
     }
   }
 
@@ -83,31 +86,56 @@ class Driver final : public narrow::Candidate_sink {
   const Search_options &opt_;
   Thread_pool &pool_;
   Pair_outcome &out_;
-  std::unordered_set<uint64_t> seen_;
+  // Per feature pair solved: a time c such that it has no contact in [0, c] (+inf: it
+  // touches, with its result kept, or has no contact at all). A pair of a piece [a, b] is
+  // solved only for contacts up to min(best, b) (much cheaper for a pair whose boxes
+  // meet long before it could touch): if it touches later, a later piece holding that
+  // time reports it again (candidate_source.h) and it is solved again up to that
+  // piece's end. A reported contact never depends on the bound (pred/solve.h).
+  std::unordered_map<uint64_t, double> cleared_;
+  static constexpr double kDone = std::numeric_limits<double>::infinity();
   bool found_any_ = false, have_best_ = false;
   Rational best_hi_;
 
-  pred::Solve_options bounded_options() const {
+  // Contacts up to min(best, horizon) (first-contact mode with times; else all of [0, 1]).
+  pred::Solve_options bounded_options(double horizon) const {
     pred::Solve_options o = opt_.solve;
-    if (!opt_.all_contacts && have_best_ && opt_.solve.want_time && best_hi_ < 1) o.until = best_hi_;
+    if (opt_.all_contacts || !opt_.solve.want_time) return o;
+    if (horizon < 1) o.until = Rational(horizon);  // exact: a double
+    if (have_best_ && best_hi_ < o.until) o.until = best_hi_;
     return o;
   }
 
-  // The pairs of cand not seen before, once each, in key order.
-  std::vector<Prim_pair> fresh_of(std::vector<Prim_pair> cand) const {
+  // The pairs of cand not yet cleared up to horizon, once each, in key order.
+  std::vector<Prim_pair> fresh_of(std::vector<Prim_pair> cand, double horizon) const {
     std::sort(cand.begin(), cand.end());
     cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
     std::vector<Prim_pair> fresh;
-    for (const Prim_pair &p : cand)
-      if (!seen_.count(p.key())) fresh.push_back(p);
+    for (const Prim_pair &p : cand) {
+      auto it = cleared_.find(p.key());
+      if (it == cleared_.end() || (it->second < horizon && it->second != kDone)) fresh.push_back(p);
+    }
     return fresh;
   }
 
   // Solves the pairs of `fresh` (not seen before) in parallel; appends the touching ones
   // in the given order and updates the best upper bound.
-  void solve_batch(const std::vector<Prim_pair> &fresh) {
+  void solve_batch(const std::vector<Prim_pair> &fresh, double horizon) {
     if (fresh.empty()) return;
-    const pred::Solve_options o = bounded_options();
+    // A pair met again (cleared before, up to an earlier piece) is solved up to the best
+    // bound at once: each pair is solved at most twice.
+    bool again = false;
+    for (const Prim_pair &p : fresh) again = again || cleared_.count(p.key());
+    if (again && horizon < 1) {
+      std::vector<Prim_pair> first, second;
+      for (const Prim_pair &p : fresh) (cleared_.count(p.key()) ? second : first).push_back(p);
+      solve_batch(first, horizon);
+      horizon = 1.0;
+      return solve_batch(second, horizon);
+    }
+    const pred::Solve_options o = bounded_options(horizon);
+    // No contact in [0, until] for a pair found apart (a double at or below until).
+    const double clear = o.until >= 1 ? kDone : mpq_get_d(o.until.get_mpq_t());
     std::vector<std::unique_ptr<Solved_pair>> res(fresh.size());
     pool_.parallel_for(fresh.size(), [&](size_t i) {
       auto s = std::make_unique<Solved_pair>();
@@ -124,9 +152,10 @@ class Driver final : public narrow::Candidate_sink {
       res[i] = std::move(s);
     });
     for (auto &s : res) {
-      seen_.insert(s->prim.key());
+      auto ins = cleared_.emplace(s->prim.key(), 0.0);
+      ins.first->second = s->result.collides ? kDone : clear;
       if (s->prim.type == narrow::TT) ++out_.stats.static_tests;
-      else {
+      else if (ins.second) {
         ++out_.stats.solved;
         if (s->result.stage >= 0 && s->result.stage < 5) ++out_.stats.by_stage[s->result.stage];
       }

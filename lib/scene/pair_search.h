@@ -1,7 +1,7 @@
 // The driver of one body pair: all feature pairs of two moving bodies that touch, or the
 // first ones. It asks a candidate source (broad_phase.h) for feature pairs, solves each
-// distinct pair once with the exact narrow phase (narrow/pair_ctx.h), and prunes by
-// time:
+// distinct pair at most twice with the exact narrow phase (narrow/pair_ctx.h), and
+// prunes by time:
 //  - Meshes: the static test at t = 0 first (TT pairs of the source's static
 //    candidates); a contact there is the first one.
 //  - The source's candidates of a piece [a, b] get the start of the first of 8 equal
@@ -9,7 +9,10 @@
 //    in [a, b]; none: no contact in [a, b], so the pair is left for a later piece). They
 //    are solved in order of that bound, in batches of 4, 8, ..., 64 pairs; a batch
 //    starts only with pairs whose bound is <= the best upper bound so far, and each pair
-//    is asked only for contacts up to that bound (pred::Solve_options::until).
+//    is asked only for contacts up to that bound and the piece's end b
+//    (pred::Solve_options::until; with all_contacts or without times: all of [0, 1]).
+//    A pair found apart up to b that a later piece reports again (it may touch there)
+//    is solved again, then up to the best bound alone.
 //  - A piece that starts after the best upper bound found so far is pruned: a pair
 //    first met there can only touch later than that bound.
 // The set of pairs solved, and so the answer, does not depend on the number of threads

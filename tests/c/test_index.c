@@ -1,7 +1,7 @@
 /*
  * test_index.c -- the on-line index of the C API (pccd_index_new / _query / _free):
  * known answers of a stored body queried with bodies on motions (hand-derived below)
- * with every broad phase (PCCD_BROAD_AUTO, _RANGE, _BOXES, _BRUTE and NULL options) and
+ * with every broad phase (PCCD_BROAD_AUTO, _RANGE, _BOXES, _BRUTE, _BVH and NULL options) and
  * thread count, the index outliving (or not) the bodies and motions it was made of, and
  * every error path of pccd_index_new / pccd_index_query.
  *
@@ -333,9 +333,9 @@ static void errors(void)
   opt.all_contacts = 2;
   FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.all_contacts: 2 is not 0 or 1");
   OK(pccd_scene_options_init(&opt));
-  opt.broad_phase = 4;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.broad_phase: 4 is not");
-  CHECK(strstr(pccd_last_error(), "PCCD_BROAD_AUTO (3)") != NULL);
+  opt.broad_phase = 5;
+  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.broad_phase: 5 is not");
+  CHECK(strstr(pccd_last_error(), "PCCD_BROAD_BVH (4)") != NULL);
   opt.broad_phase = -1;
   FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.broad_phase: -1 is not");
   OK(pccd_config_init(&cfg));
@@ -438,12 +438,12 @@ int main(void)
 {
   /* Every broad phase (and NULL options); thread counts 1 to 3 for the index's own
    * phases (boxes and brute force: one thread, to keep the valgrind run short). */
-  const int broads[5] = {-1 /* NULL options */, PCCD_BROAD_AUTO, PCCD_BROAD_RANGE,
-                         PCCD_BROAD_BOXES, PCCD_BROAD_BRUTE};
-  const unsigned max_threads[5] = {1, 3, 3, 1, 1};
+  const int broads[6] = {-1 /* NULL options */, PCCD_BROAD_AUTO, PCCD_BROAD_RANGE,
+                         PCCD_BROAD_BOXES, PCCD_BROAD_BRUTE, PCCD_BROAD_BVH};
+  const unsigned max_threads[6] = {1, 3, 3, 1, 1, 3};
   int b;
   unsigned t;
-  for (b = 0; b < 5; ++b)
+  for (b = 0; b < 6; ++b)
     for (t = 1; t <= max_threads[b]; ++t) {
       known_answers(broads[b], t);
       swing(broads[b], t);

@@ -140,6 +140,7 @@ int main(void)
     two_cubes(t, PCCD_BROAD_BOXES);
     two_cubes(t, PCCD_BROAD_BRUTE);
     two_cubes(t, PCCD_BROAD_RANGE);
+    two_cubes(t, PCCD_BROAD_BVH);
   }
   errors();
   printf("%d passed, %d failed\n", g_pass, g_fail);

@@ -58,6 +58,10 @@ def _indices(value):
                              f"{value.shape}")
         if value.dtype.kind not in "iu":
             raise InputError(f"triangles: expected integer indices, got dtype {value.dtype}")
+        # Fast path (body builds of big meshes): every index in range, converted at once;
+        # otherwise the per-entry loop below names the first bad entry.
+        if value.size == 0 or (int(value.min()) >= 0 and int(value.max()) <= _UINT_MAX):
+            return len(value), np.ascontiguousarray(value, dtype=np.uint32).ravel()
         value = value.tolist()
     rows = _items(value, "triangles", "a list of [i, j, k] index triples")
     flat = []

@@ -18,7 +18,8 @@ from ._solve import _config
 
 FEATURES = ("vertex", "edge", "triangle", "sphere")
 BROAD_PHASES = {"auto": lib.PCCD_BROAD_AUTO, "boxes": lib.PCCD_BROAD_BOXES,
-                "brute": lib.PCCD_BROAD_BRUTE, "range": lib.PCCD_BROAD_RANGE}
+                "brute": lib.PCCD_BROAD_BRUTE, "range": lib.PCCD_BROAD_RANGE,
+                "bvh": lib.PCCD_BROAD_BVH}
 
 
 class Body:
@@ -108,7 +109,7 @@ def _bodies_list(bodies):
 def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact):
     """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query."""
     if broad_phase not in BROAD_PHASES:
-        raise InputError("broad_phase: expected \"auto\", \"boxes\", \"brute\" or \"range\", "
+        raise InputError("broad_phase: expected \"auto\", \"boxes\", \"brute\", \"bvh\" or \"range\", "
                          f"got {show(broad_phase)}")
     if isinstance(threads, bool) or not isinstance(threads, int) or not 1 <= threads <= 1024:
         raise InputError(f"threads: expected an integer from 1 to 1024, got {show(threads)}")
