@@ -44,3 +44,16 @@ def bar(total, desc, unit="it", enabled=None):
         return _Silent()
     return tqdm(total=total, desc=desc, unit=unit, file=sys.stderr, leave=False,
                 dynamic_ncols=True, mininterval=0.2)
+
+
+def echo(text, file=None):
+    """print(text) to file (default stdout), around any bar on screen: tqdm.write clears
+    the bars, prints the line and draws them again (so a bar never shares a line)."""
+    file = sys.stdout if file is None else file
+    try:
+        from tqdm import tqdm
+    except ImportError:
+        print(text, file=file, flush=True)
+        return
+    tqdm.write(text, file=file)
+    file.flush()

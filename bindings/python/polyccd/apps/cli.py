@@ -24,7 +24,7 @@ from .._index import Index
 from ._queries import mismatch_lines, run_file
 from .._results import result_json, time_json
 from .._scene import BROAD_PHASES
-from ._progress import bar
+from ._progress import bar, echo
 from ._scene_file import load_scene
 
 OK, FAILED, BAD_INPUT = 0, 1, 2
@@ -52,7 +52,7 @@ def _progress(args):
 
 
 def _error(message):
-    print(f"polyccd: {message}", file=sys.stderr)
+    echo(f"polyccd: {message}", file=sys.stderr)
 
 
 def _check_json(result):
@@ -87,16 +87,16 @@ def cmd_check(args):
             distributed, client = stack.enter_context(_cluster(args))
             results = distributed.check_map(files, threads=args.threads, client=client,
                                             progress=_progress(args))
-            stack.callback(results.close)  # before the cluster closes
         else:
             results = _check_serial(files, args.threads, _progress(args))
+        stack.callback(results.close)  # the bar ends (and the cluster's tasks) before more output
         for path, result in zip(files, results):
             if isinstance(result, InputError):
                 _error(f"{path}: {result}")
                 status = BAD_INPUT
                 continue
             out = _check_json(result)
-            print(json.dumps(out if len(files) == 1 else {"file": path, **out}), flush=True)
+            echo(json.dumps(out if len(files) == 1 else {"file": path, **out}))
     return status
 
 
@@ -163,9 +163,9 @@ def cmd_index(args):
                 distributed, client = stack.enter_context(_cluster(args))
                 results = distributed.index_map(ix, queries, client=client,
                                                 progress=_progress(args), **options)
-                stack.callback(results.close)  # before the cluster closes
             else:
                 results = _index_serial(ix, queries, options, _progress(args))
+            stack.callback(results.close)  # the bar ends before more output
             for k, r in zip(others, results):
                 lines.append(json.dumps(index_json(names[stored], names[k], r,
                                                    args.all_contacts)))
@@ -197,13 +197,13 @@ def cmd_corpus(args):
         if _distributed(args) and files:
             distributed, client = stack.enter_context(_cluster(args))
             outcomes = distributed.corpus_map(files, client=client, progress=_progress(args))
-            stack.callback(outcomes.close)  # before the cluster closes
         else:
             outcomes = _corpus_serial(files, _progress(args))
+        stack.callback(outcomes.close)  # the bar ends before the summary line
         for path, reasons in zip(files, outcomes):
             if reasons:
                 failed += 1
-                print(f"FAIL {path}: " + "; ".join(reasons), flush=True)
+                echo(f"FAIL {path}: " + "; ".join(reasons))
     print(f"{len(files) - failed} passed, {failed} failed")
     return FAILED if failed else OK
 
@@ -215,7 +215,7 @@ def _corpus_serial(files, progress):
             b.update()
 
 
-def run_queries(paths, kind=None, as_json=False, out=print, root=None, args=None):
+def run_queries(paths, kind=None, as_json=False, out=echo, root=None, args=None):
     """Runs benchmark CSV files (and folders of them); the exit status. Files are
     named relative to root when given; args: the --workers / --scheduler / --quiet
     options (None: serial, automatic progress bar)."""
@@ -233,9 +233,9 @@ def run_queries(paths, kind=None, as_json=False, out=print, root=None, args=None
         if args is not None and _distributed(args):
             distributed, client = stack.enter_context(_cluster(args))
             outcomes = distributed.queries_map(files, kind, client=client, progress=progress)
-            stack.callback(outcomes.close)  # before the cluster closes
         else:
             outcomes = _queries_serial(files, kind, progress)
+        stack.callback(outcomes.close)  # the bar ends before the total line
         for path, report in zip(files, outcomes):
             status = _report_queries(path, report, root, as_json, out, reports)
             if status is not None:
@@ -271,7 +271,7 @@ def _report_queries(path, report, root, as_json, out, reports):
     reports.append(report)
     out(json.dumps(report.as_json()) if as_json else report.line())
     for line in mismatch_lines(report):
-        print(line, file=sys.stderr if as_json else sys.stdout)
+        echo(line, file=sys.stderr if as_json else sys.stdout)
     return None
 
 
