@@ -24,6 +24,21 @@ class ContactTime:
     exact: Optional[Fraction]
     approx: float
 
+    def __reduce__(self):
+        """Pickles the Fractions as integer pairs (a Fraction pickles as its decimal
+        text, slow to parse back for the many results of a distributed batch)."""
+        e = self.exact
+        return _unpickled_time, (self.lo.numerator, self.lo.denominator, self.hi.numerator,
+                               self.hi.denominator, None if e is None else e.numerator,
+                               None if e is None else e.denominator, self.approx)
+
+
+def _unpickled_time(lo_n, lo_d, hi_n, hi_d, e_n, e_d, approx):
+    lo = Fraction(lo_n, lo_d)
+    hi = lo if (hi_n, hi_d) == (lo_n, lo_d) else Fraction(hi_n, hi_d)
+    exact = None if e_n is None else (lo if (e_n, e_d) == (lo_n, lo_d) else Fraction(e_n, e_d))
+    return ContactTime(lo, hi, exact, approx)
+
 
 @dataclass(frozen=True)
 class Feature:

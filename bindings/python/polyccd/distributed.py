@@ -146,8 +146,8 @@ def _cached_index(token, body):
 
 
 def _index_chunk(chunk, body, token, options):
-    ix = _cached_index(token, body)
-    return [ix.query(q, **options) for q in chunk]
+    """Index.query_many of the chunk (one C call; equal to Index.query of each)."""
+    return _cached_index(token, body).query_many(chunk, **options)
 
 
 def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **options):
