@@ -102,12 +102,12 @@ def map_chunks(fn, items, *shared, client=None, chunk_size=None, progress=None,
     chunks = [items[k:k + size] for k in range(0, len(items), size)]
     # One future per object (a list or dict given to scatter would be split up).
     scattered = [client.scatter([s], broadcast=True, hash=False)[0] for s in shared]
-    futures = [client.submit(fn, chunk, *scattered, pure=False) for chunk in chunks]
+    futures = client.map(fn, chunks, *[[s] * len(chunks) for s in scattered], pure=False)
     where = {f.key: k for k, f in enumerate(futures)}
     done, next_chunk = {}, 0
     progress_bar = bar(len(items), desc, unit, progress)
     try:
-        for future, answers in _distributed.as_completed(futures, with_results=True):
+        for future, answers in _completed(futures):
             k = where[future.key]
             if len(answers) != len(chunks[k]):
                 raise InputError(f"{fn.__name__}: {len(answers)} answers for a chunk of "
@@ -123,6 +123,13 @@ def map_chunks(fn, items, *shared, client=None, chunk_size=None, progress=None,
         if pending and client.status == "running":
             client.cancel(pending)
         del futures, scattered  # released by the scheduler when no future refers to them
+
+
+def _completed(futures):
+    """(future, result) as tasks finish, results gathered a batch at a time (all the
+    tasks finished since the last batch: one round trip, not one per task)."""
+    for batch in _distributed.as_completed(futures, with_results=True).batches():
+        yield from batch
 
 
 # ------------------------------------------------------------------- on-line index ---
