@@ -176,6 +176,7 @@ bench: all $(BUILD)/bench_linear
 	$(VPY) tests/bench/bench_bodies.py
 	$(VPY) tests/bench/bench_bvh.py
 	$(VPY) tests/bench/bench_online.py
+	$(VPY) tests/bench/bench_distributed.py
 
 demo: all
 	$(VENV)/bin/polyccd demo

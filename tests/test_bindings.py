@@ -187,8 +187,6 @@ def test_time_tolerance_bounds_the_enclosure():
     ("vertex-face", np.zeros((3, 3)), "p_t0", ["shape (4, 3)"]),
     ("vertex-face", np.zeros(12), "p_t0", ["shape (4, 3)"]),
     ("vertex-face", [[0, 0], [0]], "p_t0", ["shape"]),
-    ("vertex-face", [[Fraction(1, 3), 0, 0]] * 4, "p_t0", ["float64", "solve"]),
-    ("vertex-face", np.array([[2 ** 60 + 1, 0, 0]] * 4), "p_t0[0][0]", ["exactly"]),
     ("vertex-face", np.zeros((4, 3), dtype=bool), "p_t0", ["float64"]),
     ("vertex-vertex", [[0, 0, 0], [0, 0, np.nan]], "p_t0[1][2]", ["finite"]),
     ("sphere-sphere", np.zeros((2, 3)), "kind", ["radii"]),
@@ -199,6 +197,21 @@ def test_linear_errors(kind, a, place, words):
             call(kind, a, np.zeros((2 if kind == "vertex-vertex" else 4, 3)))
         assert str(info.value).startswith(place + ":"), str(info.value)
         assert all(w in str(info.value) for w in words), str(info.value)
+
+
+@pytest.mark.parametrize("a", [[[Fraction(1, 3), 0, 0]] * 4,
+                               np.array([[2 ** 60 + 1, 0, 0]] * 4)])
+def test_linear_takes_values_that_are_not_doubles_exactly(a):
+    """Not doubles (1/3, 2^60 + 1): solve_linear and collides_linear take the exact
+    path, answering as solve() of x(t) = x0 + (x1 - x0) t; the batch entry point, on
+    doubles only, names the value."""
+    b = np.zeros((4, 3))
+    trajs = [[[Fraction(a[i][k]), -Fraction(a[i][k])] for k in range(3)] for i in range(4)]
+    want = polyccd.solve("vertex-face", trajs)
+    assert polyccd.solve_linear("vertex-face", a, b) == want
+    assert polyccd.collides_linear("vertex-face", a, b) == want.collides
+    with pytest.raises(InputError, match=r"^t0\[0\]\[0\]\[0\]: .* is not exactly a float64"):
+        polyccd.solve_linear_many("vertex-face", [a], [b])
 
 
 def test_linear_accepts_non_contiguous_and_other_exact_dtypes():

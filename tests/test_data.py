@@ -274,7 +274,10 @@ def test_render_scene_molecule_and_big_mesh(tmp_path, pdb_path):
 def test_render_scene_needs_float_geometry(tmp_path):
     plain = polyccd.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
     with pytest.raises(polyccd.InputError, match="no float geometry"):
-        _render.render_scene([(plain, None)], 0, [], tmp_path / "x.png")
+        _render.render_scene([(object(), None)], 0, [], tmp_path / "x.png")
+    # Every Mesh / Spheres gives its float arrays (Mesh.vertices, ...); geometry= overrides.
+    assert _png_size(_render.render_scene([(plain, None)], 0, [], tmp_path / "p.png")) == \
+        (1600, 800)
     geometry = {0: {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]]}}
     out = _render.render_scene([(plain, None)], 0, [(0, ("triangle", 0))], tmp_path / "x.png",
                                geometry=geometry)

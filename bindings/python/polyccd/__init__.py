@@ -27,7 +27,7 @@ def _check_version():
 _check_version()
 
 from ._errors import Error, InputError, InternalError, LimitError  # noqa: E402
-from ._results import KINDS, ContactTime, Feature, Result  # noqa: E402
+from ._results import KINDS, Answers, ContactTime, Feature, Result, answers  # noqa: E402
 from ._solve import collides_linear, solve, solve_linear  # noqa: E402
 from ._batch import LinearBatch, solve_linear_many  # noqa: E402
 from ._motion import Motion  # noqa: E402
@@ -37,7 +37,7 @@ from ._scene import check_scene as check  # noqa: E402
 from ._index import Index  # noqa: E402
 
 __all__ = ["__version__", "KINDS", "solve", "solve_linear", "collides_linear", "solve_linear_many",
-           "LinearBatch", "Result",
+           "LinearBatch", "Result", "Answers", "answers",
            "ContactTime", "Feature", "Motion", "Mesh", "Spheres", "Body", "check", "load_scene", "Index",
            "SceneResult", "PairResult", "Contact", "Error", "InputError",
            "LimitError", "InternalError"]

@@ -1,25 +1,33 @@
 """Mesh and Spheres: rigid bodies in body coordinates (formats.md, BODY), thin wrappers
 of pccd_body.
 
-Numbers are converted exactly: a numpy float array (float16/32/64) goes to the C
-library as doubles (their exact binary values, pccd_body_new_*_d); anything else (nested
-lists of int, Fraction, str, float; integer or object arrays; long double arrays) goes
-as exact number texts (pccd_body_new_*_s). Validation (index range, radii > 0, finite
+Numbers are converted exactly: a numpy float array (float16/32/64) and an integer array
+whose values are all within +-2^53 go to the C library as doubles (their exact binary
+values, pccd_body_new_*_d); anything else (nested lists of int, Fraction, str, float;
+larger integers; object arrays of Fraction, int or float; long double arrays) goes as
+exact number texts (pccd_body_new_*_s). Validation (index range, radii > 0, finite
 numbers) and the edge list come from the C library; errors name the place in the
 caller's terms ("vertices[4][2]", "triangles[3][1]", "radii[2]"): the C message is
 raised as it is (_errors.check). Bodies never change.
+
+A body keeps a private copy of the exact inputs it was built from (the doubles or the
+number texts, and the triangles), so that it pickles (it is rebuilt from them, e.g. on
+a Dask worker: the C handle itself cannot travel) and can give its coordinates back as
+numpy arrays (Mesh.vertices, Mesh.exact_vertices(), ...).
 """
 import numbers
+from fractions import Fraction
 
 import numpy as np
 
 from . import _handles as handles
 from ._errors import InputError, check
-from ._numbers import number_text, show
+from ._numbers import exact_fraction, number_text, show
 from ._pccd import ffi, lib
 from ._solve import _items, _texts
 
 _UINT_MAX = 2 ** 32 - 1  # unsigned int of the C API (checked at build time, see below)
+_EXACT_INT = 2 ** 53  # every integer of magnitude <= 2^53 is a double exactly
 assert ffi.sizeof("unsigned int") == 4
 
 
@@ -32,8 +40,10 @@ def _points(value, place, width=3):
         if value.ndim != len(shape) + 1 or value.shape[1:] != shape:
             raise InputError(f"{place}: expected {what}, got shape {value.shape}")
         if value.dtype.kind == "f" and value.dtype.itemsize <= 8:  # exact in float64
-            a = np.ascontiguousarray(value, dtype=np.float64)
-            return len(a), a, None
+            return len(value), _frozen(np.array(value, dtype=np.float64)), None
+        if value.dtype.kind in "iu" and (value.size == 0 or (
+                int(value.min()) >= -_EXACT_INT and int(value.max()) <= _EXACT_INT)):
+            return len(value), _frozen(value.astype(np.float64)), None  # exact: |x| <= 2^53
         value = value.tolist() if value.dtype.kind in "iub" else list(value)
     rows = _items(value, place, what)
     texts = []
@@ -48,6 +58,29 @@ def _points(value, place, width=3):
             raise InputError(f"{place}[{i}]: expected {width} numbers, got {len(items)}")
         texts.extend(number_text(x, f"{place}[{i}][{k}]") for k, x in enumerate(items))
     return len(rows), None, texts
+
+
+def _frozen(a):
+    """a (a private C-contiguous copy) made read-only."""
+    a = np.ascontiguousarray(a)
+    a.flags.writeable = False
+    return a
+
+
+def _float_of_texts(texts, shape):
+    """The nearest doubles of exact number texts (already accepted by the C library),
+    for drawing and other float uses: float(Fraction) rounds correctly."""
+    return np.array([float(exact_fraction(t, "value")) for t in texts],
+                    dtype=np.float64).reshape(shape)
+
+
+def _fractions(doubles, texts, shape):
+    """An object array of the exact Fractions of the doubles or the number texts."""
+    values = ([exact_fraction(t, "value") for t in texts] if doubles is None
+              else [Fraction(x) for x in doubles.ravel().tolist()])
+    out = np.empty(len(values), dtype=object)
+    out[:] = values
+    return out.reshape(shape)
 
 
 def _indices(value):
@@ -76,11 +109,11 @@ def _indices(value):
             if not 0 <= x <= _UINT_MAX:
                 raise InputError(f"{place}: index {int(x)} is not a valid 0-based index")
             flat.append(int(x))
-    return len(rows), np.array(flat, dtype=np.uint32)
+    return len(rows), _frozen(np.array(flat, dtype=np.uint32))
 
 
 class _Body:
-    __slots__ = ("_handle",)
+    __slots__ = ("_handle", "_inputs")
 
     def __setattr__(self, name, value):
         raise AttributeError(f"a {type(self).__name__} cannot be changed")
@@ -106,14 +139,61 @@ class Mesh(_Body):
     def __init__(self, vertices, triangles):
         nv, doubles, texts = _points(vertices, "vertices")
         nt, tris = _indices(triangles)
+        self._build(nv, doubles, None if texts is None else tuple(texts), tris)
+
+    def _build(self, nv, doubles, texts, tris):
         t = ffi.from_buffer("unsigned int[]", tris)
         if doubles is not None:
-            handle = handles.new("body", ffi.from_buffer("double[]", doubles), nv, t, nt,
-                                 via="new_mesh_d")
+            handle = handles.new("body", ffi.from_buffer("double[]", doubles), nv, t,
+                                 len(tris) // 3, via="new_mesh_d")
         else:
             array, _keep = _texts(texts)
-            handle = handles.new("body", array, nv, t, nt, via="new_mesh_s")
+            handle = handles.new("body", array, nv, t, len(tris) // 3, via="new_mesh_s")
         object.__setattr__(self, "_handle", handle)
+        object.__setattr__(self, "_inputs", (nv, doubles, texts, tris))
+
+    def __reduce__(self):
+        """Pickles as the exact inputs; unpickling builds a new Mesh from them."""
+        return _rebuild, (Mesh, self._inputs)
+
+    @classmethod
+    def from_trimesh(cls, mesh):
+        """The Mesh of a trimesh.Trimesh (or any object with .vertices (n, 3) and .faces
+        (m, 3)): its float64 vertices taken at their exact binary values, its faces as
+        the triangles, as they are (no processing, merging or reorientation). A
+        trimesh.Scene is refused: pass scene.to_geometry() (trimesh applies the node
+        transforms in floating point, so that is its rounding, not polyccd's)."""
+        vertices = getattr(mesh, "vertices", None)
+        faces = getattr(mesh, "faces", None)
+        if vertices is None or faces is None:
+            hint = (" (a trimesh.Scene: pass scene.to_geometry())"
+                    if hasattr(mesh, "geometry") else "")
+            raise InputError(f"mesh: expected a trimesh.Trimesh (with .vertices and .faces), "
+                             f"got {show(mesh)}{hint}")
+        return cls(np.asarray(vertices), np.asarray(faces))
+
+    @property
+    def vertices(self):
+        """The vertices as an (n, 3) float64 array (read-only): exactly the body's
+        coordinates when exact_doubles, else their nearest doubles (for drawing)."""
+        nv, doubles, texts, _ = self._inputs
+        return doubles.reshape(nv, 3) if doubles is not None else _float_of_texts(texts, (nv, 3))
+
+    @property
+    def exact_doubles(self):
+        """True when the coordinates were given as doubles (Mesh.vertices is exact)."""
+        return self._inputs[1] is not None
+
+    def exact_vertices(self):
+        """The vertices as an (n, 3) object array of Fractions, exactly as the body uses
+        them (a float given is its binary value, a decimal text its decimal value)."""
+        nv, doubles, texts, _ = self._inputs
+        return _fractions(doubles, texts, (nv, 3))
+
+    @property
+    def triangles(self):
+        """The triangles as an (m, 3) int64 array of 0-based vertex indices, as given."""
+        return self._inputs[3].reshape(-1, 3).astype(np.int64)
 
     @property
     def n_vertices(self):
@@ -166,6 +246,9 @@ class Spheres(_Body):
         nr, r_doubles, r_texts = _points(radii, "radii", width=None)
         if nr != n:
             raise InputError(f"radii: expected {n} radii (one per center), got {nr}")
+        self._build(n, c_doubles, c_texts, r_doubles, r_texts)
+
+    def _build(self, n, c_doubles, c_texts, r_doubles, r_texts):
         if c_doubles is not None and r_doubles is not None:
             handle = handles.new("body", ffi.from_buffer("double[]", c_doubles),
                                  ffi.from_buffer("double[]", r_doubles), n, via="new_spheres_d")
@@ -178,7 +261,57 @@ class Spheres(_Body):
             c, _kc = _texts(c_texts)
             r, _kr = _texts(r_texts)
             handle = handles.new("body", c, r, n, via="new_spheres_s")
+            c_doubles = r_doubles = None
+            c_texts, r_texts = tuple(c_texts), tuple(r_texts)
         object.__setattr__(self, "_handle", handle)
+        object.__setattr__(self, "_inputs", (n, c_doubles, c_texts, r_doubles, r_texts))
+
+    def __reduce__(self):
+        """Pickles as the exact inputs; unpickling builds new Spheres from them."""
+        return _rebuild, (Spheres, self._inputs)
+
+    @classmethod
+    def from_gemmi(cls, source, select=None, *, waters=False, altloc="first", radius_scale=1):
+        """The atoms of a molecule as balls of van der Waals radius (Bondi 1964 for H C N
+        O S P F Cl, else gemmi's table to its 2 decimals; times radius_scale, exact).
+
+        source: a PDB or mmCIF path (str or os.PathLike): the centres are the decimal
+        texts of the file exactly ("14.264" is 14264/1000, not a double); or a
+        gemmi.Structure / gemmi.Model in memory: the centres are gemmi's float64
+        positions at their exact binary values. First model only; select, waters,
+        altloc as polyccd.apps._data.load_pdb. The result carries .info (an AtomInfo
+        naming each ball). Needs gemmi (imported here, not by `import polyccd`)."""
+        from .apps._data import spheres_from_gemmi
+        return spheres_from_gemmi(source, select, waters=waters, altloc=altloc,
+                                  radius_scale=radius_scale)
+
+    @property
+    def centers(self):
+        """The centres as an (n, 3) float64 array (read-only): exactly the body's when
+        exact_doubles, else their nearest doubles (for drawing)."""
+        n, c, ct, _, _ = self._inputs
+        return c.reshape(n, 3) if c is not None else _float_of_texts(ct, (n, 3))
+
+    @property
+    def radii(self):
+        """The radii as an (n,) float64 array: exact when exact_doubles, else nearest."""
+        n, _, _, r, rt = self._inputs
+        return r if r is not None else _float_of_texts(rt, (n,))
+
+    @property
+    def exact_doubles(self):
+        """True when centres and radii were given as doubles (centers, radii are exact)."""
+        return self._inputs[1] is not None
+
+    def exact_centers(self):
+        """The centres as an (n, 3) object array of Fractions, exactly as the body uses them."""
+        n, c, ct, _, _ = self._inputs
+        return _fractions(c, ct, (n, 3))
+
+    def exact_radii(self):
+        """The radii as an (n,) object array of Fractions, exactly as the body uses them."""
+        n, _, _, r, rt = self._inputs
+        return _fractions(r, rt, (n,))
 
     @property
     def n_spheres(self):
@@ -186,3 +319,11 @@ class Spheres(_Body):
 
     def __repr__(self):
         return f"<polyccd.Spheres: {self.n_spheres} balls>"
+
+
+def _rebuild(cls, inputs):
+    """A Mesh or Spheres rebuilt from the exact inputs of a pickled one (already checked
+    by the C library once, so nothing is converted again)."""
+    body = cls.__new__(cls)
+    body._build(*inputs)
+    return body

@@ -29,6 +29,10 @@ class Index:
     def __repr__(self):
         return f"Index({self.body!r})"
 
+    def __reduce__(self):
+        """Pickles as its Body (exact inputs); unpickling preprocesses the body again."""
+        return Index, (self.body,)
+
     def query(self, body, *, time_tolerance="1e-12", all_contacts=False, threads=1,
               broad_phase="auto", want_exact=True):
         """The SceneResult of the two bodies (indexed body, query body); the keyword
@@ -39,7 +43,7 @@ class Index:
         rep = handles.new("report")
         check(lib.pccd_index_query(self._handle, body.shape._handle, _motion_handle(body.motion),
                                      cfg, opt, rep))
-        return _read(rep, _names([self.body, body]))
+        return _read(rep, _names([self.body, body]), (self.body, body))
 
     def query_many(self, bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
                    broad_phase="auto", want_exact=True):
@@ -53,4 +57,4 @@ class Index:
         reps = [handles.new("report") for _ in range(n)]
         rep_array = ffi.new("pccd_report *[]", reps or 1)
         check(lib.pccd_index_query_many(self._handle, shapes, motions, n, cfg, opt, rep_array))
-        return [_read(r, _names([self.body, b])) for r, b in zip(reps, bodies)]
+        return [_read(r, _names([self.body, b]), (self.body, b)) for r, b in zip(reps, bodies)]

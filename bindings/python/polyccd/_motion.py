@@ -5,6 +5,10 @@ built, composed and evaluated by the C library. A Motion never changes after it 
 built; compose() returns a new one. The C library names a bad number as the Python
 arguments nest it ("translation[1][2]", "ctrl[3][0]", "tau0"); its message is raised
 as it is (_errors.check).
+
+A Motion remembers how it was made (its recipe: the constructor and its exact number
+texts), so that it pickles: unpickling replays the recipe in the C library (the C handle
+itself cannot travel, e.g. to a Dask worker).
 """
 from . import _handles as handles
 from ._errors import InputError, check
@@ -36,6 +40,10 @@ def _polys(value, place, count, names):
     return out
 
 
+def _text(cstring):
+    return ffi.string(cstring).decode("utf-8")
+
+
 def _number(value, place):
     if isinstance(value, (list, tuple, dict)):
         raise InputError(f"{place}: expected a number, got {show(value)}")
@@ -46,21 +54,29 @@ class Motion:
     """An exact rigid motion: body point p is at R(r(t)) p + o(t) for t in [0, 1]
     (formats.md, MOTION). See bindings/python/API.md, "Motions"."""
 
-    __slots__ = ("_handle",)
+    __slots__ = ("_handle", "_recipe")
 
     def __init__(self, translation=None, rotation=None):
         """translation: [xs, ys, zs] and rotation: [ws, xs, ys, zs], coefficient lists in
         ascending powers of t (omitted: zero translation, identity rotation)."""
         handle = handles.new("motion")
+        recipe = [None, None]
         if translation is not None:
-            for axis, texts in enumerate(_polys(translation, "translation", 3, "xs, ys, zs")):
+            recipe[0] = _polys(translation, "translation", 3, "xs, ys, zs")
+            for axis, texts in enumerate(recipe[0]):
                 array, _keep = _texts(texts)
                 check(lib.pccd_motion_set_translation_s(handle, axis, array, len(texts)))
         if rotation is not None:
-            for c, texts in enumerate(_polys(rotation, "rotation", 4, "ws, xs, ys, zs")):
+            recipe[1] = _polys(rotation, "rotation", 4, "ws, xs, ys, zs")
+            for c, texts in enumerate(recipe[1]):
                 array, _keep = _texts(texts)
                 check(lib.pccd_motion_set_rotation_s(handle, c, array, len(texts)))
         object.__setattr__(self, "_handle", handle)
+        object.__setattr__(self, "_recipe", ("__init__", tuple(recipe)))
+
+    def __reduce__(self):
+        """Pickles as its recipe (exact number texts); unpickling rebuilds it in C."""
+        return _from_recipe, (self._recipe,)
 
     def __setattr__(self, name, value):
         raise AttributeError("a Motion cannot be changed; compose() returns a new one")
@@ -72,17 +88,19 @@ class Motion:
         return self
 
     @classmethod
-    def _wrap(cls, handle):
+    def _wrap(cls, handle, recipe):
         motion = cls.__new__(cls)
         object.__setattr__(motion, "_handle", handle)
+        object.__setattr__(motion, "_recipe", recipe)
         return motion
 
     @classmethod
-    def _built(cls, setter, *arrays):
-        """A new motion from one C setter taking (const char *[]) arrays / strings."""
+    def _built(cls, recipe, setter, *arrays):
+        """A new motion from one C setter taking (const char *[]) arrays / strings;
+        recipe: (constructor name, its arguments as number texts)."""
         handle = handles.new("motion")
         check(setter(handle, *arrays))
-        return cls._wrap(handle)
+        return cls._wrap(handle, recipe)
 
     @classmethod
     def translation(cls, coeffs_xyz):
@@ -92,9 +110,10 @@ class Motion:
     @classmethod
     def linear(cls, p0, p1):
         """A translation moving linearly from p0 (t = 0) to p1 (t = 1)."""
-        a0, k0 = _texts(_vector(p0, "p0"))
-        a1, k1 = _texts(_vector(p1, "p1"))
-        return cls._built(lib.pccd_motion_set_linear_translation_s, a0, a1)
+        v0, v1 = _vector(p0, "p0"), _vector(p1, "p1")
+        a0, k0 = _texts(v0)
+        a1, k1 = _texts(v1)
+        return cls._built(("linear", (v0, v1)), lib.pccd_motion_set_linear_translation_s, a0, a1)
 
     @classmethod
     def bezier(cls, ctrl):
@@ -105,42 +124,49 @@ class Motion:
             raise InputError(f"ctrl: expected 4 control points, got {len(points)}")
         texts = [x for i, point in enumerate(points) for x in _vector(point, f"ctrl[{i}]")]
         array, _keep = _texts(texts)
-        return cls._built(lib.pccd_motion_set_bezier_translation_s, array)
+        recipe = ("bezier", ([texts[3 * i:3 * i + 3] for i in range(4)],))
+        return cls._built(recipe, lib.pccd_motion_set_bezier_translation_s, array)
 
     @classmethod
     def hermite(cls, p0, v0, p1, v1):
         """The cubic Hermite translation: position p0, velocity v0 at t = 0; p1, v1 at 1."""
-        arrays = [_texts(_vector(v, name))
-                  for v, name in ((p0, "p0"), (v0, "v0"), (p1, "p1"), (v1, "v1"))]
-        return cls._built(lib.pccd_motion_set_hermite_translation_s, *(a for a, _ in arrays))
+        vectors = [_vector(v, name) for v, name in ((p0, "p0"), (v0, "v0"), (p1, "p1"), (v1, "v1"))]
+        arrays = [_texts(v) for v in vectors]
+        return cls._built(("hermite", tuple(vectors)), lib.pccd_motion_set_hermite_translation_s,
+                          *(a for a, _ in arrays))
 
     @classmethod
     def axis_rotation(cls, axis, center, tau0, tau1):
         """Rotation about the fixed axis through center (linear quaternion interpolation
         (1, tau0 axis) -> (1, tau1 axis)); tan(angle(t) / 2) = tau(t) |axis|."""
-        a, ka = _texts(_vector(axis, "axis"))
-        c, kc = _texts(_vector(center, "center"))
-        return cls._built(lib.pccd_motion_set_axis_rotation_s, a, c, _number(tau0, "tau0"),
-                          _number(tau1, "tau1"))
+        va, vc = _vector(axis, "axis"), _vector(center, "center")
+        a, ka = _texts(va)
+        c, kc = _texts(vc)
+        n0, n1 = _number(tau0, "tau0"), _number(tau1, "tau1")
+        recipe = ("axis_rotation", (va, vc, _text(n0), _text(n1)))
+        return cls._built(recipe, lib.pccd_motion_set_axis_rotation_s, a, c, n0, n1)
 
     @classmethod
     def screw(cls, axis, center, tau0, tau1, advance):
         """axis_rotation plus the translation advance * t * axis along the axis."""
-        a, ka = _texts(_vector(axis, "axis"))
-        c, kc = _texts(_vector(center, "center"))
-        return cls._built(lib.pccd_motion_set_screw_s, a, c, _number(tau0, "tau0"),
-                          _number(tau1, "tau1"), _number(advance, "advance"))
+        va, vc = _vector(axis, "axis"), _vector(center, "center")
+        a, ka = _texts(va)
+        c, kc = _texts(vc)
+        n0, n1, adv = _number(tau0, "tau0"), _number(tau1, "tau1"), _number(advance, "advance")
+        recipe = ("screw", (va, vc, _text(n0), _text(n1), _text(adv)))
+        return cls._built(recipe, lib.pccd_motion_set_screw_s, a, c, n0, n1, adv)
 
     def compose(self, quat, offset, side="body"):
         """A new motion: this one composed with the constant pose (R(quat), offset).
         side="body": x'(t) = M(R p + offset); side="world": x'(t) = R M(p) + offset."""
         if not isinstance(side, str) or side not in _SIDES:
             raise InputError(f'side: {show(side)} is not "body" or "world"')
-        q, kq = _texts(_vector(quat, "quat", 4))
-        o, ko = _texts(_vector(offset, "offset"))
+        vq, vo = _vector(quat, "quat", 4), _vector(offset, "offset")
+        q, kq = _texts(vq)
+        o, ko = _texts(vo)
         handle = handles.new("motion", self._handle, via="copy")
         check(lib.pccd_motion_compose_pose_s(handle, _SIDES[side], q, o))
-        return Motion._wrap(handle)
+        return Motion._wrap(handle, ("compose", (self._recipe, vq, vo, side)))
 
     def validate(self):
         """Returns self when r(t) vanishes nowhere on [0, 1]; else InputError with the
@@ -160,3 +186,15 @@ class Motion:
             rc = lib.pccd_motion_position_s(self._handle, point, time, buf, needed[0], needed)
         check(rc)
         return tuple(fraction_from_text(x) for x in ffi.string(buf).decode().split(" "))
+
+
+def _from_recipe(recipe):
+    """The Motion of a recipe (see Motion.__reduce__): the same constructors, called with
+    the exact number texts they recorded."""
+    name, args = recipe
+    if name == "__init__":
+        return Motion(*args)
+    if name == "compose":
+        parent, quat, offset, side = args
+        return _from_recipe(parent).compose(quat, offset, side)
+    return getattr(Motion, name)(*args)

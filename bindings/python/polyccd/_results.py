@@ -4,6 +4,8 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import Optional, Tuple
 
+import numpy as np
+
 from ._errors import InternalError, check
 from ._numbers import fraction_from_text, ratio_text
 from ._pccd import ffi, lib
@@ -21,6 +23,21 @@ class ContactTime:
     hi: Fraction
     exact: Optional[Fraction]
     approx: float
+
+    def __reduce__(self):
+        """Pickles the Fractions as integer pairs (a Fraction pickles as its decimal
+        text, slow to parse back for the many results of a distributed batch)."""
+        e = self.exact
+        return _unpickled_time, (self.lo.numerator, self.lo.denominator, self.hi.numerator,
+                               self.hi.denominator, None if e is None else e.numerator,
+                               None if e is None else e.denominator, self.approx)
+
+
+def _unpickled_time(lo_n, lo_d, hi_n, hi_d, e_n, e_d, approx):
+    lo = Fraction(lo_n, lo_d)
+    hi = lo if (hi_n, hi_d) == (lo_n, lo_d) else Fraction(hi_n, hi_d)
+    exact = None if e_n is None else (lo if (e_n, e_d) == (lo_n, lo_d) else Fraction(e_n, e_d))
+    return ContactTime(lo, hi, exact, approx)
 
 
 @dataclass(frozen=True)
@@ -104,6 +121,40 @@ def read_result(res):
 
 
 _NO_CONTACT = {stage: Result(False, None, (), stage) for stage in STAGES.values()}
+
+
+@dataclass(frozen=True)
+class Answers:
+    """The answers of n results (Result or SceneResult, e.g. Index.query_many's) as
+    numpy arrays, entry k of result k: collides (bool), exact (bool: the first contact
+    time is known exactly), approx (float64: the library's double near the first time,
+    NaN without contact), lo, hi (object arrays of Fraction: the exact enclosure, None
+    without contact)."""
+    collides: np.ndarray
+    exact: np.ndarray
+    approx: np.ndarray
+    lo: np.ndarray
+    hi: np.ndarray
+
+    def __len__(self):
+        return len(self.collides)
+
+
+def answers(results):
+    """The Answers of a sequence of Result or SceneResult objects (nothing computed:
+    the results' own values, gathered into arrays)."""
+    results = list(results)
+    n = len(results)
+    collides = np.fromiter((r.collides for r in results), dtype=bool, count=n)
+    firsts = [r.first_contact for r in results]
+    exact = np.fromiter((f is not None and f.exact is not None for f in firsts), dtype=bool,
+                        count=n)
+    approx = np.fromiter((np.nan if f is None else f.approx for f in firsts),
+                         dtype=np.float64, count=n)
+    lo, hi = np.empty(n, dtype=object), np.empty(n, dtype=object)
+    lo[:] = [None if f is None else f.lo for f in firsts]
+    hi[:] = [None if f is None else f.hi for f in firsts]
+    return Answers(collides, exact, approx, lo, hi)
 
 
 def time_json(first):

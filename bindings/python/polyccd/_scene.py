@@ -4,8 +4,10 @@ Only conversion here: the scene is built in C (pccd_scene), solved there
 (pccd_scene_solve) and read back from the pccd_report. Scene files are read by
 polyccd.apps._scene_file.
 """
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Optional, Tuple
+
+import numpy as np
 
 from . import _handles as handles
 from ._body import Mesh, Spheres
@@ -41,6 +43,10 @@ class Body:
     def __setattr__(self, name, value):
         raise AttributeError("a Body cannot be changed; make a new one")
 
+    def __reduce__(self):
+        """Pickles as (shape, motion, name), each pickled as its exact inputs."""
+        return Body, (self.shape, self.motion, self.name)
+
     def __repr__(self):
         return f"Body({type(self.shape).__name__}, name={self.name!r})"
 
@@ -68,6 +74,55 @@ class SceneResult:
     pairs: Tuple[PairResult, ...]
     first: Tuple[PairResult, ...]
     stats: dict
+    # The bodies solved (for to_png / to_trimesh): not compared, not pickled.
+    bodies: tuple = field(default=(), compare=False, repr=False)
+
+    def __getstate__(self):
+        state = dict(self.__dict__)
+        state.pop("bodies", None)  # a result travels without its bodies (see distributed)
+        return state
+
+    def feature_indices(self, body, *, pairs="first"):
+        """{kind: int64 array} of the features of one body (an index or a name) that
+        touch, sorted and unique, kind in "vertex", "edge", "triangle", "sphere" (only the
+        kinds present). pairs="first": the contacts of the scene's first pairs;
+        "all": of every pair in contact."""
+        source = {"first": self.first, "all": self.pairs}.get(pairs)
+        if source is None:
+            raise InputError(f'pairs: expected "first" or "all", got {show(pairs)}')
+        found = {}
+        for p in source:
+            for c in p.contacts:
+                for who, name, (kind, k) in ((p.bodies[0], p.names[0], c.a),
+                                             (p.bodies[1], p.names[1], c.b)):
+                    if (who == body and not isinstance(body, str)) or name == body:
+                        found.setdefault(kind, set()).add(k)
+        return {kind: np.array(sorted(ks), dtype=np.int64) for kind, ks in sorted(found.items())}
+
+    def to_png(self, path, *, bodies=None, t=None, **options):
+        """Writes a PNG of the bodies at t (default: the first contact, else 0) with the
+        touching features in red (polyccd.apps._render.render_scene, matplotlib);
+        returns the path. bodies: default the ones this result was solved from."""
+        from .apps._render import render_scene
+        bodies = self._bodies_for(bodies)
+        time = t if t is not None else (self.first_contact or 0)
+        return render_scene(bodies, time, self, path, **options)
+
+    def to_trimesh(self, *, bodies=None, t=None):
+        """A trimesh.Scene of the bodies at t (default: the first contact, else 0), the
+        touching triangles, edges, vertices and balls in red (polyccd.apps._export);
+        drawing only: float poses and geometry. Needs trimesh."""
+        from .apps._export import contact_scene
+        bodies = self._bodies_for(bodies)
+        return contact_scene(bodies, t if t is not None else (self.first_contact or 0), self)
+
+    def _bodies_for(self, bodies):
+        if bodies is None:
+            bodies = self.bodies
+        if not bodies:
+            raise InputError("bodies: this result does not hold its bodies (it was "
+                             "pickled or made elsewhere); pass bodies=[...]")
+        return list(bodies)
 
 
 _WHOLE = lib.PCCD_WHOLE
@@ -140,10 +195,10 @@ def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1
         check(lib.pccd_scene_add(scene, b.shape._handle, _motion_handle(b.motion), ffi.NULL))
     rep = handles.new("report")
     check(lib.pccd_scene_solve(scene, cfg, opt, rep))
-    return _read(rep, _names(bodies))
+    return _read(rep, _names(bodies), bodies)
 
 
-def _read(rep, names):
+def _read(rep, names, bodies=()):
     out = ffi.new("int *")
     check(lib.pccd_report_collides(rep, out))
     collides = bool(out[0])
@@ -174,4 +229,4 @@ def _read(rep, names):
     for k, name in ((1, "bounds"), (2, "bernstein"), (3, "interval"), (4, "exact")):
         stat_dict["stage_" + name] = int(stats.by_stage[k])
     whole = _time(rep, _WHOLE, _WHOLE) if collides else None
-    return SceneResult(collides, whole, tuple(pairs), tuple(first), stat_dict)
+    return SceneResult(collides, whole, tuple(pairs), tuple(first), stat_dict, tuple(bodies))

@@ -8,7 +8,7 @@ import threading
 
 import numpy as np
 
-from ._arrays import linear_coords
+from ._arrays import NotDouble, linear_coords, linear_trajectories
 from . import _handles as handles
 from ._errors import InputError, check
 from ._numbers import number_text, show
@@ -152,11 +152,17 @@ def solve(kind, points, radii=None, *, time_tolerance="1e-12", want_time=True,
 
 def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
                  want_exact=True):
-    """solve() for points moving linearly from p_t0 (t = 0) to p_t1 (t = 1), float64
-    arrays of shape (npoints, 3)."""
+    """solve() for points moving linearly from p_t0 (t = 0) to p_t1 (t = 1), arrays of
+    shape (npoints, 3): float64 (exact binary values), integer or object arrays (int,
+    Fraction, float) or nested lists; values that are not exactly doubles take the exact
+    path (solve with the trajectories x0 + (x1 - x0) t), with the same answers."""
     code = kind_code(kind, linear=True)
-    a0 = linear_coords(p_t0, "p_t0", _NPOINTS[kind])
-    a1 = linear_coords(p_t1, "p_t1", _NPOINTS[kind])
+    try:
+        a0 = linear_coords(p_t0, "p_t0", _NPOINTS[kind])
+        a1 = linear_coords(p_t1, "p_t1", _NPOINTS[kind])
+    except NotDouble:
+        return solve_query(kind, linear_trajectories(p_t0, p_t1, _NPOINTS[kind]), None,
+                           time_tolerance, want_time, want_exact)
     cfg, _keep = _cached_config(time_tolerance, want_time, want_exact)
     res = _thread.res
     check(lib.pccd_solve_linear_d(code, ffi.from_buffer("double[]", a0),
@@ -180,12 +186,16 @@ def collides_linear(kind, p_t0, p_t1):
         code, shape = _FAST[kind]
     except (KeyError, TypeError):
         kind_code(kind, linear=True)  # raises the right message
-    if not (type(p_t0) is _ND and p_t0.dtype is _F64 and p_t0.shape == shape
-            and p_t0.flags.c_contiguous):
-        p_t0 = linear_coords(p_t0, "p_t0", shape[0])
-    if not (type(p_t1) is _ND and p_t1.dtype is _F64 and p_t1.shape == shape
-            and p_t1.flags.c_contiguous):
-        p_t1 = linear_coords(p_t1, "p_t1", shape[0])
+    try:
+        if not (type(p_t0) is _ND and p_t0.dtype is _F64 and p_t0.shape == shape
+                and p_t0.flags.c_contiguous):
+            p_t0 = linear_coords(p_t0, "p_t0", shape[0])
+        if not (type(p_t1) is _ND and p_t1.dtype is _F64 and p_t1.shape == shape
+                and p_t1.flags.c_contiguous):
+            p_t1 = linear_coords(p_t1, "p_t1", shape[0])
+    except NotDouble:  # exact rationals: the exact path, decide only
+        return solve_query(kind, linear_trajectories(p_t0, p_t1, shape[0]), None, None,
+                           False, False).collides
     rc = _solve_linear_d(code, _from_buffer("double[]", p_t0), _from_buffer("double[]", p_t1),
                          state.decide_cfg, state.res)
     if rc != 0:

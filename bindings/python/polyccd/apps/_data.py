@@ -347,19 +347,48 @@ def load_pdb(path, select=None, *, waters=False, altloc="first", radius_scale=1)
         structure = gemmi.read_structure(str(path))
     except Exception as e:
         raise InputError(f"{path}: cannot read it as a molecule ({e})") from e
+    is_cif = path.suffix.lower() in (".cif", ".mmcif") or path.name.lower().endswith(".cif.gz")
     if len(structure) == 0:
         raise InputError(f"{path}: no model in the file")
-    structure.setup_entities()
-    is_cif = path.suffix.lower() in (".cif", ".mmcif") or path.name.lower().endswith(".cif.gz")
     texts = _cif_coordinate_texts(path) if is_cif else _pdb_coordinate_texts(path)
-    keep = _selector(select, path)
+    return _atoms(structure, str(path), texts, select, waters, altloc, radius_scale)
+
+
+def spheres_from_gemmi(source, select=None, *, waters=False, altloc="first", radius_scale=1):
+    """polyccd.Spheres.from_gemmi: a path (load_pdb: the file's decimal texts, exactly)
+    or a gemmi.Structure / gemmi.Model (gemmi's float64 positions at their exact binary
+    values); the LoadedSpheres, its .info naming the balls."""
+    import gemmi
+    if isinstance(source, (str, os.PathLike)):
+        return load_pdb(source, select, waters=waters, altloc=altloc,
+                        radius_scale=radius_scale)[0]
+    if isinstance(source, gemmi.Model):
+        structure = gemmi.Structure()
+        structure.add_model(source)
+    elif isinstance(source, gemmi.Structure):
+        structure = source
+    else:
+        raise InputError(f"source: expected a PDB or mmCIF path, a gemmi.Structure or a "
+                         f"gemmi.Model, got {type(source).__name__}")
+    if len(structure) == 0:
+        raise InputError("source: no model in the structure")
+    return _atoms(structure, "source", None, select, waters, altloc, radius_scale)[0]
+
+
+def _atoms(structure, where, texts, select, waters, altloc, radius_scale):
+    """(LoadedSpheres, AtomInfo) of the first model of a gemmi structure. texts: the
+    coordinate texts of the file (exact decimals; checked against gemmi's positions),
+    or None: gemmi's float64 positions, at their exact binary values."""
+    structure = structure.clone()
+    structure.setup_entities()
+    keep = _selector(select, where)
     try:
         scale = Fraction(radius_scale)
     except (TypeError, ValueError):
         raise InputError(f"radius_scale: {radius_scale!r} is not a number") from None
     if scale <= 0:
         raise InputError(f"radius_scale: {radius_scale!r} is not > 0")
-    info = AtomInfo(str(path))
+    info = AtomInfo(where)
     centers, radii, float_centers, float_radii = [], [], [], []
     radius_of = {}
     for chain in structure[0]:
@@ -378,16 +407,20 @@ def load_pdb(path, select=None, *, waters=False, altloc="first", radius_scale=1)
                 alt = "" if atom.altloc == "\0" else atom.altloc
                 seq = f"{residue.seqid.num}"
                 icode = residue.seqid.icode.strip()
-                key = (str(atom.serial), atom.name, alt, residue.name, chain.name, seq, icode)
-                xyz = texts.get(key)
-                if xyz is None:
-                    raise InputError(f"{path}: cannot find the coordinate text of atom "
-                                     f"{atom.serial} {atom.name} of {residue.name}{seq}")
-                exact = tuple(Fraction(x) for x in xyz)
                 pos = (atom.pos.x, atom.pos.y, atom.pos.z)
-                if any(abs(float(e) - p) > 1e-6 * max(1.0, abs(p)) for e, p in zip(exact, pos)):
-                    raise InputError(f"{path}: atom {atom.serial}: text {xyz} differs from "
-                                     f"gemmi's position {pos}")
+                if texts is None:
+                    exact = tuple(Fraction(p) for p in pos)  # the doubles' binary values
+                    xyz = exact
+                else:
+                    key = (str(atom.serial), atom.name, alt, residue.name, chain.name, seq, icode)
+                    xyz = texts.get(key)
+                    if xyz is None:
+                        raise InputError(f"{where}: cannot find the coordinate text of atom "
+                                         f"{atom.serial} {atom.name} of {residue.name}{seq}")
+                    exact = tuple(Fraction(x) for x in xyz)
+                    if any(abs(float(e) - p) > 1e-6 * max(1.0, abs(p)) for e, p in zip(exact, pos)):
+                        raise InputError(f"{where}: atom {atom.serial}: text {xyz} differs from "
+                                         f"gemmi's position {pos}")
                 element = atom.element.name
                 if element not in radius_of:
                     radius_of[element] = vdw_radius(element) * scale
@@ -404,5 +437,5 @@ def load_pdb(path, select=None, *, waters=False, altloc="first", radius_scale=1)
                 info.serials.append(atom.serial)
                 info.coordinates.append(exact)
     if not centers:
-        raise InputError(f"{path}: no atom selected by select={select!r}")
-    return LoadedSpheres(centers, radii, float_centers, float_radii, str(path), info), info
+        raise InputError(f"{where}: no atom selected by select={select!r}")
+    return LoadedSpheres(centers, radii, float_centers, float_radii, where, info), info

@@ -2,8 +2,15 @@
 
 Exit status: 0 success; 1 a failed case, a wrong answer or an internal error; 2 an input
 error (the message on stderr names the file and the place in it).
+
+check, index, corpus and queries take --workers N / --scheduler ADDRESS to run on a
+dask.distributed cluster (polyccd.distributed: an embedded LocalCluster of N worker
+processes, or the running scheduler at ADDRESS); the output is the serial run's, in the
+same order. Long runs show a progress bar on stderr when stdout and stderr are
+terminals, never with --quiet (polyccd.apps._progress).
 """
 import argparse
+import contextlib
 import json
 import sys
 
@@ -17,29 +24,80 @@ from .._index import Index
 from ._queries import mismatch_lines, run_file
 from .._results import result_json, time_json
 from .._scene import BROAD_PHASES
+from ._progress import bar, echo
 from ._scene_file import load_scene
 
 OK, FAILED, BAD_INPUT = 0, 1, 2
 
 
+def _distributed(args):
+    """True when the run goes to a dask cluster (--workers or --scheduler given)."""
+    return getattr(args, "workers", None) is not None or getattr(args, "scheduler", None)
+
+
+@contextlib.contextmanager
+def _cluster(args):
+    """The dask Client of --workers / --scheduler (polyccd.distributed.cluster)."""
+    try:
+        from .. import distributed
+    except ImportError as e:
+        raise InputError(f"--workers / --scheduler: {e}") from None
+    with distributed.cluster(scheduler=args.scheduler, workers=args.workers) as client:
+        yield distributed, client
+
+
+def _progress(args):
+    """None (automatic: a bar on terminals) or False (--quiet)."""
+    return False if getattr(args, "quiet", False) else None
+
+
 def _error(message):
-    print(f"polyccd: {message}", file=sys.stderr)
+    echo(f"polyccd: {message}", file=sys.stderr)
+
+
+def _check_json(result):
+    """The JSON of `polyccd check` for a SceneResult or a Result."""
+    if hasattr(result, "pairs"):
+        return scene_json(result)
+    out = result_json(result)
+    out["bodies"] = None  # bodies in contact: for scene files only
+    return out
+
+
+def _check_serial(files, threads, progress):
+    """(SceneResult | Result | InputError) per file, solved here in order."""
+    with bar(len(files), "check", "file", progress if len(files) > 1 else False) as b:
+        for path in files:
+            try:
+                what, case = read_case(path)
+                yield (solve_scene_case(case, threads=threads) if what == "scene"
+                       else solve_case(case))
+            except InputError as e:
+                yield e
+            b.update()
 
 
 def cmd_check(args):
-    try:
-        what, case = read_case(args.file)
-        if what == "scene":
-            print(json.dumps(scene_json(solve_scene_case(case, threads=args.threads))))
-            return OK
-        result = solve_case(case)
-    except InputError as e:
-        _error(f"{args.file}: {e}")
-        return BAD_INPUT
-    out = result_json(result)
-    out["bodies"] = None  # bodies in contact: for scene files only
-    print(json.dumps(out))
-    return OK
+    """One JSON result per file: for one file exactly the object of formats.md; for
+    several, one line per file in order, each with "file" first."""
+    files = args.file
+    status = OK
+    with contextlib.ExitStack() as stack:
+        if _distributed(args):
+            distributed, client = stack.enter_context(_cluster(args))
+            results = distributed.check_map(files, threads=args.threads, client=client,
+                                            progress=_progress(args))
+        else:
+            results = _check_serial(files, args.threads, _progress(args))
+        stack.callback(results.close)  # the bar ends (and the cluster's tasks) before more output
+        for path, result in zip(files, results):
+            if isinstance(result, InputError):
+                _error(f"{path}: {result}")
+                status = BAD_INPUT
+                continue
+            out = _check_json(result)
+            echo(json.dumps(out if len(files) == 1 else {"file": path, **out}))
+    return status
 
 
 def _contact_json(pair, c):
@@ -89,22 +147,41 @@ def cmd_index(args):
             ix = Index(bodies[stored])
         except InputError as e:
             raise InputError(f"bodies[{stored}].{e}") from None
+        others = [k for k in range(len(bodies)) if k != stored]
+        options = dict(time_tolerance=tolerance, all_contacts=args.all_contacts,
+                       threads=args.threads, broad_phase=args.broad_phase)
+        for k in others:  # every query motion checked first, as the serial run meets them
+            if bodies[k].motion is not None:
+                try:
+                    bodies[k].motion.validate()
+                except InputError as e:
+                    raise InputError(f"bodies[{k}].motion: {e}") from None
         lines = []
-        for k, body in enumerate(bodies):
-            if k == stored:
-                continue
-            try:
-                r = ix.query(body, time_tolerance=tolerance, all_contacts=args.all_contacts,
-                             threads=args.threads, broad_phase=args.broad_phase)
-            except InputError as e:
-                raise InputError(f"bodies[{k}].{e}" if str(e).startswith("motion:") else str(e)) from None
-            lines.append(json.dumps(index_json(names[stored], names[k], r, args.all_contacts)))
+        with contextlib.ExitStack() as stack:
+            queries = [bodies[k] for k in others]
+            if _distributed(args):
+                distributed, client = stack.enter_context(_cluster(args))
+                results = distributed.index_map(ix, queries, client=client,
+                                                progress=_progress(args), **options)
+            else:
+                results = _index_serial(ix, queries, options, _progress(args))
+            stack.callback(results.close)  # the bar ends before more output
+            for k, r in zip(others, results):
+                lines.append(json.dumps(index_json(names[stored], names[k], r,
+                                                   args.all_contacts)))
     except InputError as e:
         _error(f"{args.file}: {e}")
         return BAD_INPUT
     for line in lines:
         print(line)
     return OK
+
+
+def _index_serial(ix, queries, options, progress):
+    with bar(len(queries), "index queries", "query", progress) as b:
+        for q in queries:
+            yield ix.query(q, **options)
+            b.update()
 
 
 def cmd_corpus(args):
@@ -116,18 +193,32 @@ def cmd_corpus(args):
     if not files:
         _error(f"no *.json case under {', '.join(args.paths)}")
     failed = 0
-    for path in files:
-        reasons = check_case(path)
-        if reasons:
-            failed += 1
-            print(f"FAIL {path}: " + "; ".join(reasons))
+    with contextlib.ExitStack() as stack:
+        if _distributed(args) and files:
+            distributed, client = stack.enter_context(_cluster(args))
+            outcomes = distributed.corpus_map(files, client=client, progress=_progress(args))
+        else:
+            outcomes = _corpus_serial(files, _progress(args))
+        stack.callback(outcomes.close)  # the bar ends before the summary line
+        for path, reasons in zip(files, outcomes):
+            if reasons:
+                failed += 1
+                echo(f"FAIL {path}: " + "; ".join(reasons))
     print(f"{len(files) - failed} passed, {failed} failed")
     return FAILED if failed else OK
 
 
-def run_queries(paths, kind=None, as_json=False, out=print, root=None):
+def _corpus_serial(files, progress):
+    with bar(len(files), "corpus", "case", progress) as b:
+        for path in files:
+            yield check_case(path)
+            b.update()
+
+
+def run_queries(paths, kind=None, as_json=False, out=echo, root=None, args=None):
     """Runs benchmark CSV files (and folders of them); the exit status. Files are
-    named relative to root when given."""
+    named relative to root when given; args: the --workers / --scheduler / --quiet
+    options (None: serial, automatic progress bar)."""
     try:
         files = files_under(paths, "*.csv")
     except InputError as e:
@@ -137,18 +228,18 @@ def run_queries(paths, kind=None, as_json=False, out=print, root=None):
         _error(f"no *.csv file under {', '.join(map(str, paths))}")
         return BAD_INPUT
     reports = []
-    for path in files:
-        try:
-            report = run_file(path, kind)
-        except InputError as e:
-            _error(f"{path}: {e}")
-            return BAD_INPUT
-        if root is not None:
-            report.file = str(path.relative_to(root))
-        reports.append(report)
-        out(json.dumps(report.as_json()) if as_json else report.line())
-        for line in mismatch_lines(report):
-            print(line, file=sys.stderr if as_json else sys.stdout)
+    with contextlib.ExitStack() as stack:
+        progress = _progress(args)
+        if args is not None and _distributed(args):
+            distributed, client = stack.enter_context(_cluster(args))
+            outcomes = distributed.queries_map(files, kind, client=client, progress=progress)
+        else:
+            outcomes = _queries_serial(files, kind, progress)
+        stack.callback(outcomes.close)  # the bar ends before the total line
+        for path, report in zip(files, outcomes):
+            status = _report_queries(path, report, root, as_json, out, reports)
+            if status is not None:
+                return status
     if not as_json:
         n = sum(r.queries for r in reports)
         seconds = sum(r.seconds_per_query * r.queries for r in reports)
@@ -160,8 +251,32 @@ def run_queries(paths, kind=None, as_json=False, out=print, root=None):
     return FAILED if any(r.mismatches for r in reports) else OK
 
 
+def _queries_serial(files, kind, progress):
+    with bar(len(files), "queries", "file", progress) as b:
+        for path in files:
+            try:
+                yield run_file(path, kind)
+            except InputError as e:
+                yield InputError(f"{path}: {e}")
+            b.update()
+
+
+def _report_queries(path, report, root, as_json, out, reports):
+    """Prints one file's report (or its error: then returns the exit status)."""
+    if isinstance(report, InputError):
+        _error(str(report))
+        return BAD_INPUT
+    if root is not None:
+        report.file = str(path.relative_to(root))
+    reports.append(report)
+    out(json.dumps(report.as_json()) if as_json else report.line())
+    for line in mismatch_lines(report):
+        echo(line, file=sys.stderr if as_json else sys.stdout)
+    return None
+
+
 def cmd_queries(args):
-    return run_queries(args.files, args.kind, args.json)
+    return run_queries(args.files, args.kind, args.json, args=args)
 
 
 def cmd_demo(args):
@@ -190,15 +305,38 @@ def _threads(text):
     return n
 
 
+def _workers(text):
+    try:
+        n = int(text)
+    except ValueError:
+        n = 0
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {text!r}")
+    return n
+
+
+def _cluster_flags(c):
+    """--workers, --scheduler (polyccd.distributed) and --quiet."""
+    c.add_argument("--workers", type=_workers, metavar="N",
+                   help="run on a dask cluster: an embedded LocalCluster of N worker "
+                   "processes (with --scheduler: wait for N workers); needs dask[distributed]")
+    c.add_argument("--scheduler", metavar="ADDRESS",
+                   help="run on the running dask scheduler at ADDRESS (tcp://host:port)")
+    c.add_argument("--quiet", action="store_true",
+                   help="no progress bar (shown only when stdout and stderr are terminals)")
+
+
 def parser():
     p = argparse.ArgumentParser(
         prog="polyccd", description="Exact continuous collision detection of moving "
         "primitives (file formats: shared/design/formats.md).")
     p.add_argument("--version", action="version", version=f"polyccd {__version__}")
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
-    c = sub.add_parser("check", help="solve one scene or query file and print the JSON result")
-    c.add_argument("file", metavar="FILE.json")
+    c = sub.add_parser("check", help="solve one scene or query file and print the JSON result "
+                       "(several files: one JSON line per file, with \"file\")")
+    c.add_argument("file", nargs="+", metavar="FILE.json")
     c.add_argument("--threads", type=int, default=1, help="worker threads for scenes (default 1)")
+    _cluster_flags(c)
     c.set_defaults(run=cmd_check)
     c = sub.add_parser("index", help="index one body of a scene file and check every other "
                        "body against it (one JSON line per query body)")
@@ -211,10 +349,12 @@ def parser():
                    help="list every touching feature pair with its own first time")
     c.add_argument("--threads", type=_threads, default=1, help="worker threads, 1 to 1024 "
                    "(default 1)")
+    _cluster_flags(c)
     c.set_defaults(run=cmd_index)
     c = sub.add_parser("corpus", help="check every *.json case under the paths "
                        "against its expect block")
     c.add_argument("paths", nargs="+", metavar="PATH")
+    _cluster_flags(c)
     c.set_defaults(run=cmd_corpus)
     c = sub.add_parser("queries", help="run benchmark CSV files (or folders of them) "
                        "against their truth column")
@@ -222,6 +362,7 @@ def parser():
     c.add_argument("--json", action="store_true", help="one JSON object per file and line")
     c.add_argument("--kind", choices=CSV_KINDS, help="the query kind (default: from the "
                    "folder name vertex-face/ or edge-edge/)")
+    _cluster_flags(c)
     c.set_defaults(run=cmd_queries)
     c = sub.add_parser("demo", help="two real scenes (CGAL pinions, darunavir in HIV protease) "
                        "with PNGs, illustrative primitive answers, the benchmark summary")

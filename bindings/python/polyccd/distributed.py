@@ -1,0 +1,230 @@
+"""polyccd.distributed: batches of polyccd work mapped over a dask.distributed cluster.
+
+    import polyccd.distributed as pd
+    with pd.cluster(workers=2) as client:            # an embedded LocalCluster
+        for r in pd.index_map(body, queries, client=client):
+            ...                                        # SceneResults, in query order
+
+Every map splits its items into chunks, submits one task per chunk and yields the
+answers in the order of the items as they stream back (a tqdm bar on stderr when both
+stdout and stderr are terminals, see polyccd.apps._progress), each equal to the serial
+call's answer: the workers run the same library calls on the same exact inputs.
+
+Shipping: the C handles cannot be pickled, so bodies, motions and Index objects travel
+as their exact inputs (Mesh / Spheres / Motion / Body pickle that way, see
+polyccd._body) and are rebuilt on arrival. A body shared by every task (the Index's
+stored body) is scattered to every worker once (client.scatter(broadcast=True)) and
+each worker process builds its Index from it once, lazily on its first task, then
+keeps it (_cached_index). Files (CSV query sets, scene and query files, corpus cases)
+travel as paths: the workers must see the same files (a shared file system).
+
+A worker that dies mid-run loses nothing: the results not yet received are computed
+again by the scheduler on the remaining or restarted workers (every worker of an
+embedded cluster has a nanny that restarts it), and the broadcast body has a copy on
+every worker. Needs dask.distributed (`pip install polyccd[dask]`); `import polyccd`
+never imports this module.
+"""
+import os
+import threading
+import uuid
+from contextlib import contextmanager
+
+from ._errors import InputError
+from ._index import Index
+from ._scene import Body, _bodies_list
+from .apps._progress import bar
+
+try:
+    import distributed as _distributed
+except ImportError as _e:  # pragma: no cover - depends on the install
+    raise ImportError("polyccd.distributed needs dask.distributed: pip install "
+                      "'polyccd[dask]' (or dask[distributed])") from _e
+
+__all__ = ["cluster", "map_chunks", "index_map", "check_map", "corpus_map", "queries_map"]
+
+
+@contextmanager
+def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1):
+    """A dask.distributed Client for the maps, closed on exit when made here.
+
+    client: used as it is (not closed). scheduler: the address of a running scheduler
+    ("tcp://host:8786"); workers then means: wait until that many workers are
+    connected. Neither: an embedded LocalCluster of `workers` worker processes (default
+    os.cpu_count()), each with a nanny and threads_per_worker threads."""
+    if client is not None:
+        yield client
+        return
+    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
+                                or workers < 1):
+        raise InputError(f"workers: expected an integer >= 1, got {workers!r}")
+    if scheduler is not None:
+        with _distributed.Client(scheduler) as c:
+            if workers:
+                c.wait_for_workers(workers)
+            yield c
+        return
+    n = workers or os.cpu_count() or 1
+    with _distributed.LocalCluster(n_workers=n, threads_per_worker=threads_per_worker,
+                                   processes=True, dashboard_address=":0",
+                                   silence_logs=40) as local, \
+            _distributed.Client(local) as c:
+        yield c
+
+
+def _client(client):
+    if client is None:
+        try:
+            return _distributed.get_client()
+        except ValueError:
+            raise InputError("client: no dask.distributed Client given and none is active "
+                             "(use `with polyccd.distributed.cluster() as client:`)") from None
+    return client
+
+
+def _chunk_size(n, client, chunk_size):
+    if chunk_size is not None:
+        if isinstance(chunk_size, bool) or not isinstance(chunk_size, int) or chunk_size < 1:
+            raise InputError(f"chunk_size: expected an integer >= 1, got {chunk_size!r}")
+        return chunk_size
+    workers = max(1, len(client.scheduler_info().get("workers", {})))
+    return max(1, -(-n // (8 * workers)))  # about 8 chunks per worker: balance, few tasks
+
+
+def map_chunks(fn, items, *shared, client=None, chunk_size=None, progress=None,
+               desc="polyccd", unit="it"):
+    """Yields fn(chunk, *shared) item by item, in the order of items: items are cut into
+    chunks (lists), fn returns one answer per item of its chunk. shared: objects every
+    task needs, scattered once to every worker (fn gets them as they were). fn must be
+    importable by the workers (a module-level function)."""
+    client = _client(client)
+    items = list(items)
+    size = _chunk_size(len(items), client, chunk_size)
+    chunks = [items[k:k + size] for k in range(0, len(items), size)]
+    # One future per object (a list or dict given to scatter would be split up).
+    scattered = [client.scatter([s], broadcast=True, hash=False)[0] for s in shared]
+    futures = client.map(fn, chunks, *[[s] * len(chunks) for s in scattered], pure=False)
+    where = {f.key: k for k, f in enumerate(futures)}
+    done, next_chunk = {}, 0
+    progress_bar = bar(len(items), desc, unit, progress)
+    try:
+        for future, answers in _completed(futures):
+            k = where[future.key]
+            if len(answers) != len(chunks[k]):
+                raise InputError(f"{fn.__name__}: {len(answers)} answers for a chunk of "
+                                 f"{len(chunks[k])}")
+            done[k] = answers
+            progress_bar.update(len(answers))
+            while next_chunk in done:
+                yield from done.pop(next_chunk)
+                next_chunk += 1
+    finally:  # stopped early (an error, a consumer that stops): drop the rest
+        progress_bar.close()
+        pending = [f for f in futures if not f.done()]
+        if pending and client.status == "running":
+            client.cancel(pending)
+        del futures, scattered  # released by the scheduler when no future refers to them
+
+
+def _completed(futures):
+    """(future, result) as tasks finish, results gathered a batch at a time (all the
+    tasks finished since the last batch: one round trip, not one per task)."""
+    for batch in _distributed.as_completed(futures, with_results=True).batches():
+        yield from batch
+
+
+# ------------------------------------------------------------------- on-line index ---
+
+_INDEXES = {}  # per worker process: token -> Index (a few, the latest)
+_INDEX_LOCK = threading.Lock()
+_BUILDS = [0]  # Index objects built in this process (tests read it on the workers)
+
+
+def _cached_index(token, body):
+    """The Index of body for this token, built once per process (the first task of a
+    worker builds it; the others of any thread of that worker reuse it)."""
+    with _INDEX_LOCK:
+        ix = _INDEXES.get(token)
+        if ix is None:
+            while len(_INDEXES) >= 4:
+                _INDEXES.pop(next(iter(_INDEXES)))
+            ix = _INDEXES[token] = Index(body)
+            _BUILDS[0] += 1
+        return ix
+
+
+def _index_chunk(chunk, body, token, options):
+    """Index.query_many of the chunk (one C call; equal to Index.query of each)."""
+    return _cached_index(token, body).query_many(chunk, **options)
+
+
+def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **options):
+    """Yields index.query(q, **options) for every query Body, in order, computed on the
+    cluster (identical SceneResults, with their bodies attached again here).
+
+    index: a polyccd.Index or the Body to index (each worker builds its own Index once).
+    queries: Body objects, or (shape, motion) / (shape, motion, name) tuples (the
+    "(body, motion) pairs" of a batch). options: the keywords of Index.query."""
+    body = index.body if isinstance(index, Index) else index
+    if not isinstance(body, Body):
+        raise InputError(f"index: expected a polyccd.Index or polyccd.Body, got {type(index).__name__}")
+    queries = _bodies_list([q if isinstance(q, Body) else Body(*q) for q in queries])
+    token = uuid.uuid4().hex
+    answers = map_chunks(_index_chunk, queries, body, token, options, client=client,
+                         chunk_size=chunk_size, progress=progress, desc="index queries",
+                         unit="query")
+    for q, r in zip(queries, answers):
+        object.__setattr__(r, "bodies", (body, q))
+        yield r
+
+
+# ---------------------------------------------------------------------------- files ---
+
+def _check_chunk(paths, threads):
+    from .apps._corpus import read_case, solve_case, solve_scene_case
+    out = []
+    for path in paths:
+        try:
+            what, case = read_case(path)
+            out.append(solve_scene_case(case, threads=threads) if what == "scene"
+                       else solve_case(case))
+        except InputError as e:
+            out.append(e)
+    return out
+
+
+def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None):
+    """Yields, for each scene or query file, what `polyccd check FILE` computes: the
+    SceneResult or Result, or the InputError of a bad file (returned, not raised)."""
+    return map_chunks(_check_chunk, [str(p) for p in paths], threads, client=client,
+                      chunk_size=chunk_size, progress=progress, desc="check", unit="file")
+
+
+def _corpus_chunk(paths):
+    from .apps._corpus import check_case
+    return [check_case(p) for p in paths]
+
+
+def corpus_map(paths, *, client=None, chunk_size=None, progress=None):
+    """Yields check_case(path) (the reasons a corpus case fails; empty: it passes) for
+    every case file, in order."""
+    return map_chunks(_corpus_chunk, [str(p) for p in paths], client=client,
+                      chunk_size=chunk_size, progress=progress, desc="corpus", unit="case")
+
+
+def _queries_chunk(paths, kind):
+    from .apps._queries import run_file
+    out = []
+    for path in paths:
+        try:
+            out.append(run_file(path, kind))
+        except InputError as e:
+            out.append(InputError(f"{path}: {e}"))
+    return out
+
+
+def queries_map(paths, kind=None, *, client=None, chunk_size=1, progress=None):
+    """Yields run_file(path, kind) (a FileReport: counts against the truth column, the
+    time per query measured on the worker) for every CSV file, in order, or the
+    InputError of a bad file (returned, not raised)."""
+    return map_chunks(_queries_chunk, [str(p) for p in paths], kind, client=client,
+                      chunk_size=chunk_size, progress=progress, desc="queries", unit="file")
