@@ -14,6 +14,7 @@
 #include <string>
 
 #include "arith/errors.h"
+#include "arith/interval.h"
 #include "polyccd.h"
 
 namespace pccd::api {
@@ -42,6 +43,7 @@ inline std::string place(const std::string &name, std::initializer_list<size_t> 
 
 template <class F>
 int guard(const char *fn, F &&body) noexcept {
+  const arith::Round_to_nearest nearest;  // same roundings, same stages, in any caller mode
   try {
     return body();
   } catch (const arith::Input_error &e) {

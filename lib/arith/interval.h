@@ -67,6 +67,21 @@ class Nearest_scope {
   bool saved_;
 };
 
+// While alive, the thread computes in round-to-nearest; the caller's mode comes back
+// at the end. Every C entry point runs under one (lib/api/guard.h), so the certified
+// filters see the same roundings, take the same decisions and report the same stages
+// whatever mode the caller left (the answers themselves never depended on it).
+class Round_to_nearest {
+ public:
+  Round_to_nearest();
+  ~Round_to_nearest();
+  Round_to_nearest(const Round_to_nearest &) = delete;
+  Round_to_nearest &operator=(const Round_to_nearest &) = delete;
+
+ private:
+  int saved_;
+};
+
 // The point sum s = fl(a + b) with its exact rounding error (round-to-nearest only).
 inline Interval point_sum(double a, double b) {
   double s = a + b;

@@ -30,8 +30,8 @@
 // So the query collides, only at r, with the one feature (points 0, 1, 2, 3): the
 // staged solver's decide-only answer (solve.h, poly/earliest.h without a time: the
 // enclosure [0, 1] and the features that touch somewhere). It is used without a time
-// only: with one, the solver's bisection may take other split points where its own
-// interval counts are unsure, and its enclosure is kept as it is.
+// only; with one, the solver bisects (its midpoint bisection is canonical, so a time
+// computed here by the same midpoints would be the same enclosure: not done yet).
 #pragma once
 
 #include "pred/linear_filter.h"

@@ -1,5 +1,7 @@
 #include "util/thread_pool.h"
 
+#include <cfenv>
+
 namespace pccd::util {
 
 Thread_pool::Thread_pool(unsigned threads) {
@@ -45,6 +47,7 @@ void Thread_pool::work() {
       seen = generation_;
       ++busy_;
     }
+    if (std::fegetround() != round_) std::fesetround(round_);  // round_ set under mu_
     run_items();
     std::lock_guard<std::mutex> lock(mu_);
     if (--busy_ == 0) done_.notify_all();
@@ -61,6 +64,7 @@ void Thread_pool::parallel_for(size_t n, const std::function<void(size_t)> &fn) 
     std::lock_guard<std::mutex> lock(mu_);
     fn_ = &fn;
     n_ = n;
+    round_ = std::fegetround();
     next_ = finished_ = 0;
     error_ = nullptr;
     ++generation_;

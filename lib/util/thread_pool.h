@@ -19,7 +19,9 @@ class Thread_pool {
   Thread_pool &operator=(const Thread_pool &) = delete;
 
   // Runs fn(i) for i in [0, n), in parallel; returns when all are done. The first
-  // exception thrown by any fn is rethrown here (the others are dropped).
+  // exception thrown by any fn is rethrown here (the others are dropped). Every fn(i)
+  // runs in the caller's rounding mode (the workers take it on before each loop), so
+  // results never depend on which thread ran an item.
   void parallel_for(size_t n, const std::function<void(size_t)> &fn);
   unsigned size() const { return static_cast<unsigned>(workers_.size()) + 1; }
 
@@ -28,6 +30,7 @@ class Thread_pool {
   void run_items();
 
   std::vector<std::thread> workers_;
+  int round_ = 0;  // the caller's rounding mode (fegetround) for the current loop
   std::mutex mu_;
   std::condition_variable start_, done_;
   const std::function<void(size_t)> *fn_ = nullptr;
