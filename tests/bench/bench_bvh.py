@@ -164,14 +164,7 @@ def mesh_rows(polyccd, fcl, label, opts, scaling):
         row = {"variant": v}
         gc.disable()
         try:
-            for th in (1, 2):
-                ns, r = time_poly(polyccd, bodies, th, opts.repeat)
-                row[f"t{th}"] = ns
-                row["ans"], row["time"] = poly_answer(r)
-                row["stats"] = dict(r.stats)
-            ns, rb = time_poly(polyccd, bodies, 1, 1, "boxes")
-            row["boxes"] = ns
-            row["same"] = poly_answer(rb)[0] == row["ans"]
+            time_polyccd(polyccd, bodies, row, opts)
             if fcl:
                 oA = fcl.CollisionObject(bvh, fcl.Transform())
                 oB = fcl.CollisionObject(bvh, fcl.Transform(*start))
@@ -193,6 +186,18 @@ def mesh_rows(polyccd, fcl, label, opts, scaling):
             if m in row:
                 scaling.setdefault(("mesh " + v, m), []).append((n, row[m] / 1e6))
     return rows, hit_x
+
+
+def time_polyccd(polyccd, bodies, row, opts):
+    """polyccd's columns of a row: 1 and 2 threads (default broad phase), boxes, answers."""
+    for th in (1, 2):
+        ns, r = time_poly(polyccd, bodies, th, opts.repeat)
+        row[f"t{th}"] = ns
+        row["ans"], row["time"] = poly_answer(r)
+        row["stats"] = dict(r.stats)
+    ns, rb = time_poly(polyccd, bodies, 1, 1, "boxes")
+    row["boxes"] = ns
+    row["same"] = poly_answer(rb)[0] == row["ans"]
 
 
 def mol_rows(polyccd, fcl, label, opts, scaling):
@@ -223,14 +228,7 @@ def mol_rows(polyccd, fcl, label, opts, scaling):
         row = {"variant": v}
         gc.disable()
         try:
-            for th in (1, 2):
-                ns, r = time_poly(polyccd, bodies, th, opts.repeat)
-                row[f"t{th}"] = ns
-                row["ans"], row["time"] = poly_answer(r)
-                row["stats"] = dict(r.stats)
-            ns, rb = time_poly(polyccd, bodies, 1, 1, "boxes")
-            row["boxes"] = ns
-            row["same"] = poly_answer(rb)[0] == row["ans"]
+            time_polyccd(polyccd, bodies, row, opts)
             # FCL's rotation query loops over every swept-box pair in Python (30 s at 5k
             # atoms): skipped above FCL_ROT_MAX_ATOMS.
             if fcl and (shift is not None or len(C) <= FCL_ROT_MAX_ATOMS):
