@@ -129,3 +129,32 @@ def test_filter_answers_equal_the_staged_solver(kind, want_time, tolerance):
             bad += 1
             first = (i, got, ref)
     assert bad == 0, f"{bad} differ, first: {first}"
+
+
+@pytest.mark.parametrize("kind", ["vertex-face", "edge-edge"])
+def test_certified_hits_at_rational_times_are_exact(kind):
+    """Transversal hits whose first time is a rational a / (a + b) (a point, or a whole
+    edge, crossing the plane z = 0 of the others from z = a to z = -b): the filter's hit
+    path must hand the rational time to the solver's exact search (its modular test must
+    not call such a cubic irrational), so solve_linear reports it exactly, like the
+    staged solver and the oracle."""
+    for i in range(200):
+        rng = random.Random(f"linear-filter-rational:{kind}:{i}")
+        s = 2.0 ** rng.randint(-6, 3)
+        a, b = rng.randint(1, 40), rng.randint(1, 40)
+        want = Fraction(a, a + b)
+        if kind == "vertex-face":
+            u, w = rng.randint(1, 8), rng.randint(1, 8)  # inside the triangle (0,0) (20,0) (0,20)
+            tri = [[0.0, 0.0, 0.0], [20 * s, 0.0, 0.0], [0.0, 20 * s, 0.0]]
+            t0 = [[u * s, w * s, a * s]] + tri
+            t1 = [[u * s, w * s, -b * s]] + tri
+        else:
+            x = rng.randint(1, 19)  # b crosses the open edge a = (0,0)-(20,0) at (x, 0)
+            ea = [[0.0, 0.0, 0.0], [20 * s, 0.0, 0.0]]
+            t0 = ea + [[x * s, -s, a * s], [x * s, s, a * s]]
+            t1 = ea + [[x * s, -s, -b * s], [x * s, s, -b * s]]
+        got = polyccd.solve_linear(kind, t0, t1, time_tolerance="1e-6")
+        pts = [[[Fraction(p[k]), Fraction(q[k]) - Fraction(p[k])] for k in range(3)]
+               for p, q in zip(t0, t1)]
+        assert oracle.solve(kind, pts).first == want
+        assert got.collides and got.first_contact.exact == want, (i, got)

@@ -51,11 +51,11 @@ bool filtered(long kind, const double *p0, const double *p1, pred::Contact_resul
   return false;
 }
 
-// The hit certificate (pred/linear_crossing.h): the decide-only answer of a single
-// transversal crossing (with a time, the staged solver's enclosure is kept).
+// The hit certificate (pred/linear_crossing.h): the staged solver's answer of a single
+// transversal crossing, its time by the same midpoint bisection.
 bool certified_hit(long kind, const double *p0, const double *p1, const pred::Solve_options &opt,
                    pred::Contact_result &out) {
-  return !opt.want_time && pred::crossing_hit(static_cast<int>(kind), p0, p1, out);
+  return pred::crossing_hit(static_cast<int>(kind), p0, p1, opt, out);
 }
 
 // The staged solver on n points with finite coordinates.

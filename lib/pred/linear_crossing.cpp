@@ -1,5 +1,6 @@
 #include "pred/linear_crossing.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "arith/interval.h"
@@ -123,6 +124,100 @@ bool single_root_bracket(const Cubic_bernstein &f, Interval c[4], double &ta, do
   return false;
 }
 
+
+// The number of halvings of [0, 1] the solver's bisection makes at tolerance tol: the
+// least k >= 0 with 2^-k <= tol (it stops once hi - lo <= tol; the widths are 2^-k).
+// Cached per thread: a config's tolerance rarely changes between calls.
+int halvings(const arith::Rational &tol) {
+  thread_local arith::Rational last(-1);
+  thread_local int k = 0;
+  if (tol == last) return k;
+  k = 0;
+  arith::Rational w(1);
+  while (w > tol && k < 4000) {  // tol > 0 (validated by the API); 4000 > -log2 of any double
+    w /= 2;
+    ++k;
+  }
+  last = tol;
+  return k;
+}
+
+// x mod P for x = M 2^E (a finite double) times 2^-emin, emin <= E: an integer.
+long mod_scaled(double x, int emin, long P) {
+  if (x == 0) return 0;
+  int e;
+  const double fr = std::frexp(x, &e);             // x = fr 2^e, 0.5 <= |fr| < 1
+  const long long M = static_cast<long long>(std::ldexp(fr, 53));  // exact: 53 bits
+  long v = static_cast<long>(((M % P) + P) % P);
+  long b = 2, r = 1;
+  for (int n = e - 53 - emin; n > 0; n >>= 1, b = b * b % P)
+    if (n & 1) r = r * b % P;
+  return v * r % P;
+}
+
+// The cubic of features.h (VERTEX_FACE: det(f1 - f0, f2 - f0, v - f0); EDGE_EDGE:
+// det(a1 - a0, b0 - a0, b1 - a0)) certainly has no rational root. With every coordinate
+// scaled by 2^-emin (emin: the least exponent of their 53-bit integer mantissas) the
+// cubic G has integer coefficients, and G mod P is computed from the coordinates mod P.
+// A rational root p/q in lowest terms has q | lc(G), so for P not dividing the cubic
+// coefficient (then deg G = 3 and P does not divide lc(G)), p q^-1 is a root mod P; a
+// prime with no root mod P excludes rational roots. G is an integer multiple u F of the
+// solver's primitive polynomial F with P not dividing u, so this answers "irrational"
+// only when the solver's own test (pred/solve.cpp, poly::may_have_rational_root, the
+// same primes) does too: the answers and stages agree.
+bool cubic_irrational_roots(int kind, const double *p0, const double *p1) {
+  int emin = 1 << 20;
+  for (const double *p : {p0, p1})
+    for (int i = 0; i < 12; ++i)
+      if (p[i] != 0) {
+        int e;
+        std::frexp(p[i], &e);
+        emin = std::min(emin, e - 53);
+      }
+  if (emin == 1 << 20) return false;  // every coordinate zero
+  static const long primes[] = {11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53,
+                                59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107};
+  // The difference vectors (u, v, w) of the determinant as point indices (minuend,
+  // subtrahend): VERTEX_FACE points v f0 f1 f2, EDGE_EDGE a0 a1 b0 b1.
+  static const int vf[3][2] = {{2, 1}, {3, 1}, {0, 1}}, ee[3][2] = {{1, 0}, {2, 0}, {3, 0}};
+  const int(*d)[2] = kind == VERTEX_FACE ? vf : ee;
+  for (long P : primes) {
+    // Each difference vector component as a + b t mod P.
+    long a[3][3], b[3][3];
+    for (int r = 0; r < 3; ++r)
+      for (int x = 0; x < 3; ++x) {
+        const int i = d[r][0], j = d[r][1];
+        const long u0 = (mod_scaled(p0[3 * i + x], emin, P) - mod_scaled(p0[3 * j + x], emin, P) + P) % P;
+        const long u1 = (mod_scaled(p1[3 * i + x], emin, P) - mod_scaled(p1[3 * j + x], emin, P) + P) % P;
+        a[r][x] = u0;
+        b[r][x] = (u1 - u0 + P) % P;
+      }
+    // det by cofactors along row 0, polynomials in t of degree <= 3 mod P.
+    auto mul = [P](const long *x, int nx, const long *y, int ny, long *z) {
+      for (int i = 0; i < nx + ny - 1; ++i) z[i] = 0;
+      for (int i = 0; i < nx; ++i)
+        for (int j = 0; j < ny; ++j) z[i + j] = (z[i + j] + x[i] * y[j]) % P;
+    };
+    long g[4] = {0, 0, 0, 0};
+    for (int x = 0; x < 3; ++x) {
+      const int y = (x + 1) % 3, z = (x + 2) % 3;
+      const long r1y[2] = {a[1][y], b[1][y]}, r2z[2] = {a[2][z], b[2][z]};
+      const long r1z[2] = {a[1][z], b[1][z]}, r2y[2] = {a[2][y], b[2][y]};
+      long p1q[3], p2q[3], minor[3], term[4];
+      mul(r1y, 2, r2z, 2, p1q);
+      mul(r1z, 2, r2y, 2, p2q);
+      for (int k = 0; k < 3; ++k) minor[k] = (p1q[k] - p2q[k] + P) % P;
+      const long r0x[2] = {a[0][x], b[0][x]};
+      mul(r0x, 2, minor, 3, term);
+      for (int k = 0; k < 4; ++k) g[k] = (g[k] + term[k]) % P;
+    }
+    if (g[3] == 0) continue;
+    bool root = false;
+    for (long t = 0; t < P && !root; ++t) root = ((g[3] * t + g[2]) % P * t + g[1]) % P * t % P == (P - g[0]) % P;
+    if (!root) return true;
+  }
+  return false;
+}
 }  // namespace
 
 bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_bernstein &f) {
@@ -132,16 +227,33 @@ bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_b
   return single_root_bracket(f, c, ta, tb) && apart(kind, sides_on(kind, p0, p1, Interval(ta, tb)));
 }
 
-bool crossing_hit(int kind, const double *p0, const double *p1, Contact_result &out) {
+bool crossing_hit(int kind, const double *p0, const double *p1, const Solve_options &opt,
+                  Contact_result &out) {
   const Cubic_bernstein f = coplanarity_cubic(kind, p0, p1);  // not ok for other kinds
   Interval c[4];
   double ta, tb;
   if (!f.ok || !single_root_bracket(f, c, ta, tb) || !inside(kind, sides_on(kind, p0, p1, Interval(ta, tb))))
     return false;
+  double lo = 0, hi = 1;
+  if (opt.want_time) {
+    // The solver's midpoint bisection (poly/earliest.h) with its decisions: the only
+    // contact r is <= m exactly when f(m) has not f(0)'s sign (f(m) = 0 is left to the
+    // solver, as is any uncertain sign). The widths are powers of two, compared exactly.
+    const int s0 = certain_sign(c[0]);
+    for (int k = halvings(opt.tol); k > 0; --k) {
+      const double m = lo + (hi - lo) * 0.5;
+      const int s = certain_sign(eval(c, m));
+      if (s == 0) return false;
+      if (s != s0) hi = m; else lo = m;
+    }
+    // f(hi) != 0 (hi = 1 or a point of certain sign): r is inside, not exactly hi. The
+    // solver then proves r irrational or searches for a rational r.
+    if (opt.want_exact && !cubic_irrational_roots(kind, p0, p1)) return false;
+  }
   out.collides = true;
   out.exact = false;
-  out.lo = 0;
-  out.hi = 1;
+  out.lo = lo;
+  out.hi = hi;
   out.features.assign(1, Feature{kind, {{0, 1, 2, 3}}});
   out.stage = STAGE_INTERVAL;
   return true;

@@ -29,9 +29,8 @@
 //    no endpoint is on the other segment's line, so edge-edge alone touches).
 // So the query collides, only at r, with the one feature (points 0, 1, 2, 3): the
 // staged solver's decide-only answer (solve.h, poly/earliest.h without a time: the
-// enclosure [0, 1] and the features that touch somewhere). It is used without a time
-// only; with one, the solver bisects (its midpoint bisection is canonical, so a time
-// computed here by the same midpoints would be the same enclosure: not done yet).
+// enclosure [0, 1] and the features that touch somewhere), or with a time the same
+// enclosure as the solver's canonical midpoint bisection (see crossing_hit).
 #pragma once
 
 #include "pred/linear_filter.h"
@@ -43,8 +42,14 @@ namespace pccd::pred {
 bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_bernstein &f);
 
 // kind: VERTEX_FACE or EDGE_EDGE; p0, p1: finite doubles (linear_filter.h). True and the
-// decide-only answer in out (collides, [0, 1], the feature, stage interval; exact false)
-// when the certificate holds.
-bool crossing_hit(int kind, const double *p0, const double *p1, Contact_result &out);
+// staged solver's answer in out (collides, the feature, stage interval, exact false) when
+// the certificate holds and, with a time, when every step below certainly decides:
+//  - without a time: the enclosure [0, 1];
+//  - with a time: the solver's midpoint bisection (poly/earliest.h) by the sign of f at
+//    each midpoint, so the same enclosure; with want_exact, only when r is proved
+//    irrational by the solver's modular test run on f mod small primes from the doubles
+//    (linear_crossing.cpp), so the solver would stop there too.
+bool crossing_hit(int kind, const double *p0, const double *p1, const Solve_options &opt,
+                  Contact_result &out);
 
 }  // namespace pccd::pred
