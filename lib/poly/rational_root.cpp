@@ -117,9 +117,7 @@ Rational_root_result rational_first_contact(const std::vector<System<Rational>> 
 // about 1 - 1/e, so 24 primes leave about 1.5e-5 of irrational cases undetected,
 // which then take the complete path.)
 bool may_have_rational_root(const Poly<Rational> &F) {
-  static const unsigned long primes[] = {11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53,
-                                         59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107};
-  for (unsigned long P : primes) {
+  for (unsigned long P : kModularPrimes) {
     if (mpz_fdiv_ui(F.lc().get_num_mpz_t(), P) == 0) continue;
     std::vector<unsigned long> c;
     for (const Rational &x : F.c) c.push_back(mpz_fdiv_ui(x.get_num_mpz_t(), P));

@@ -25,6 +25,10 @@ struct Rational_root_result {
 // "may have one". Cheap: a few modular evaluations.
 bool may_have_rational_root(const Poly<Rational> &F);
 
+// The primes that test uses, in its order (a fast path reproducing it uses the same).
+constexpr unsigned long kModularPrimes[] = {11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53,
+                                            59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107};
+
 // active: the systems with a contact in (lo, hi]; none of them hits lo.
 Rational_root_result rational_first_contact(const std::vector<System<Rational>> &sys,
                                             const std::vector<size_t> &active,

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "arith/interval.h"
+#include "poly/rational_root.h"
 #include "pred/features.h"
 
 namespace pccd::pred {
@@ -175,13 +176,12 @@ bool cubic_irrational_roots(int kind, const double *p0, const double *p1) {
         emin = std::min(emin, e - 53);
       }
   if (emin == 1 << 20) return false;  // every coordinate zero
-  static const long primes[] = {11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53,
-                                59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103, 107};
   // The difference vectors (u, v, w) of the determinant as point indices (minuend,
   // subtrahend): VERTEX_FACE points v f0 f1 f2, EDGE_EDGE a0 a1 b0 b1.
   static const int vf[3][2] = {{2, 1}, {3, 1}, {0, 1}}, ee[3][2] = {{1, 0}, {2, 0}, {3, 0}};
   const int(*d)[2] = kind == VERTEX_FACE ? vf : ee;
-  for (long P : primes) {
+  for (const unsigned long up : poly::kModularPrimes) {
+    const long P = static_cast<long>(up);
     // Each difference vector component as a + b t mod P.
     long a[3][3], b[3][3];
     for (int r = 0; r < 3; ++r)
