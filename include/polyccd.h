@@ -184,7 +184,8 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
 /* Options of pccd_solve_linear_batch_d; initialise with pccd_batch_options_init. */
 typedef struct pccd_batch_options {
   size_t struct_size;  /* sizeof(pccd_batch_options), set by pccd_batch_options_init */
-  unsigned threads;    /* worker threads, 1 to 1024 (default 1); answers do not depend on it */
+  unsigned threads;    /* worker threads, 1 to 1024 (default 1); answers do not depend on it;
+                          at most the hardware's thread count are started */
 } pccd_batch_options;
 PCCD_API int pccd_batch_options_init(pccd_batch_options *opt);
 
@@ -494,7 +495,8 @@ PCCD_API int pccd_scene_body_count(const pccd_scene *s, size_t *count);
 
 typedef struct pccd_scene_options {
   size_t struct_size;     /* set by pccd_scene_options_init */
-  unsigned threads;       /* worker threads, >= 1 (default 1); answers do not depend on it */
+  unsigned threads;       /* worker threads, >= 1 (default 1); answers do not depend on it;
+                             at most the hardware's thread count are started */
   int all_contacts;       /* 0 (default): the feature pairs touching first;
                              1: every touching feature pair with its own first time */
   int broad_phase;        /* a pccd_broad_phase (default PCCD_BROAD_AUTO) */

@@ -4,8 +4,15 @@
 
 namespace pccd::util {
 
+unsigned usable_threads(unsigned requested) {
+  const unsigned hw = std::thread::hardware_concurrency();  // 0: unknown
+  const unsigned cap = hw == 0 ? 1 : hw;
+  return requested < 1 ? 1 : requested < cap ? requested : cap;
+}
+
 Thread_pool::Thread_pool(unsigned threads) {
-  for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this] { work(); });
+  const unsigned n = usable_threads(threads);
+  for (unsigned i = 1; i < n; ++i) workers_.emplace_back([this] { work(); });
 }
 
 Thread_pool::~Thread_pool() {
