@@ -120,6 +120,7 @@ sanitize: deps
 	+bash tests/c/run_sanitizers.sh
 
 include tests/bench/bench.mk
+include tests/fuzz/fuzz.mk
 
 bench: all $(BUILD)/bench_linear
 	$(BUILD)/bench_linear $(BENCH_LINEAR_ARGS)
@@ -133,4 +134,4 @@ demo: all
 
 # lib/libpolyccd.so: where builds before the move to build/ left the library.
 clean:
-	rm -rf $(BUILD) build-asan lib/libpolyccd.so bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c
+	rm -rf $(BUILD) build-asan build-fuzz build-tsan lib/libpolyccd.so bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c
