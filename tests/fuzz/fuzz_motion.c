@@ -5,7 +5,8 @@
  * pccd_motion_position_s, in any of the four rounding modes.
  *
  * Input (fuzz_input.h for u8, number, ...):
- *   u8 head   rounding mode = head % 4
+ *   u8 head   rounding mode = head % 4; bit 2: check that failed setters leave the
+ *             motion unchanged (a validate and a position before and after each call)
  *   then up to FZ_MAX_OPS ops until the input ends: u8 op; op & 0x80: the call gets a
  *   NULL array argument (the first one); op % 12:
  *     0/1   set_translation_d/_s: u8 axis (raw: 3 and up are out of range),
@@ -99,7 +100,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     size_t idx, n;
     /* the state before the call, to compare after a failed one (when cheap to get) */
     state before = {0, 0, NULL};
-    int compare = !costly && degree <= FZ_MAX_DEGREE && op % 12 != 10 && op % 12 != 11;
+    int compare = (head & 4) && !costly && degree <= FZ_MAX_DEGREE && op % 12 != 10 &&
+                  op % 12 != 11;
     if (compare) before = state_of(m);
     switch (op % 12) {
     case 0: case 1: case 2: case 3:

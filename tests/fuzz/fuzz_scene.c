@@ -18,7 +18,7 @@
  *               (taken % nv); for balls u8 n (% (FZ_MAX_BALLS + 1)), n * 3 + n numbers
  *     u8 motion % 7: 0 none (NULL), 1 the identity handle, 2 linear translation (6
  *               numbers), 3 axis rotation (8), 4 screw (9), 5 polynomial (3 translation
- *               axes of u8 % 3 + 1 numbers, then 4 rotation components of u8 % 2 + 1),
+ *               axes of u8 % 6 + 1 numbers, then 4 rotation components of u8 % 3 + 1),
  *               6 Bezier (12) then a body-side pose (4 + 3)
  *   A body or motion the library rejects is left out (the call's checks still apply).
  *
@@ -30,12 +30,13 @@
  * two-body scene's report, and query_many gives query's (bit 7).
  *
  * Cost limits (README.md): FZ_MAX_ELEMENTS triangles and vertices, FZ_MAX_BALLS balls,
- * polynomial degrees <= 2, and the number limits of fuzz_input.h.
+ * translations of degree <= 5 and rotations of degree <= 2 (the corpus's largest), and
+ * the number limits of fuzz_input.h.
  */
 #include "fuzz_input.h"
 
-#define FZ_MAX_ELEMENTS 8
-#define FZ_MAX_BALLS 4
+#define FZ_MAX_ELEMENTS 12
+#define FZ_MAX_BALLS 6
 #define FZ_MAX_BODIES 4
 
 typedef struct body_info {
@@ -210,12 +211,12 @@ static pccd_motion *read_motion(fz_in *in, int *ok)
     break;
   case 5:
     for (size_t a = 0; a < 3 && rc == PCCD_OK; ++a) {
-      size_t n = fz_u8(in) % 3 + 1;
+      size_t n = fz_u8(in) % 6 + 1;
       numbers(in, n, x, d, s);
       rc = FZ_RC(pccd_motion_set_translation_s, m, a, s, n);
     }
     for (size_t c = 0; c < 4 && rc == PCCD_OK; ++c) {
-      size_t n = fz_u8(in) % 2 + 1;
+      size_t n = fz_u8(in) % 3 + 1;
       numbers(in, n, x, d, s);
       rc = FZ_RC(pccd_motion_set_rotation_s, m, c, s, n);
     }
