@@ -34,7 +34,7 @@ CPP_TESTS := $(patsubst tests/cpp/%.cpp,$(BUILD)/%,$(sort $(wildcard tests/cpp/t
 # The system packages, one list shared with .ci/run (comments after # dropped).
 APT_PKGS := $(strip $(shell sed 's/\#.*//' .ci/apt-packages.txt))
 
-.PHONY: all deps lib venv check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind
+.PHONY: all deps lib venv check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind tsan
 
 # The entry points of a fresh machine (all, test, demo, bench, valgrind, sanitize) run
 # deps first, then make the rest in a sub-make, so nothing compiles while apt-get is still
@@ -118,6 +118,10 @@ valgrind: deps
 # ASan + UBSan build of the library and the C tests (tests/c/run_sanitizers.sh).
 sanitize: deps
 	+bash tests/c/run_sanitizers.sh
+
+# ThreadSanitizer build of the library and the concurrency test (tests/c/run_tsan.sh).
+tsan: deps
+	+bash tests/c/run_tsan.sh
 
 include tests/bench/bench.mk
 include tests/fuzz/fuzz.mk
