@@ -15,6 +15,7 @@ import re
 import shlex
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -64,7 +65,9 @@ def run(name, cmd, seconds, build, extra):
     args = cmd + flags(name) + [f"-max_total_time={seconds}", "-print_final_stats=1",
                                 f"-artifact_prefix={crashes}/{name}-"] + extra
     args += [str(corpus), str(seeds)]
+    start = time.monotonic()
     r = subprocess.run(args, capture_output=True, text=True, env=dict(os.environ))
+    took = max(1, round(time.monotonic() - start))  # a crash ends the run early
     log = build / f"{name}.log"
     log.write_text(r.stderr)
     m = re.search(r"stat::number_of_executed_units:\s*(\d+)", r.stderr)
@@ -75,8 +78,7 @@ def run(name, cmd, seconds, build, extra):
         execs = int(m.group(1))
     clean = r.returncode == 0
     what = "clean" if clean else f"FAILED (exit {r.returncode}; see {log} and {crashes}/)"
-    print(f"{name}: {seconds} s, {execs:,} executions ({execs // max(seconds, 1):,}/s), {what}",
-          flush=True)
+    print(f"{name}: {took} s, {execs:,} executions ({execs // took:,}/s), {what}", flush=True)
     return execs, clean
 
 
