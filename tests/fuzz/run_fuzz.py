@@ -24,7 +24,8 @@ ROOT = Path(__file__).resolve().parents[2]
 MAX_LEN = {"fuzz_query": 1024, "fuzz_motion": 1024, "fuzz_body": 2048, "fuzz_scene": 2048,
            "fuzz_numbers": 512, "fuzz_readers": 4096}
 TIMEOUT_S = 10       # one input running longer is a hang
-RSS_LIMIT_MB = 2048  # one input using more is a failure (ASan's shadow memory included)
+RSS_LIMIT_MB = 3072  # a process using more is a failure (ASan allocator caches included: fuzz_query
+                     # passed 2 GB after 99,572 executions with a live heap of 31 MB)
 
 
 def harnesses(build):
