@@ -42,7 +42,7 @@ CPP_TESTS := $(patsubst tests/cpp/%.cpp,$(BUILD)/%,$(sort $(wildcard tests/cpp/t
 # The system packages, one list shared with .ci/run (comments after # dropped).
 APT_PKGS := $(strip $(shell sed 's/\#.*//' .ci/apt-packages.txt))
 
-.PHONY: all deps lib venv install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind
+.PHONY: all deps lib venv install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind tsan
 
 # The entry points of a fresh machine (all, test, demo, bench, valgrind, sanitize) run
 # deps first, then make the rest in a sub-make, so nothing compiles while apt-get is still
@@ -167,7 +167,12 @@ valgrind: deps
 sanitize: deps
 	+bash tests/c/run_sanitizers.sh
 
+# ThreadSanitizer build of the library and the concurrency test (tests/c/run_tsan.sh).
+tsan: deps
+	+bash tests/c/run_tsan.sh
+
 include tests/bench/bench.mk
+include tests/fuzz/fuzz.mk
 
 bench: all $(BUILD)/bench_linear
 	$(BUILD)/bench_linear $(BENCH_LINEAR_ARGS)
@@ -183,4 +188,4 @@ demo: all
 
 # lib/libpolyccd.so: where builds before the move to build/ left the library.
 clean:
-	rm -rf $(BUILD) build-asan bindings/python/build lib/libpolyccd.so bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c
+	rm -rf $(BUILD) build-asan build-fuzz build-tsan bindings/python/build lib/libpolyccd.so bindings/python/polyccd/_pccd*.so bindings/python/polyccd/_pccd.c

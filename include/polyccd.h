@@ -39,8 +39,12 @@
  *    *needed and leaves buf untouched.
  *  - No entry point changes the floating-point environment (rounding mode) it was
  *    called with. No C++ exception ever crosses this interface.
- *  - Distinct handles may be used from different threads at the same time; one handle
- *    must not be used by two threads at once.
+ *  - Threads: distinct handles may be used from different threads at the same time. A
+ *    handle passed as const (a query or scene solved, an index queried, a body or
+ *    motion added to scenes or queried against, a result or report read) may be shared
+ *    by any number of threads at once, with the same answers as one thread gets
+ *    (tests/c/test_threads.c, also under ThreadSanitizer). A handle being changed (set,
+ *    solved into, freed) must not be used by another thread at the same time.
  *
  * Meaning of a contact (see shared/design/formats.md): closed time interval [0, 1],
  * closed triangles, segments and balls; touching (distance exactly 0) is a contact.

@@ -81,6 +81,7 @@ BAD_FILES = [
     ("dup.json", '{"format": "polyccd-query/1", "format": "polyccd-query/1"}', 'key "format" appears more than once'),
     ("expect.json", query(expect={"collides": "yes"}), "expect.collides: expected true or false"),
     ("latin1.json", "\xff", None),
+    ("deep.json", "[" * 100000, "invalid JSON: nested too deeply"),  # no RecursionError
 ]
 
 

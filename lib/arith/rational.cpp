@@ -77,8 +77,10 @@ Rational parse_rational(const std::string &text, const std::string &where) {
     size_t eb = i;
     while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
     if (eb == i) bad(text, where);
-    if (i - eb > 9) throw Limit_error(where + ": exponent of \"" + text + "\" is too large");
-    exp10 = std::stol(text.substr(eb, i - eb));
+    size_t sig = eb;  // leading zeros are no digits of the value: "1e0000000001" is 10
+    while (sig + 1 < i && text[sig] == '0') ++sig;
+    if (i - sig > 9) throw Limit_error(where + ": exponent of \"" + text + "\" is too large");
+    exp10 = std::stol(text.substr(sig, i - sig));
     if (eneg) exp10 = -exp10;
   }
   if (i != n) bad(text, where);

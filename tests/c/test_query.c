@@ -108,6 +108,9 @@ static void errors_set_coord(void)
   /* text limits: exponent beyond PCCD_MAX_EXPONENT, string beyond PCCD_MAX_NUMBER_CHARS */
   CHECK_ERR(pccd_query_set_coord_s(q, 0, 2, SARR("1e-100001"), 1), PCCD_ELIMIT, "points[0][2][0]: exponent");
   CHECK_ERR(pccd_query_set_coord_s(q, 0, 2, SARR("1e100001"), 1), PCCD_ELIMIT, "points[0][2][0]: exponent");
+  /* leading zeros of an exponent are none of its digits (bug: corpus vv-exponent-leading-zeros) */
+  CHECK_ERR(pccd_query_set_coord_s(q, 0, 2, SARR("1e-000000000100001"), 1), PCCD_ELIMIT,
+            "points[0][2][0]: exponent");
   longnum = (char *)malloc(PCCD_MAX_NUMBER_CHARS + 2);
   if (CHECK(longnum != NULL)) {
     memset(longnum, '7', PCCD_MAX_NUMBER_CHARS + 1);
@@ -121,6 +124,7 @@ static void errors_set_coord(void)
       q2 = mk(PCCD_VERTEX_FACE);
       CHECK_RC(API(pccd_query_set_coord_s(q2, 0, 0, c, 1)), PCCD_OK);
       CHECK_RC(API(pccd_query_set_coord_s(q2, 0, 0, SARR("1e-100000"), 1)), PCCD_OK);
+      CHECK_RC(API(pccd_query_set_coord_s(q2, 0, 0, SARR("1e-000000000100000"), 1)), PCCD_OK);
       FREE_Q(q2);
     }
     free(longnum);
