@@ -99,20 +99,27 @@ static inline void fz_text(fz_in *in, char *buf)
   in->n -= len;
 }
 
-/* Whether the library's number parser would read an exponent beyond FZ_MAX_EXP or a
- * text longer than FZ_MAX_TEXT from s (a conservative scan: any e/E followed by digits). */
-static inline int fz_text_cost_ok(const char *s)
+/* The largest decimal exponent written in s (any e/E followed by digits), saturated. */
+static inline long fz_max_exponent(const char *s)
 {
-  if (strlen(s) > FZ_MAX_TEXT) return 0;
+  long most = 0;
   for (const char *c = s; *c; ++c) {
     if (*c != 'e' && *c != 'E') continue;
     const char *d = c + 1;
     if (*d == '+' || *d == '-') ++d;
     long v = 0;
     for (; *d >= '0' && *d <= '9'; ++d)
-      if ((v = v * 10 + (*d - '0')) > FZ_MAX_EXP) return 0;
+      if (v < 1000000000L) v = v * 10 + (*d - '0');
+    if (v > most) most = v;
   }
-  return 1;
+  return most;
+}
+
+/* Whether the library's number parser would read an exponent beyond FZ_MAX_EXP or a
+ * text longer than FZ_MAX_TEXT from s (a conservative scan: any e/E followed by digits). */
+static inline int fz_text_cost_ok(const char *s)
+{
+  return strlen(s) <= FZ_MAX_TEXT && fz_max_exponent(s) <= FZ_MAX_EXP;
 }
 
 static inline void fz_number(fz_in *in, fz_num *x)

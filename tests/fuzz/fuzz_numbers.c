@@ -21,22 +21,6 @@
 
 #define FZ_NUM_MAX_EXP 2000
 
-/* The largest decimal exponent written in s (any e/E followed by digits), saturated. */
-static long max_exponent(const char *s)
-{
-  long most = 0;
-  for (const char *c = s; *c; ++c) {
-    if (*c != 'e' && *c != 'E') continue;
-    const char *d = c + 1;
-    if (*d == '+' || *d == '-') ++d;
-    long v = 0;
-    for (; *d >= '0' && *d <= '9'; ++d)
-      if (v < 1000000000L) v = v * 10 + (*d - '0');
-    if (v > most) most = v;
-  }
-  return most;
-}
-
 typedef struct pos_ctx {
   const pccd_motion *m;
   const char *const *p;
@@ -91,7 +75,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
   FZ_ASSERT(text != NULL);
   memcpy(text, data, size - 1);
   text[size - 1] = 0;
-  long e = max_exponent(text);
+  long e = fz_max_exponent(text);
   if (e >= FZ_NUM_MAX_EXP && e <= PCCD_MAX_EXPONENT) {
     free(text);
     return 0;
