@@ -1,5 +1,7 @@
 #include "boxes/box_source.h"
 
+#include <cmath>
+
 #include <algorithm>
 
 #include "boxes/boxes.h"
@@ -106,7 +108,7 @@ class Box_source final : public narrow::Candidate_source {
       for (size_t e = 0; e < all[s].size(); ++e) all[s][e] = static_cast<uint32_t>(e);
     }
     delta_ = std::min(ctx_.side(0).data->feature, ctx_.side(1).data->feature);
-    piece(0.0, 1.0, 0, all[0], all[1]);
+    piece(0.0, 1.0, 0, all[0], all[1], HUGE_VAL);
   }
 
  private:
@@ -130,7 +132,8 @@ class Box_source final : public narrow::Candidate_source {
     return h;
   }
 
-  void piece(double a, double b, int depth, std::vector<uint32_t> actA, std::vector<uint32_t> actB) {
+  void piece(double a, double b, int depth, std::vector<uint32_t> actA, std::vector<uint32_t> actB,
+             double parent_spread) {
     if (sink_->pruned(a)) return;
     ++stats_->pieces;
     Pose_piece pose[2] = {enclose_pose(ctx_.side(0), a, b), enclose_pose(ctx_.side(1), a, b)};
@@ -142,13 +145,14 @@ class Box_source final : public narrow::Candidate_source {
     if (actB.empty()) return;
     hullA = filter(0, pose[0], actA, hullB);
     if (actA.empty()) return;
-    const bool leaf = depth >= kMax_depth ||
-                      std::max(pose[0].spread, pose[1].spread) <= delta_ ||
-                      double(actA.size()) * double(actB.size()) <= kLeaf_pairs;
+    const double spread = std::max(pose[0].spread, pose[1].spread);
+    const bool leaf = depth >= kMax_depth || spread <= delta_ ||
+                      double(actA.size()) * double(actB.size()) <= kLeaf_pairs ||
+                      spread_stalled(depth, spread, parent_spread);
     if (leaf) return sink_->piece(a, b, intersect(pose, actA, actB));
     const double m = 0.5 * (a + b);  // exact: dyadic pieces
-    piece(a, m, depth + 1, actA, actB);
-    piece(m, b, depth + 1, std::move(actA), std::move(actB));
+    piece(a, m, depth + 1, actA, actB, spread);
+    piece(m, b, depth + 1, std::move(actA), std::move(actB), spread);
   }
 
   // The candidates of a leaf: feature pairs of the active elements whose boxes meet.

@@ -64,6 +64,19 @@ struct Pose_piece {
 
 Pose_piece enclose_pose(const Moving_body &b, double a, double t1);
 
+// Halving a time piece no longer shrinks the boxes once the motion's spread stops
+// shrinking with the width: its floor is then the rounding slack of large coordinates or
+// an enclosure's overestimate, and below it further halving only multiplies pieces. Two
+// fuzz findings ran 2^24 pieces that way (corpus/bodies/multi-body/
+// fuzz-spread-floor-*.json: a body 10^4 or 10^36 times larger than the other's typical
+// feature, so spread <= feature size never held). Past kFloor_depth, a piece whose spread
+// is above 3/4 of its parent's is final. A final piece lists every element pair whose
+// boxes meet on it, so stopping earlier never loses a candidate, only adds some.
+constexpr int kFloor_depth = 8;
+inline bool spread_stalled(int depth, double spread, double parent_spread) {
+  return depth >= kFloor_depth && spread > 0.75 * parent_spread;
+}
+
 // The box of the body-frame point p (doubles) with coordinate uncertainty e (the same
 // for each coordinate) over the piece.
 Box point_box(const Pose_piece &pose, const std::array<double, 3> &p, double e);

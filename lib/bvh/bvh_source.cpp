@@ -1,5 +1,7 @@
 #include "bvh/bvh_source.h"
 
+#include <cmath>
+
 #include <algorithm>
 
 #include "boxes/boxes.h"
@@ -55,7 +57,7 @@ class Bvh_source final : public narrow::Candidate_source {
     stats_ = &stats;
     pool_ = &pool;
     delta_ = std::min(ctx_.side(0).data->feature, ctx_.side(1).data->feature);
-    piece(0.0, 1.0, 0, {{0, 0}});
+    piece(0.0, 1.0, 0, {{0, 0}}, HUGE_VAL);
   }
 
  private:
@@ -129,13 +131,13 @@ class Bvh_source final : public narrow::Candidate_source {
     }
   }
 
-  void piece(double a, double b, int depth, std::vector<Node_pair> front) {
+  void piece(double a, double b, int depth, std::vector<Node_pair> front, double parent_spread) {
     if (sink_->pruned(a)) return;
     ++stats_->pieces;
     const Pose_piece pose[2] = {boxes::enclose_pose(ctx_.side(0), a, b),
                                 boxes::enclose_pose(ctx_.side(1), a, b)};
     const double spread = std::max(pose[0].spread, pose[1].spread);
-    bool final = depth >= kMax_depth || spread <= delta_;
+    bool final = depth >= kMax_depth || spread <= delta_ || boxes::spread_stalled(depth, spread, parent_spread);
     if (!final && front.size() <= kLeaf_pairs) {
       final = true;
       for (const Node_pair &p : front) final = final && H_[0]->nodes[p.x].leaf() && H_[1]->nodes[p.y].leaf();
@@ -148,8 +150,8 @@ class Bvh_source final : public narrow::Candidate_source {
     }
     wait.insert(wait.end(), leaves.begin(), leaves.end());
     const double m = 0.5 * (a + b);  // exact: dyadic pieces
-    piece(a, m, depth + 1, wait);
-    piece(m, b, depth + 1, std::move(wait));
+    piece(a, m, depth + 1, wait, spread);
+    piece(m, b, depth + 1, std::move(wait), spread);
   }
 
   // The candidates of a final piece: the feature pairs of its element pairs.

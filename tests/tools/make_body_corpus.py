@@ -758,6 +758,23 @@ case(MO, "bug-boxes-pose-unset-offset-radius",
      F(2, 3))
 
 
+
+# Fuzz findings (tests/fuzz): the boxes and bvh broad phases split time pieces 2^24 times
+# when the motion's spread never fell below the other body's feature size (a body of
+# point-triangles next to a 20,000-unit triangle; coordinates up to 2e36, whose rounding
+# slack floors the spread); fixed by boxes::spread_stalled. The scenes are the fuzzers'
+# inputs as written (tests/fuzz/crashes/scenes/); the hand answers: the cubes A and B
+# touch along x = 1 at t = 0; in the second, the mutated body C still touches B and D.
+def fuzz_scene(name):
+    with open(os.path.join(TESTS, "fuzz", "crashes", "scenes", name + ".json")) as fh:
+        return json.load(fh)["bodies"]
+
+
+case(MB, "fuzz-spread-floor-degenerate-triangles", fuzz_scene("spread-floor-degenerate-triangles"),
+     F(0), pairs=[["A", "B"]])
+case(MB, "fuzz-spread-floor-huge-coordinates", fuzz_scene("spread-floor-huge-coordinates"),
+     F(0), pairs=[["A", "B"], ["B", "C"], ["C", "D"]])
+
 # ---------------------------------------------------------------- building files
 
 def expectation(res, n_bodies):
