@@ -11,7 +11,8 @@ try:
     from ._pccd import ffi as _ffi, lib as _lib
 except ImportError as _e:  # pragma: no cover - depends on the build
     raise ImportError("polyccd: the C extension polyccd._pccd is missing or cannot load "
-                      f"libpolyccd ({_e}); run `make venv` at the repository root") from _e
+                      f"libpolyccd ({_e}); reinstall it (`pip install ./bindings/python` from a "
+                      "checkout, or `make venv` at the repository root for the dev venv)") from _e
 
 
 def _check_version():
@@ -20,8 +21,8 @@ def _check_version():
     header = _ffi.string(_lib.PCCD_VERSION_STRING).decode()
     if not loaded == header == __version__:
         raise ImportError(f"polyccd {__version__}: the loaded libpolyccd is {loaded} and "
-                          f"the extension was built with polyccd.h {header}; rebuild with "
-                          "`make venv`")
+                          f"the extension was built with polyccd.h {header}; reinstall "
+                          "(`pip install ./bindings/python`, or `make venv` in a checkout)")
 
 
 _check_version()
