@@ -50,6 +50,22 @@ inline double round_up(double x) {
 }
 inline double round_down(double x) { return -round_up(-x); }
 
+// The midpoint m of [lo, hi] when it is a double, in any rounding mode; false otherwise.
+// For the bisections of [0, 1]: lo and hi are consecutive multiples of w = hi - lo, a
+// power of two (a computed width that is no power of two is refused; then hi - lo and
+// w / 2 are exact). The true midpoint lo + w / 2 is a multiple of w / 2: if w / 2 is at
+// least the spacing of the doubles there, it is a
+// double and the sum is exact; otherwise lo and hi are adjacent doubles, and the sum
+// rounds to one of them in every mode. So a sum strictly between them is the midpoint
+// (widths under about 2^-53 near t = 1 have none).
+inline bool exact_midpoint(double lo, double hi, double &m) {
+  if (!(0 <= lo && lo < hi && hi <= 1)) return false;
+  int e;
+  if (std::frexp(hi - lo, &e) != 0.5) return false;  // not a power of two
+  m = lo + (hi - lo) * 0.5;
+  return lo < m && m < hi;
+}
+
 // Whether this thread runs in round-to-nearest (set by Nearest_scope).
 inline thread_local bool tl_nearest = false;
 inline bool nearest_mode() { return tl_nearest; }

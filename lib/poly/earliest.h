@@ -42,12 +42,15 @@ struct Search_result {
 // The bisection always splits at the midpoint, so where it ends is a function of t*
 // and tol alone: every stage (intervals, exact rationals, the isolated-root sign test,
 // the linear fast path of lib/pred) that decides each step with certainty reaches the
-// same enclosure, whatever the rounding mode or the order of stages. With intervals the
-// midpoint of two doubles is exact (the bisection never goes below tol >> 2^-1000).
+// same enclosure, whatever the rounding mode or the order of stages. With intervals a
+// midpoint that is no double (widths below about 2^-53, for tolerances that small) is
+// Uncertain: the exact stage takes the bisection over from there.
 template <class NT> NT midpoint(const NT &lo, const NT &hi);
 template <> inline Rational midpoint(const Rational &lo, const Rational &hi) { return (lo + hi) / 2; }
 template <> inline Interval midpoint(const Interval &lo, const Interval &hi) {
-  return Interval(lo.lo + (hi.lo - lo.lo) * 0.5);
+  double m;
+  if (!arith::exact_midpoint(lo.lo, hi.lo, m)) throw arith::Uncertain{};
+  return Interval(m);
 }
 
 // Where a bisection stands after its last certain step: lo < t* <= hi and `active`

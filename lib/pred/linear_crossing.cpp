@@ -135,7 +135,9 @@ int halvings(const arith::Rational &tol) {
   if (tol == last) return k;
   k = 0;
   arith::Rational w(1);
-  while (w > tol && k < 4000) {  // tol > 0 (validated by the API); 4000 > -log2 of any double
+  // tol > 0 (validated by the API). The cap is never reached in effect: the double
+  // bisection stops near widths of 2^-53 (exact_midpoint) and leaves the rest to the solver.
+  while (w > tol && k < 4000) {
     w /= 2;
     ++k;
   }
@@ -241,7 +243,8 @@ bool crossing_hit(int kind, const double *p0, const double *p1, const Solve_opti
     // solver, as is any uncertain sign). The widths are powers of two, compared exactly.
     const int s0 = certain_sign(c[0]);
     for (int k = halvings(opt.tol); k > 0; --k) {
-      const double m = lo + (hi - lo) * 0.5;
+      double m;
+      if (!arith::exact_midpoint(lo, hi, m)) return false;  // the solver goes on exactly
       const int s = certain_sign(eval(c, m));
       if (s == 0) return false;
       if (s != s0) hi = m; else lo = m;
