@@ -23,6 +23,7 @@
 #include "poly/gcd.h"
 #include "poly/integer.h"
 #include "poly/subdivide.h"
+#include "util/work_budget.h"
 
 namespace pccd::poly {
 
@@ -51,6 +52,9 @@ Poly<NT> deflate_at_one(const Poly<NT> &p) {
 template <class NT>
 long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT &a,
                  const NT &b, bool filters = true) {
+  // One work step per exact count (util/work_budget.h): on numbers of thousands of
+  // digits a count is the unit between root-search steps that takes time.
+  if constexpr (std::is_same<NT, Rational>::value) util::work_step();
   if (f.degree() < 1) {
     if (f.c.empty()) throw arith::Internal_error("count_roots: f is identically zero");
     return 0;  // a nonzero constant has no root

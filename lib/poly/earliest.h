@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "poly/isolated_root.h"
+#include "util/work_budget.h"
 #include "poly/system.h"
 
 namespace pccd::poly {
@@ -133,6 +134,7 @@ Search_result<NT> earliest_contact(const std::vector<System<NT>> &sys,
   };
   save();
   while (wider_than(lo, hi, opt.tol)) {
+    util::work_step();  // one bisection step (util/work_budget.h)
     if (bounded && past(lo, opt.until)) return Search_result<NT>();  // first contact after `until`
     for (size_t i : active)
       if (!isolated[i] && sys[i].kind != K::zero_f) isolated[i] = iso[i].isolate(sys[i].f, lo, hi);

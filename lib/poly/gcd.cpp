@@ -1,5 +1,7 @@
 #include "poly/gcd.h"
 
+#include "poly/integer.h"
+
 #include <utility>
 
 namespace pccd::poly {
@@ -11,11 +13,22 @@ static Poly<Rational> monic(Poly<Rational> p) {
   return p;
 }
 
+// The primitive remainder sequence: every polynomial is kept a primitive integer
+// polynomial with a positive leading coefficient (poly/integer.h), so the remainders
+// are positive multiples of the Euclidean ones and end in a multiple of the gcd.
+// Euclid over Q instead canonicalizes a fraction at every coefficient operation, and
+// its numbers grow far beyond the primitive ones (a gcd of two degree-8 polynomials of
+// 20,000-bit coefficients took seconds that way, and the root counts ask for many).
 Poly<Rational> gcd(Poly<Rational> a, Poly<Rational> b) {
+  if (a.c.empty()) return monic(std::move(b));
+  if (b.c.empty()) return monic(std::move(a));
+  a = primitive_monic_sign(a);
+  b = primitive_monic_sign(b);
+  if (a.degree() < b.degree()) std::swap(a, b);
   while (!b.c.empty()) {
-    Poly<Rational> r = rem(std::move(a), b);
-    a = monic(std::move(b));  // keeps coefficient growth in check
-    b = std::move(r);
+    Poly<Rational> r = prem_positive(std::move(a), b);  // primitive, c * (a mod b)
+    a = std::move(b);
+    b = primitive_monic_sign(r);
   }
   return monic(std::move(a));
 }

@@ -45,4 +45,30 @@ Poly<Rational> prem_positive(Poly<Rational> a, const Poly<Rational> &b) {
   return primitive_positive(a);
 }
 
+arith::Integer scaled_value(const Poly<Rational> &F, const Rational &t) {
+  const int n = F.degree();
+  if (n < 0) return 0;
+  arith::Integer v = F.c[n].get_num(), term;
+  const arith::Integer &p = t.get_num();
+  const mpz_srcptr den = t.get_den_mpz_t();
+  if (mpz_popcount(den) == 1) {  // q = 2^j: q^(n - i) is a shift by j (n - i)
+    const mp_bitcnt_t j = mpz_scan1(den, 0);
+    for (int i = n - 1; i >= 0; --i) {
+      v *= p;
+      mpz_mul_2exp(term.get_mpz_t(), F.c[i].get_num_mpz_t(), j * mp_bitcnt_t(n - i));
+      v += term;
+    }
+    return v;
+  }
+  arith::Integer qpow = 1;
+  const arith::Integer q = t.get_den();
+  for (int i = n - 1; i >= 0; --i) {
+    qpow *= q;
+    v *= p;
+    term = F.c[i].get_num() * qpow;
+    v += term;
+  }
+  return v;
+}
+
 }  // namespace pccd::poly

@@ -14,7 +14,7 @@
 //
 // Exact path: f is kept as a positive integer multiple (same signs), evaluated at the
 // bisection's dyadic points k / 2^j as the integer sum of c_i k^i 2^(j (n - i)), so GMP
-// never reduces a fraction; other points fall back to rational evaluation.
+// never reduces a fraction (poly::scaled_value).
 #pragma once
 #include <type_traits>
 
@@ -66,22 +66,7 @@ class Isolated_root {
   }
 
  private:
-  int sign_at_dyadic(const Rational &t) const {
-    const mpz_srcptr den = t.get_den_mpz_t();
-    if (mpz_popcount(den) != 1) return sgn(f_.eval(t));  // not k / 2^j
-    const mp_bitcnt_t j = mpz_scan1(den, 0);
-    const int n = f_.degree();
-    // v = c_n; v = v k + c_i 2^(j (n - i)) for i = n - 1 .. 0 (Horner on the
-    // homogenized polynomial 2^(j n) f(k / 2^j)).
-    mpz_class v = f_.c[n].get_num(), term;
-    const mpz_class &k = t.get_num();
-    for (int i = n - 1; i >= 0; --i) {
-      v *= k;
-      mpz_mul_2exp(term.get_mpz_t(), f_.c[i].get_num_mpz_t(), j * mp_bitcnt_t(n - i));
-      v += term;
-    }
-    return sgn(v);
-  }
+  int sign_at_dyadic(const Rational &t) const { return poly::sign_at(f_, t); }
 
   Poly<NT> f_;
   int sign_lo_ = 0;

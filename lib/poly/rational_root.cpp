@@ -1,6 +1,12 @@
 #include "poly/rational_root.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "arith/errors.h"
 #include "poly/gcd.h"
+#include "poly/integer.h"
+#include "util/work_budget.h"
 
 namespace pccd::poly {
 namespace {
@@ -12,20 +18,82 @@ struct Candidate {
   Rational a, b;
 };
 
-int sign_at(const Poly<Rational> &F, const Rational &t) { return sgn(F.eval(t)); }
-
-// Halves (a, b) keeping the only root of F inside; returns true and sets r when the
-// midpoint is that root.
-bool sign_bisect(const Poly<Rational> &F, Rational &a, Rational &b, Rational &r) {
-  Rational m = (a + b) / 2;
-  int sm = sign_at(F, m);
-  if (sm == 0) {
-    r = m;
-    return true;
-  }
-  if (sm == sign_at(F, a)) a = m; else b = m;
-  return false;
+// |F(t)| scaled by the positive factor q_a^n q_b^n / q_t^n... that is: for the two
+// ends of an interval, |F(a)| : |F(b)| = |v_a| q_b^n : |v_b| q_a^n with v = q^n F
+// (poly::scaled_value), all integers.
+arith::Integer cross_scaled(const arith::Integer &v, const Rational &other, int n) {
+  arith::Integer qn;
+  mpz_pow_ui(qn.get_mpz_t(), other.get_den_mpz_t(), static_cast<unsigned long>(n));
+  return abs(v) * qn;
 }
+
+// Refines an interval (a, b) holding exactly one root r of F, a simple one, with
+// F(a), F(b) nonzero (so of opposite signs), by quadratic interval refinement
+// (J. Abbott, "Quadratic interval refinement for real roots", 2006): split (a, b) into
+// N = 2^k equal pieces, guess the piece holding r from the secant through (a, F(a)) and
+// (b, F(b)), and test the guess by the exact signs of F at the piece's ends. A right
+// guess makes the piece the new interval and squares N (near a simple root the secant's
+// error shrinks quadratically, so the bits gained per step double); a wrong one still
+// keeps the side of the piece that holds r and halves k. Each step at least halves the
+// width, so it is never slower than bisection, and it needs about log log (1 / width)
+// steps instead of log (1 / width) once the secant is accurate. Every decision is an
+// exact sign, so the result does not depend on the doubles that make the guesses.
+class Refiner {
+ public:
+  Refiner(const Poly<Rational> &F, Rational a, Rational b)
+      : F_(F), a_(std::move(a)), b_(std::move(b)) {
+    va_ = scaled_value(F_, a_);
+    vb_ = scaled_value(F_, b_);
+    sa_ = sgn(va_);
+    if (sa_ == 0 || sgn(vb_) == 0 || sgn(vb_) == sa_)
+      throw arith::Internal_error("Refiner: F must have opposite nonzero signs at a and b");
+  }
+  const Rational &a() const { return a_; }
+  const Rational &b() const { return b_; }
+
+  // One step; true when an evaluation point is the root itself (then *root is it and the
+  // interval is left as it was).
+  bool step(Rational *root) {
+    util::work_step();
+    // The secant meets zero at a + lambda (b - a), lambda = |F(a)| / (|F(a)| + |F(b)|);
+    // the guess is piece j = floor(lambda N), computed in integers (doubles would cap
+    // the guesses at 53 bits, and the refinement at linear speed beyond them).
+    const int n = F_.degree();
+    const arith::Integer A = cross_scaled(va_, b_, n), B = cross_scaled(vb_, a_, n);
+    const arith::Integer pieces = arith::Integer(1) << k_;
+    arith::Integer j = A << k_;
+    mpz_fdiv_q(j.get_mpz_t(), j.get_mpz_t(), arith::Integer(A + B).get_mpz_t());
+    if (j >= pieces) j = pieces - 1;
+    const Rational w = (b_ - a_) / Rational(pieces);
+    Rational left = a_ + Rational(j) * w, right = left + w;
+    arith::Integer vl = sgn(j) == 0 ? va_ : scaled_value(F_, left);
+    arith::Integer vr = j + 1 == pieces ? vb_ : scaled_value(F_, right);
+    if (sgn(vl) == 0 || sgn(vr) == 0) {
+      *root = sgn(vl) == 0 ? left : right;
+      return true;
+    }
+    if (sgn(vl) == sa_ && sgn(vr) != sa_) {  // the guess holds r
+      a_ = std::move(left), va_ = std::move(vl);
+      b_ = std::move(right), vb_ = std::move(vr);
+      k_ = std::min<unsigned long>(2 * k_, kMaxLog2Pieces);
+      return false;
+    }
+    if (sgn(vl) != sa_) b_ = std::move(left), vb_ = std::move(vl);  // r < left
+    else a_ = std::move(right), va_ = std::move(vr);                 // r > right
+    k_ = std::max<unsigned long>(k_ / 2, 1);
+    return false;
+  }
+
+ private:
+  // N never needs more bits than the interval's end points will get; 2^20 pieces per
+  // step is far beyond the million bits a step could then gain.
+  static constexpr unsigned long kMaxLog2Pieces = 1ul << 20;
+  const Poly<Rational> &F_;
+  Rational a_, b_;
+  arith::Integer va_, vb_;
+  int sa_ = 0;
+  unsigned long k_ = 2;  // N = 2^k pieces
+};
 
 // The first contact of system s in (lo, hi) (s has one there and does not hit hi
 // earlier than its interior contacts).
@@ -36,6 +104,7 @@ Candidate first_root(const System<Rational> &s, Rational a, Rational b) {
   // 1. Shrink until (a, b) holds only the first contact, as the only root of F, with
   //    F nonzero at both ends.
   while (!(count_roots(c.F, none, a, b) == 1 && sign_at(c.F, a) != 0 && sign_at(c.F, b) != 0)) {
+    util::work_step();
     Rational m = (a + b) / 2;
     long left = s.count_open(a, m);
     if (left == 0 && s.hits(m)) {
@@ -52,12 +121,15 @@ Candidate first_root(const System<Rational> &s, Rational a, Rational b) {
   }
   // 2. Narrow below 1/L, then test the only multiple of 1/L inside.
   const Rational L = abs(c.F.lc());
-  while ((b - a) * L >= 1) {
-    if (sign_bisect(c.F, a, b, c.r)) {
+  Refiner ref(c.F, a, b);
+  while ((ref.b() - ref.a()) * L >= 1) {
+    if (ref.step(&c.r)) {
       c.rational = true;
       return c;
     }
   }
+  a = ref.a();
+  b = ref.b();
   Rational La = a * L;
   arith::Integer k = La.get_num() / La.get_den() + 1;  // floor(L a) + 1 (a >= 0)
   Rational cand = Rational(k) / L;
@@ -99,9 +171,11 @@ Rational_root_result rational_first_contact(const std::vector<System<Rational>> 
   // An irrational root below the best rational one makes t* irrational.
   for (Candidate &c : cands) {
     if (c.rational) continue;
-    Rational unused;
-    while (!(c.b < best || c.a > best)) sign_bisect(c.F, c.a, c.b, unused);
-    if (c.b < best) return out;
+    Rational unused;  // F has no rational root in (a, b): no step lands on it
+    Refiner ref(c.F, c.a, c.b);
+    while (!(ref.b() < best || ref.a() > best))
+      if (ref.step(&unused)) throw arith::Internal_error("rational_first_contact: a rational root of F");
+    if (ref.b() < best) return out;
   }
   out.exact = true;
   out.t = best;

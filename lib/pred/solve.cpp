@@ -4,6 +4,7 @@
 #include "poly/integer.h"
 #include "poly/rational_root.h"
 #include "pred/static_contact.h"
+#include "util/work_budget.h"
 
 namespace pccd::pred {
 
@@ -166,6 +167,7 @@ Contact_result solve(const Query_data<Interval> &iq,
                      const Solve_options &opt) {
   Contact_result out;
   const arith::Nearest_scope nearest;  // lets intervals certify exact operations
+  util::work_step();  // one query (util/work_budget.h)
   if (bounds_separate(iq)) {
     out.stage = STAGE_BOUNDS;
     return out;

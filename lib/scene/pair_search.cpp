@@ -148,6 +148,7 @@ class Driver final : public narrow::Candidate_sink {
         }
       } else {
         s->result = ctx_.solve(fresh[i], o);
+        util::work_solved();  // progress for a work-limit message (util/work_budget.h)
       }
       res[i] = std::move(s);
     });

@@ -55,7 +55,10 @@ void Thread_pool::work() {
       ++busy_;
     }
     if (std::fegetround() != round_) std::fesetround(round_);  // round_ set under mu_
-    run_items();
+    {
+      const Budget_scope scope(budget_);  // the caller's work limits (budget_ set under mu_)
+      run_items();
+    }
     std::lock_guard<std::mutex> lock(mu_);
     if (--busy_ == 0) done_.notify_all();
   }
@@ -72,6 +75,7 @@ void Thread_pool::parallel_for(size_t n, const std::function<void(size_t)> &fn) 
     fn_ = &fn;
     n_ = n;
     round_ = std::fegetround();
+    budget_ = current_budget();
     next_ = finished_ = 0;
     error_ = nullptr;
     ++generation_;

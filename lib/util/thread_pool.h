@@ -9,6 +9,8 @@
 #include <thread>
 #include <vector>
 
+#include "util/work_budget.h"
+
 namespace pccd::util {
 
 // min(requested, the hardware's thread count), at least 1.
@@ -26,8 +28,9 @@ class Thread_pool {
 
   // Runs fn(i) for i in [0, n), in parallel; returns when all are done. The first
   // exception thrown by any fn is rethrown here (the others are dropped). Every fn(i)
-  // runs in the caller's rounding mode (the workers take it on before each loop), so
-  // results never depend on which thread ran an item.
+  // runs in the caller's rounding mode and under the caller's work budget
+  // (work_budget.h; the workers take both on before each loop), so results never
+  // depend on which thread ran an item.
   void parallel_for(size_t n, const std::function<void(size_t)> &fn);
   unsigned size() const { return static_cast<unsigned>(workers_.size()) + 1; }
 
@@ -37,6 +40,7 @@ class Thread_pool {
 
   std::vector<std::thread> workers_;
   int round_ = 0;  // the caller's rounding mode (fegetround) for the current loop
+  Work_budget *budget_ = nullptr;  // the caller's budget for the current loop
   std::mutex mu_;
   std::condition_variable start_, done_;
   const std::function<void(size_t)> *fn_ = nullptr;

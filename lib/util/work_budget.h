@@ -1,0 +1,106 @@
+// Work limits of one library call: a wall-clock limit, a deterministic count of work
+// steps, and a cancellation flag another thread (or a signal handler) may set.
+//
+// The api layer opens a Budget_scope for the calling thread; the thread pool hands the
+// same budget to its workers for each loop (thread_pool.h). The layers below call
+// work_step() at the points where work repeats without a bound known up front:
+//   - a primitive query solved (pred::solve), and each root-search step of it
+//     (a bisection or refinement step of poly/earliest.h, poly/rational_root.cpp),
+//   - a time piece of a broad phase, a batch of candidate pairs of the scene driver.
+// A step is never more than one such unit, so a call's count of steps is a function of
+// its inputs alone: the scene driver solves the same pairs with the same options for
+// any number of threads (scene/pair_search.cpp), so a work limit ends the same calls
+// for any thread count. How long a step takes is not bounded (one step on numbers of
+// 100,000 digits can take a second): the wall-clock limit is for that, and the input
+// limit on number sizes (polyccd.h, pccd_config.max_number_bits) is checked up front.
+//
+// When a limit is reached, work_step throws Limit_reached, and every later step of the
+// same call throws too (the budget is spent), so parallel workers stop at their next
+// step. The api maps it to PCCD_ELIMIT with the message of Limit_reached::what().
+#pragma once
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace pccd::util {
+
+// A cancellation flag: set by anyone, read by the running calls that were given it.
+// set() is a lock-free atomic store, safe from another thread or a signal handler.
+class Cancel_flag {
+ public:
+  void set() { flag_.store(1, std::memory_order_relaxed); }
+  void reset() { flag_.store(0, std::memory_order_relaxed); }
+  bool is_set() const { return flag_.load(std::memory_order_relaxed) != 0; }
+
+ private:
+  std::atomic<int> flag_{0};
+  static_assert(std::atomic<int>::is_always_lock_free, "Cancel_flag must be signal-safe");
+};
+
+struct Work_limits {
+  double max_seconds = 0;           // wall clock from the start of the call; 0: none
+  std::uint64_t max_steps = 0;      // work steps; 0: none
+  const Cancel_flag *cancel = nullptr;
+  bool any() const { return max_seconds > 0 || max_steps > 0 || cancel; }
+};
+
+// Which limit ended a call, and the message for the caller.
+struct Limit_reached : std::runtime_error {
+  enum Which { SECONDS, STEPS, CANCEL } which;
+  Limit_reached(Which w, const std::string &m) : std::runtime_error(m), which(w) {}
+};
+
+class Work_budget {
+ public:
+  explicit Work_budget(const Work_limits &l);
+  // Counts n steps; throws Limit_reached when a limit is reached (and from then on).
+  void step(std::uint64_t n = 1) {
+    const std::uint64_t done = steps_.fetch_add(n, std::memory_order_relaxed) + n;
+    if (spent_.load(std::memory_order_relaxed) || (limits_.max_steps && done > limits_.max_steps) ||
+        (limits_.cancel && limits_.cancel->is_set()) ||
+        (limits_.max_seconds > 0 && std::chrono::steady_clock::now() >= deadline_))
+      stop(done);
+  }
+  std::uint64_t steps() const { return steps_.load(std::memory_order_relaxed); }
+  // Progress the message reports: primitive pairs (or queries) solved so far.
+  void count_solved(std::uint64_t n = 1) { solved_.fetch_add(n, std::memory_order_relaxed); }
+
+ private:
+  [[noreturn]] void stop(std::uint64_t done);
+  Work_limits limits_;
+  std::chrono::steady_clock::time_point start_, deadline_;
+  std::atomic<std::uint64_t> steps_{0}, solved_{0};
+  std::atomic<bool> spent_{false};
+  std::atomic<int> which_{-1};  // the first limit reached
+};
+
+// The budget of the calling thread's current call (nullptr: no limits).
+Work_budget *current_budget();
+
+// Makes b the calling thread's budget until the scope ends (b may be nullptr).
+class Budget_scope {
+ public:
+  explicit Budget_scope(Work_budget *b);
+  ~Budget_scope();
+  Budget_scope(const Budget_scope &) = delete;
+  Budget_scope &operator=(const Budget_scope &) = delete;
+
+ private:
+  Work_budget *saved_;
+};
+
+namespace detail {
+extern thread_local Work_budget *tl_budget;
+}
+
+// One unit of work of the current call (see the top of this file); nothing without limits.
+inline void work_step(std::uint64_t n = 1) {
+  if (Work_budget *b = detail::tl_budget) b->step(n);
+}
+inline void work_solved() {
+  if (Work_budget *b = detail::tl_budget) b->count_solved();
+}
+
+}  // namespace pccd::util
