@@ -71,7 +71,8 @@ typedef enum pccd_status {
   PCCD_OK = 0,
   PCCD_EINVAL = -1,   /* a bad argument: NULL, out of range, non-finite, unparsable text */
   PCCD_ENOMEM = -2,   /* out of memory */
-  PCCD_ELIMIT = -3,   /* a documented size or degree limit was exceeded */
+  PCCD_ELIMIT = -3,   /* a documented size or degree limit was exceeded, or a work limit
+                         of pccd_config (time, work steps, cancellation) was reached */
   PCCD_ERANGE = -4,   /* an output buffer is too small; *needed tells the size */
   PCCD_ESTATE = -5,   /* the handle is not in a state that allows the call */
   PCCD_EINTERNAL = -6 /* an internal error: a bug, please report it with the inputs */
@@ -106,6 +107,9 @@ typedef enum pccd_stage {
 #define PCCD_MAX_TRAJ_DEGREE 64      /* degree of one coordinate polynomial of a point */
 #define PCCD_MAX_NUMBER_CHARS 100000 /* length of one number string */
 #define PCCD_MAX_EXPONENT 100000     /* |e| in a decimal "1e-30" style exponent */
+/* The default of pccd_config.max_number_bits: no double (at most 1,127 bits as an exact
+ * fraction, subnormals included) and no decimal of fewer than ~4,900 digits exceeds it. */
+#define PCCD_DEFAULT_MAX_NUMBER_BITS 16384
 
 /* Version of the library as "major.minor.patch"; never NULL. */
 PCCD_API const char *pccd_version(void);
@@ -118,7 +122,39 @@ PCCD_API const char *pccd_last_error(void);
  * VERTEX_VERTEX 2, SPHERE_SPHERE 2). Returns PCCD_EINVAL for an unknown kind. */
 PCCD_API int pccd_kind_points(pccd_kind kind, size_t *count);
 
-/* Options of a solve. Initialise with pccd_config_init, then change fields. */
+/* A cancellation flag for running calls (pccd_config.cancel): any thread may set it
+ * while calls that were given it run; they then end with PCCD_ELIMIT
+ * ("config.cancel: the call was cancelled ..."). pccd_cancel_set is a lock-free atomic
+ * store: safe from any thread and from a signal handler. A set flag stays set (calls
+ * started with it end at once) until pccd_cancel_reset. */
+typedef struct pccd_cancel pccd_cancel;
+PCCD_API int pccd_cancel_new(pccd_cancel **out);
+PCCD_API void pccd_cancel_free(pccd_cancel *c);
+PCCD_API int pccd_cancel_set(pccd_cancel *c);
+PCCD_API int pccd_cancel_reset(pccd_cancel *c);
+/* *is_set = 1 when the flag is set. */
+PCCD_API int pccd_cancel_is_set(const pccd_cancel *c, int *is_set);
+
+/* Options of a solve. Initialise with pccd_config_init, then change fields.
+ *
+ * Work limits (max_seconds, max_work, cancel) bound one call: a solve, a batch, a scene
+ * or an index query (with all its threads). A call that reaches one returns PCCD_ELIMIT
+ * and holds no answer; the message names the limit and how far the call got
+ * ("config.max_work: the limit of 1000 work steps was reached (after 1000 work steps and
+ * 0.02 s, 35 primitive pairs solved); no answer"). A work step is one primitive query
+ * solved or one step of a root search (a bisection or refinement step): the count of a
+ * call depends on its inputs and options alone, not on the thread count, so max_work
+ * ends the same calls on every machine and thread count; max_seconds and cancel depend
+ * on time. No answer ever depends on the limits: a call either answers as without them
+ * or returns PCCD_ELIMIT.
+ *
+ * max_number_bits is an input limit checked before any work: every number of the
+ * inputs (coordinates, radii, motion coefficients), as an exact fraction p/q in lowest
+ * terms, must have bits(p) + bits(q) <= max_number_bits; else PCCD_ELIMIT naming the
+ * number, before anything is solved. The exact stages' cost grows with these sizes.
+ *
+ * pccd_config grew the fields after want_exact in version 0.1.0; a struct_size of the
+ * older layout (up to want_exact) is accepted and the newer fields take their defaults. */
 typedef struct pccd_config {
   size_t struct_size;         /* set by pccd_config_init: sizeof(pccd_config) */
   const char *time_tolerance; /* width of the first-contact enclosure: a positive
@@ -129,6 +165,12 @@ typedef struct pccd_config {
   int want_exact;             /* 1 (default): when the first contact time is rational,
                                  report it exactly (pccd_result_time_is_exact). Only
                                  used when want_time is 1. */
+  double max_seconds;         /* wall-clock limit of one call in seconds; 0 (default):
+                                 none. Finite and >= 0. */
+  unsigned long long max_work; /* limit of work steps of one call; 0 (default): none */
+  const pccd_cancel *cancel;  /* NULL (default), or a flag that cancels the call when set */
+  size_t max_number_bits;     /* input limit: bits of the largest input number (above);
+                                 default PCCD_DEFAULT_MAX_NUMBER_BITS; 0: no limit */
 } pccd_config;
 
 /* Fills *cfg with the defaults. PCCD_EINVAL when cfg is NULL. */

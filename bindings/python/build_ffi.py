@@ -35,12 +35,61 @@ def extension_kwargs(include_dir, libraries=("polyccd",), library_dirs=(), extra
                 extra_compile_args=["-Werror"])
 
 
+# Ctrl-C for long calls (polyccd/_interrupt.py). cffi releases the GIL around every C
+# call, but Python runs its SIGINT handler only between bytecodes, so a KeyboardInterrupt
+# would wait for the call to end. This C handler, installed in front of Python's,
+# sets the pccd_cancel of the main thread's running call (the call then ends with
+# PCCD_ELIMIT at its next work step) and chains to the handler it replaced, which
+# schedules the KeyboardInterrupt. pccd_cancel_set is an atomic store, signal-safe.
+SIGINT_SHIM = r"""
+#include <signal.h>
+#include <stdatomic.h>
+#include <string.h>
+
+static pccd_cancel *_Atomic polyccd_py_target;
+static struct sigaction polyccd_py_prev;
+
+static void polyccd_py_on_sigint(int sig, siginfo_t *info, void *ctx) {
+  pccd_cancel *c = atomic_load(&polyccd_py_target);
+  if (c) pccd_cancel_set(c);
+  if (polyccd_py_prev.sa_flags & SA_SIGINFO) {
+    if (polyccd_py_prev.sa_sigaction) polyccd_py_prev.sa_sigaction(sig, info, ctx);
+  } else if (polyccd_py_prev.sa_handler != SIG_IGN && polyccd_py_prev.sa_handler != SIG_DFL) {
+    polyccd_py_prev.sa_handler(sig);
+  }
+}
+
+/* 1 when the handler is (now) in front of SIGINT's; 0 when it cannot chain (the current
+ * disposition is SIG_DFL or SIG_IGN: Python does not handle SIGINT then). */
+static int polyccd_py_sigint_install(void) {
+  struct sigaction cur, mine;
+  if (sigaction(SIGINT, NULL, &cur) != 0) return 0;
+  if ((cur.sa_flags & SA_SIGINFO) && cur.sa_sigaction == polyccd_py_on_sigint) return 1;
+  if (!(cur.sa_flags & SA_SIGINFO) && (cur.sa_handler == SIG_DFL || cur.sa_handler == SIG_IGN))
+    return 0;
+  memset(&mine, 0, sizeof mine);
+  mine.sa_sigaction = polyccd_py_on_sigint;
+  mine.sa_flags = SA_SIGINFO | (cur.sa_flags & SA_ONSTACK);
+  sigemptyset(&mine.sa_mask);
+  polyccd_py_prev = cur;
+  return sigaction(SIGINT, &mine, NULL) == 0;
+}
+
+static void polyccd_py_sigint_target(pccd_cancel *c) { atomic_store(&polyccd_py_target, c); }
+"""
+
+SIGINT_CDEF = """
+int polyccd_py_sigint_install(void);
+void polyccd_py_sigint_target(pccd_cancel *c);
+"""
+
+
 def ffibuilder(include_dir, **kwargs):
     """An FFI builder of polyccd._pccd, its cdef generated from include_dir/polyccd.h (the
-    arguments of extension_kwargs)."""
+    arguments of extension_kwargs), plus the SIGINT shim above."""
     ffi = FFI()
-    ffi.cdef(header_cdef(Path(include_dir) / "polyccd.h"))
-    ffi.set_source("polyccd._pccd", '#include "polyccd.h"',
+    ffi.cdef(header_cdef(Path(include_dir) / "polyccd.h") + SIGINT_CDEF)
+    ffi.set_source("polyccd._pccd", '#include "polyccd.h"\n' + SIGINT_SHIM,
                    **extension_kwargs(include_dir, **kwargs))
     return ffi
 

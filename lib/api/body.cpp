@@ -57,6 +57,7 @@ int new_mesh(pccd_body **out, std::vector<Point3_q> vertices,
   body->mesh = std::make_shared<const pccd::motion::Mesh_body>(std::move(vertices),
                                                          std::move(triangles));
   body->data = pccd::narrow::make_body_data(body->mesh, nullptr);
+  body->biggest = pccd::api::biggest_in(*body->mesh);
   pccd::bvh::hierarchy(*body->data);  // built with the body, shared by every check
   *out = body.release();
   return PCCD_OK;
@@ -67,6 +68,7 @@ int new_spheres(pccd_body **out, std::vector<Point3_q> centers, std::vector<Rati
   body->spheres = std::make_shared<const pccd::motion::Sphere_body>(std::move(centers),
                                                               std::move(radii));
   body->data = pccd::narrow::make_body_data(nullptr, body->spheres);
+  body->biggest = pccd::api::biggest_in(*body->spheres);
   pccd::bvh::hierarchy(*body->data);
   *out = body.release();
   return PCCD_OK;

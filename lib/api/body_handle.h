@@ -6,9 +6,11 @@
 
 #include "narrow/moving_body.h"
 #include "motion/body.h"
+#include "api/limits.h"
 
 struct pccd_body {
   std::shared_ptr<const pccd::motion::Mesh_body> mesh;      // set for PCCD_BODY_MESH
   std::shared_ptr<const pccd::motion::Sphere_body> spheres;  // set for PCCD_BODY_SPHERES
   std::shared_ptr<const pccd::narrow::Body_data> data;        // derived once, for scenes
+  pccd::api::Biggest_number biggest;  // its largest number, for config.max_number_bits
 };

@@ -16,6 +16,7 @@
 #include "arith/errors.h"
 #include "arith/interval.h"
 #include "polyccd.h"
+#include "util/work_budget.h"
 
 namespace pccd::api {
 
@@ -50,6 +51,9 @@ int guard(const char *fn, F &&body) noexcept {
     set_error(fn, e.what());
     return PCCD_EINVAL;
   } catch (const arith::Limit_error &e) {
+    set_error(fn, e.what());
+    return PCCD_ELIMIT;
+  } catch (const util::Limit_reached &e) {  // a work limit of pccd_config
     set_error(fn, e.what());
     return PCCD_ELIMIT;
   } catch (const State_error &e) {

@@ -30,6 +30,10 @@ inline void reset(pred::Contact_result &r) {
 // Number of points of a kind; Input_error for an unknown kind.
 size_t kind_points(long kind);
 
+struct Biggest_number;
+// The largest number of q's trajectories and radii (api/limits.h).
+Biggest_number biggest_in(const pccd_query &q);
+
 // Solves with the interval stages built from `q`'s exact data (intervals enclosing it).
 pred::Contact_result solve_query(const pccd_query &q, const pred::Solve_options &opt);
 

@@ -13,6 +13,14 @@ using pccd::api::require;
 
 namespace {
 
+// The largest number of a body and its motion ("vertices[1][2]", "motion.rotation[0][1]").
+pccd::api::Biggest_number biggest_of(const pccd_body *body, const pccd_motion *motion) {
+  pccd::api::Biggest_number big;
+  big.see(body->biggest, "");
+  if (motion) big.see(pccd::api::biggest_in(motion->m), "motion.");
+  return big;
+}
+
 pccd::scene::Scene_body scene_body(const pccd_body *body, const pccd_motion *motion) {
   pccd::scene::Scene_body b;
   b.body = body->data;
@@ -31,6 +39,7 @@ PCCD_API int pccd_index_new(pccd_index **out, const pccd_body *body, const pccd_
     require(body, "body");
     auto ix = std::make_unique<pccd_index>();
     ix->ix = std::make_unique<const pccd::scene::Online_index>(scene_body(body, motion));
+    ix->biggest = biggest_of(body, motion);
     *out = ix.release();
     return PCCD_OK;
   });
@@ -47,6 +56,11 @@ PCCD_API int pccd_index_query(const pccd_index *ix, const pccd_body *body,
     require(rep, "rep");
     rep->solved = false;  // a failed call leaves no earlier answer readable
     const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
+    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    limits.check(ix->biggest, "ix: the stored body's ");
+    limits.check(body->biggest, "body.");
+    if (motion) limits.check(pccd::api::biggest_in(motion->m), "motion.");
+    const pccd::api::Call_budget budget(limits.work);
     rep->r = ix->ix->query(scene_body(body, motion), so);
     rep->solved = true;
     return PCCD_OK;
@@ -66,11 +80,16 @@ PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const 
       require(reports[k], pccd::api::place("reports", {k}));
     for (size_t k = 0; k < n; ++k) reports[k]->solved = false;  // no earlier answer readable
     const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
+    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    limits.check(ix->biggest, "ix: the stored body's ");
     std::vector<pccd::scene::Scene_body> qs(n);
     for (size_t k = 0; k < n; ++k) {
       require(bodies[k], pccd::api::place("bodies", {k}));
+      limits.check(biggest_of(bodies[k], motions ? motions[k] : nullptr),
+                   pccd::api::place("bodies", {k}) + ".");
       qs[k] = scene_body(bodies[k], motions ? motions[k] : nullptr);
     }
+    const pccd::api::Call_budget budget(limits.work);
     std::vector<pccd::scene::Scene_report> out;
     ix->ix->query_many(qs, so, out);
     for (size_t k = 0; k < n; ++k) {

@@ -25,7 +25,12 @@ PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_mot
     pccd::scene::Scene_body b;
     b.body = body->data;
     if (motion) b.motion = motion->m;
+    pccd::api::Biggest_number big;
+    big.see(body->biggest, "");
+    if (motion) big.see(pccd::api::biggest_in(motion->m), "motion.");
+    s->biggest.reserve(s->bodies.size() + 1);
     s->bodies.push_back(std::move(b));
+    s->biggest.push_back(std::move(big));
     if (index) *index = s->bodies.size() - 1;
     return PCCD_OK;
   });
@@ -58,6 +63,10 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
     require(rep, "rep");
     rep->solved = false;  // a failed call leaves no earlier answer readable
     const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
+    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    for (size_t k = 0; k < s->biggest.size(); ++k)
+      limits.check(s->biggest[k], pccd::api::place("bodies", {k}) + ".");
+    const pccd::api::Call_budget budget(limits.work);
     rep->r = pccd::scene::solve_scene(s->bodies, so);
     rep->solved = true;
     return PCCD_OK;

@@ -6,13 +6,16 @@
 #include "scene/online_index.h"
 #include "scene/scene.h"
 #include "polyccd.h"
+#include "api/limits.h"
 
 struct pccd_scene {
   std::vector<pccd::scene::Scene_body> bodies;  // shared bodies, copied motions
+  std::vector<pccd::api::Biggest_number> biggest;  // of body k and its motion: "vertices[..]"
 };
 
 struct pccd_index {
   std::unique_ptr<const pccd::scene::Online_index> ix;
+  pccd::api::Biggest_number biggest;  // of the stored body and its motion
 };
 
 struct pccd_report {

@@ -1,10 +1,12 @@
 // pccd_config_init, pccd_query_solve, and reading a pccd_config.
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <string>
 
 #include "api/guard.h"
 #include "api/handles.h"
+#include "api/limits.h"
 
 using pccd::api::guard;
 using pccd::api::place;
@@ -29,7 +31,8 @@ thread_local Tolerance_cache tl_tolerance;
 // Validates cfg (NULL: defaults); the parsed tolerance when cfg has one, else nullptr.
 const Rational *checked_tolerance(const pccd_config *cfg) {
   if (!cfg) return nullptr;
-  if (cfg->struct_size != sizeof(pccd_config))
+  // The layout before the work limits is accepted too (polyccd.h, pccd_config).
+  if (cfg->struct_size != sizeof(pccd_config) && cfg->struct_size != offsetof(pccd_config, max_seconds))
     throw Input_error("config.struct_size: " + std::to_string(cfg->struct_size) + " is not " +
                       std::to_string(sizeof(pccd_config)) + " (initialise with pccd_config_init)");
   if (!cfg->time_tolerance) return nullptr;
@@ -67,6 +70,16 @@ static void check_radii(const pccd_query &q) {
                         arith::to_string(q.radius[i]) + " is not > 0 (radii must be greater than 0)");
 }
 
+Biggest_number biggest_in(const pccd_query &q) {
+  Biggest_number out;
+  for (size_t p = 0; p < q.points.size(); ++p)
+    for (size_t a = 0; a < 3; ++a)
+      for (size_t i = 0; i < q.points[p][a].c.size(); ++i)
+        out.see(q.points[p][a].c[i], [&] { return place("points", {p, a, i}); });
+  for (size_t i = 0; i < 2; ++i) out.see(q.radius[i], [&] { return place("radii", {i}); });
+  return out;
+}
+
 pred::Contact_result solve_query(const pccd_query &q, const pred::Solve_options &opt) {
   check_radii(q);
   const arith::Nearest_scope nearest;  // before any interval arithmetic
@@ -97,6 +110,10 @@ PCCD_API int pccd_config_init(pccd_config *cfg) {
     cfg->time_tolerance = nullptr;
     cfg->want_time = 1;
     cfg->want_exact = 1;
+    cfg->max_seconds = 0;
+    cfg->max_work = 0;
+    cfg->cancel = nullptr;
+    cfg->max_number_bits = PCCD_DEFAULT_MAX_NUMBER_BITS;
     return PCCD_OK;
   });
 }
@@ -108,6 +125,9 @@ PCCD_API int pccd_query_solve(const pccd_query *q, const pccd_config *cfg, pccd_
     res->r = pccd::pred::Contact_result();
     require(q, "q");
     pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
+    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    limits.check(pccd::api::biggest_in(*q));
+    const pccd::api::Call_budget budget(limits.work);
     res->r = pccd::api::solve_query(*q, opt);
     res->solved = true;
     return PCCD_OK;

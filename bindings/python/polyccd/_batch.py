@@ -8,7 +8,8 @@ from ._arrays import linear_batch
 from ._errors import InputError, check
 from ._pccd import ffi, lib
 from ._results import STAGES
-from ._solve import _NPOINTS, _cached_config, kind_code
+from . import _limits
+from ._solve import _NPOINTS, _cached_config, _config, kind_code
 
 _STAGE_NAMES = np.array(["none"] + [STAGES[k] for k in sorted(STAGES)])
 
@@ -31,7 +32,7 @@ class LinearBatch:
 
 
 def solve_linear_many(kind, t0, t1, *, time_tolerance="1e-12", want_time=True, want_exact=True,
-                      threads=1):
+                      threads=1, limits=None):
     """Every query k of t0[k], t1[k] (float64 arrays of shape (n, npoints, 3): points
     moving linearly from t0 to t1) solved in one call on `threads` workers; answers
     do not depend on the number of threads. Returns a LinearBatch of numpy arrays."""
@@ -43,7 +44,10 @@ def solve_linear_many(kind, t0, t1, *, time_tolerance="1e-12", want_time=True, w
     if not isinstance(threads, int) or isinstance(threads, bool) or not 1 <= threads <= 1024:
         raise InputError(f"opt.threads: {threads!r} is outside 1..1024")
     n = a0.shape[0]
-    cfg, _keep = _cached_config(time_tolerance, want_time, want_exact)
+    if limits is None:
+        cfg, _keep = _cached_config(time_tolerance, want_time, want_exact)
+    else:
+        cfg, _keep = _config(time_tolerance, want_time, want_exact, limits)
     opt = ffi.new("pccd_batch_options *")
     check(lib.pccd_batch_options_init(opt))
     opt.threads = threads
@@ -59,6 +63,6 @@ def solve_linear_many(kind, t0, t1, *, time_tolerance="1e-12", want_time=True, w
     out.stage = ffi.from_buffer("int[]", stage)
     out.lo = ffi.from_buffer("double[]", lo)
     out.hi = ffi.from_buffer("double[]", hi)
-    check(lib.pccd_solve_linear_batch_d(code, n, ffi.from_buffer("double[]", a0),
-                                        ffi.from_buffer("double[]", a1), cfg, opt, out))
+    check(_limits.run(cfg, lib.pccd_solve_linear_batch_d, code, n, ffi.from_buffer("double[]", a0),
+                      ffi.from_buffer("double[]", a1), cfg, opt, out))
     return LinearBatch(collides.astype(bool), lo, hi, exact.astype(bool), _STAGE_NAMES[stage])

@@ -5,6 +5,7 @@ primitives as lifted points in range trees) and queried there (pccd_index_query)
 answers are read back like a two-body scene (body 0 the indexed body, body 1 the query).
 """
 from . import _handles as handles
+from . import _limits
 from ._errors import InputError, check
 from ._numbers import show
 from ._pccd import ffi, lib
@@ -34,27 +35,30 @@ class Index:
         return Index, (self.body,)
 
     def query(self, body, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-              broad_phase="auto", want_exact=True):
+              broad_phase="auto", want_exact=True, limits=None):
         """The SceneResult of the two bodies (indexed body, query body); the keyword
         arguments as for polyccd.check."""
         if not isinstance(body, Body):
             raise InputError(f"body: expected a polyccd.Body, got {show(body)}")
-        cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact)
+        cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
+                                   limits)
         rep = handles.new("report")
-        check(lib.pccd_index_query(self._handle, body.shape._handle, _motion_handle(body.motion),
-                                     cfg, opt, rep))
+        check(_limits.run(cfg, lib.pccd_index_query, self._handle, body.shape._handle,
+                          _motion_handle(body.motion), cfg, opt, rep))
         return _read(rep, _names([self.body, body]), (self.body, body))
 
     def query_many(self, bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-                   broad_phase="auto", want_exact=True):
+                   broad_phase="auto", want_exact=True, limits=None):
         """The SceneResults of every query body, in order (one C call; `threads` workers
         share the queries, each query solved on one thread)."""
         bodies = _bodies_list(bodies)
-        cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact)
+        cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
+                                   limits)
         n = len(bodies)
         shapes = ffi.new("pccd_body *[]", [b.shape._handle for b in bodies] or 1)
         motions = ffi.new("pccd_motion *[]", [_motion_handle(b.motion) for b in bodies] or 1)
         reps = [handles.new("report") for _ in range(n)]
         rep_array = ffi.new("pccd_report *[]", reps or 1)
-        check(lib.pccd_index_query_many(self._handle, shapes, motions, n, cfg, opt, rep_array))
+        check(_limits.run(cfg, lib.pccd_index_query_many, self._handle, shapes, motions, n, cfg,
+                          opt, rep_array))
         return [_read(r, _names([self.body, b]), (self.body, b)) for r, b in zip(reps, bodies)]

@@ -10,6 +10,7 @@ from typing import Optional, Tuple
 import numpy as np
 
 from . import _handles as handles
+from . import _limits
 from ._body import Mesh, Spheres
 from ._errors import InputError, check
 from ._motion import Motion
@@ -161,7 +162,7 @@ def _bodies_list(bodies):
     return bodies
 
 
-def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact):
+def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None):
     """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query."""
     if broad_phase not in BROAD_PHASES:
         raise InputError("broad_phase: expected \"auto\", \"boxes\", \"brute\", \"bvh\" or \"range\", "
@@ -170,7 +171,7 @@ def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact):
         raise InputError(f"threads: expected an integer from 1 to 1024, got {show(threads)}")
     if all_contacts not in (True, False):
         raise InputError(f"all_contacts: expected True or False, got {show(all_contacts)}")
-    cfg, keep = _config(time_tolerance, True, want_exact)
+    cfg, keep = _config(time_tolerance, True, want_exact, limits)
     opt = ffi.new("pccd_scene_options *")
     check(lib.pccd_scene_options_init(opt))
     opt.threads = threads
@@ -184,17 +185,19 @@ def _motion_handle(motion):
 
 
 def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-                broad_phase="auto", want_exact=True):
-    """Every body pair in contact and the scene's first contact (API.md, Scenes)."""
+                broad_phase="auto", want_exact=True, limits=None):
+    """Every body pair in contact and the scene's first contact (API.md, Scenes).
+    limits: a polyccd.Limits (work limits, input limit) or None for the defaults."""
     bodies = _bodies_list(bodies)
     if len(bodies) < 2:
         raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
-    cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact)
+    cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
+                               limits)
     scene = handles.new("scene")
     for b in bodies:
         check(lib.pccd_scene_add(scene, b.shape._handle, _motion_handle(b.motion), ffi.NULL))
     rep = handles.new("report")
-    check(lib.pccd_scene_solve(scene, cfg, opt, rep))
+    check(_limits.run(cfg, lib.pccd_scene_solve, scene, cfg, opt, rep))
     return _read(rep, _names(bodies), bodies)
 
 

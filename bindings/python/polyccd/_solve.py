@@ -10,6 +10,7 @@ import numpy as np
 
 from ._arrays import NotDouble, linear_coords, linear_trajectories
 from . import _handles as handles
+from . import _limits
 from ._errors import InputError, check
 from ._numbers import number_text, show
 from ._pccd import ffi, lib
@@ -89,16 +90,18 @@ def _cached_config(time_tolerance, want_time, want_exact):
     return hit
 
 
-def _config(time_tolerance, want_time, want_exact):
+def _config(time_tolerance, want_time, want_exact, limits=None):
     """(pccd_config, keep-alive) of the keyword arguments. The tolerance is named by its
     C field, config.time_tolerance, here as in the library's messages."""
     cfg = ffi.new("pccd_config *")
     check(lib.pccd_config_init(cfg))
-    keep = None
+    _limits.apply(cfg, limits)
+    keep = limits
     if time_tolerance is not None:
         text = number_text(time_tolerance, "config.time_tolerance")
-        keep = ffi.new("char[]", text.encode("utf-8", "replace"))
-        cfg.time_tolerance = keep
+        text_keep = ffi.new("char[]", text.encode("utf-8", "replace"))
+        cfg.time_tolerance = text_keep
+        keep = (text_keep, limits)
     cfg.want_time = 1 if want_time else 0
     cfg.want_exact = 1 if want_exact else 0
     return cfg, keep
@@ -107,7 +110,7 @@ def _config(time_tolerance, want_time, want_exact):
 _thread = _Thread()  # after _config, which its __init__ calls
 
 
-def solve_query(kind, points, radii, time_tolerance, want_time, want_exact):
+def solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limits=None):
     """solve(), positional. Shapes are checked here; every number and index is checked
     by C, which names it as points[i][axis][coefficient] or radii[which]."""
     code = kind_code(kind)
@@ -137,21 +140,22 @@ def solve_query(kind, points, radii, time_tolerance, want_time, want_exact):
             check(lib.pccd_query_set_radius_s(query, which, text))
     elif radii is not None:
         raise InputError(f"radii: only sphere-sphere queries have radii, not {kind}")
-    cfg, keep = _config(time_tolerance, want_time, want_exact)
+    cfg, keep = _config(time_tolerance, want_time, want_exact, limits)
     res = handles.new("result")
-    check(lib.pccd_query_solve(query, cfg, res))
+    check(_limits.run(cfg, lib.pccd_query_solve, query, cfg, res))
     return read_result(res)
 
 
 def solve(kind, points, radii=None, *, time_tolerance="1e-12", want_time=True,
-          want_exact=True):
+          want_exact=True, limits=None):
     """Decides exactly whether the moving primitives touch during [0, 1]; see
-    bindings/python/API.md. points: one [xs, ys, zs] per point, ascending powers of t."""
-    return solve_query(kind, points, radii, time_tolerance, want_time, want_exact)
+    bindings/python/API.md. points: one [xs, ys, zs] per point, ascending powers of t.
+    limits: a polyccd.Limits (work limits, input limit) or None for the defaults."""
+    return solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limits)
 
 
 def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
-                 want_exact=True):
+                 want_exact=True, limits=None):
     """solve() for points moving linearly from p_t0 (t = 0) to p_t1 (t = 1), arrays of
     shape (npoints, 3): float64 (exact binary values), integer or object arrays (int,
     Fraction, float) or nested lists; values that are not exactly doubles take the exact
@@ -162,8 +166,11 @@ def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
         a1 = linear_coords(p_t1, "p_t1", _NPOINTS[kind])
     except NotDouble:
         return solve_query(kind, linear_trajectories(p_t0, p_t1, _NPOINTS[kind]), None,
-                           time_tolerance, want_time, want_exact)
-    cfg, _keep = _cached_config(time_tolerance, want_time, want_exact)
+                           time_tolerance, want_time, want_exact, limits)
+    if limits is None:
+        cfg, _keep = _cached_config(time_tolerance, want_time, want_exact)
+    else:
+        cfg, _keep = _config(time_tolerance, want_time, want_exact, limits)
     res = _thread.res
     check(lib.pccd_solve_linear_d(code, ffi.from_buffer("double[]", a0),
                                   ffi.from_buffer("double[]", a1), cfg, res))

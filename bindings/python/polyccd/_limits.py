@@ -1,0 +1,121 @@
+"""Work limits of one call (polyccd.Limits, polyccd.Cancel) and Ctrl-C for long calls.
+
+The library checks the limits (pccd_config's max_seconds, max_work, cancel and
+max_number_bits, polyccd.h); this module only converts them. A call that reaches one
+raises LimitError with the library's message (which limit, how far the call got).
+
+Ctrl-C: cffi releases the GIL around every C call, but Python runs its SIGINT handler
+only between bytecodes, so without help a KeyboardInterrupt would wait for a long
+check to end. run() points the extension's SIGINT shim (build_ffi.py) at the call's
+pccd_cancel when it is made from the main thread and SIGINT has Python's default
+handler: Ctrl-C then sets the flag, the call ends at its next work step, and Python
+raises KeyboardInterrupt as it returns. (A Cancel passed in limits is the one set.)
+"""
+import math
+import signal
+import threading
+
+from ._errors import InputError, check
+from ._numbers import show
+from ._pccd import ffi, lib
+from . import _handles as handles
+
+
+class Cancel:
+    """A cancellation flag for running calls: set() (from any thread) makes the calls
+    given it (Limits(cancel=...)) end with LimitError "config.cancel: the call was
+    cancelled ..."; it stays set, and calls started with it end at once, until reset()."""
+
+    __slots__ = ("_handle",)
+
+    def __init__(self):
+        self._handle = handles.new("cancel")
+
+    def set(self):
+        lib.pccd_cancel_set(self._handle)
+
+    def reset(self):
+        check(lib.pccd_cancel_reset(self._handle))
+
+    @property
+    def is_set(self):
+        out = ffi.new("int *")
+        check(lib.pccd_cancel_is_set(self._handle, out))
+        return bool(out[0])
+
+    def __repr__(self):
+        return f"Cancel(is_set={self.is_set})"
+
+
+DEFAULT_MAX_NUMBER_BITS = lib.PCCD_DEFAULT_MAX_NUMBER_BITS
+
+
+class Limits:
+    """The limits of one call (polyccd.h, pccd_config): max_seconds (wall clock, None: no
+    limit), max_work (work steps, a count that depends only on the inputs; None: no
+    limit), cancel (a Cancel or None) and max_number_bits (the largest input number as
+    a fraction, bits of numerator plus denominator; None: no limit). Raise
+    max_number_bits to solve inputs with larger numbers."""
+
+    __slots__ = ("max_seconds", "max_work", "cancel", "max_number_bits")
+
+    def __init__(self, max_seconds=None, max_work=None, cancel=None,
+                 max_number_bits=DEFAULT_MAX_NUMBER_BITS):
+        if max_seconds is not None and (isinstance(max_seconds, bool) or
+                                        not isinstance(max_seconds, (int, float)) or
+                                        not math.isfinite(max_seconds) or max_seconds <= 0):
+            raise InputError("limits.max_seconds: expected a finite number of seconds > 0 or "
+                             f"None, got {show(max_seconds)}")
+        for name, value in (("max_work", max_work), ("max_number_bits", max_number_bits)):
+            if value is not None and (isinstance(value, bool) or not isinstance(value, int)
+                                      or not 1 <= value < 2 ** 63):
+                raise InputError(f"limits.{name}: expected a positive integer or None, "
+                                 f"got {show(value)}")
+        if cancel is not None and not isinstance(cancel, Cancel):
+            raise InputError(f"limits.cancel: expected a polyccd.Cancel or None, got {show(cancel)}")
+        self.max_seconds = max_seconds
+        self.max_work = max_work
+        self.cancel = cancel
+        self.max_number_bits = max_number_bits
+
+    def __repr__(self):
+        return (f"Limits(max_seconds={self.max_seconds!r}, max_work={self.max_work!r}, "
+                f"cancel={self.cancel!r}, max_number_bits={self.max_number_bits!r})")
+
+
+def apply(cfg, limits):
+    """Writes limits (a Limits or None: the defaults) into the pccd_config cfg."""
+    if limits is None:
+        return
+    if not isinstance(limits, Limits):
+        raise InputError(f"limits: expected a polyccd.Limits or None, got {show(limits)}")
+    cfg.max_seconds = float(limits.max_seconds or 0)
+    cfg.max_work = limits.max_work or 0
+    cfg.cancel = limits.cancel._handle if limits.cancel is not None else ffi.NULL
+    cfg.max_number_bits = limits.max_number_bits or 0
+
+
+_main = threading.main_thread()
+_sigint = threading.local()  # the main thread's own flag, made on first use
+
+
+def run(cfg, fn, *args):
+    """fn(*args), a C call that takes cfg, interruptible by Ctrl-C (see the top)."""
+    if (threading.current_thread() is not _main or
+            signal.getsignal(signal.SIGINT) is not signal.default_int_handler or
+            not lib.polyccd_py_sigint_install()):
+        return fn(*args)
+    own = cfg.cancel == ffi.NULL
+    if own:
+        flag = getattr(_sigint, "flag", None)
+        if flag is None:
+            flag = _sigint.flag = handles.new("cancel")
+        lib.pccd_cancel_reset(flag)
+        cfg.cancel = flag
+    lib.polyccd_py_sigint_target(ffi.cast("pccd_cancel *", cfg.cancel))
+    try:
+        return fn(*args)
+    finally:
+        lib.polyccd_py_sigint_target(ffi.NULL)
+        if own:
+            cfg.cancel = ffi.NULL

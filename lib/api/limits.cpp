@@ -1,0 +1,124 @@
+// pccd_cancel_*, and the limits of a pccd_config (api/limits.h).
+#include "api/limits.h"
+
+#include <cmath>
+
+#include "api/guard.h"
+
+using pccd::api::guard;
+using pccd::api::place;
+using pccd::api::require;
+using pccd::arith::Input_error;
+using pccd::arith::Rational;
+
+namespace pccd::api {
+
+size_t number_bits(const Rational &x) {
+  return mpz_sizeinbase(x.get_num_mpz_t(), 2) + mpz_sizeinbase(x.get_den_mpz_t(), 2);
+}
+
+size_t number_bits(double x) {
+  if (x == 0) return 2;
+  int e = 0;
+  double m = std::frexp(std::fabs(x), &e);  // |x| = m 2^e, m in [1/2, 1)
+  // The odd integer mantissa M and the power k with |x| = M 2^k.
+  long long M = static_cast<long long>(std::ldexp(m, 53));
+  int k = e - 53;
+  while ((M & 1) == 0) {
+    M >>= 1;
+    ++k;
+  }
+  size_t mbits = 0;
+  for (long long v = M; v; v >>= 1) ++mbits;
+  return k >= 0 ? mbits + static_cast<size_t>(k) + 1 : mbits + static_cast<size_t>(-k) + 1;
+}
+
+Biggest_number biggest_in(const motion::Mesh_body &b) {
+  Biggest_number out;
+  const auto &v = b.vertices();
+  for (size_t i = 0; i < v.size(); ++i)
+    for (size_t k = 0; k < 3; ++k) out.see(v[i][k], [&] { return place("vertices", {i, k}); });
+  return out;
+}
+
+Biggest_number biggest_in(const motion::Sphere_body &b) {
+  Biggest_number out;
+  const auto &c = b.centers();
+  for (size_t i = 0; i < c.size(); ++i) {
+    for (size_t k = 0; k < 3; ++k) out.see(c[i][k], [&] { return place("centers", {i, k}); });
+    out.see(b.radii()[i], [&] { return place("radii", {i}); });
+  }
+  return out;
+}
+
+Biggest_number biggest_in(const motion::Rigid_motion &m) {
+  Biggest_number out;
+  for (size_t c = 0; c < 4; ++c)
+    for (size_t i = 0; i < m.r[c].c.size(); ++i)
+      out.see(m.r[c].c[i], [&] { return place("rotation", {c, i}); });
+  for (size_t a = 0; a < 3; ++a) {
+    for (size_t i = 0; i < m.o[a].c.size(); ++i)
+      out.see(m.o[a].c[i], [&] { return place("translation", {a, i}); });
+    for (size_t i = 0; i < m.b[a].c.size(); ++i)  // from composed poses
+      out.see(m.b[a].c[i], [&] { return place("pose_offset", {a, i}); });
+  }
+  return out;
+}
+
+void Call_limits::check(const Biggest_number &b, const std::string &prefix) const {
+  if (max_number_bits == 0 || b.bits <= max_number_bits) return;
+  throw arith::Limit_error(prefix + b.place + ": a number of " + std::to_string(b.bits) +
+                           " bits (numerator and denominator) exceeds config.max_number_bits = " +
+                           std::to_string(max_number_bits) +
+                           " (raise it, or set 0 for no limit, to solve this input)");
+}
+
+// The size of pccd_config before the work-limit fields (accepted: polyccd.h).
+constexpr size_t kConfigSizeV0 = offsetof(pccd_config, max_seconds);
+
+Call_limits read_limits(const pccd_config *cfg) {
+  Call_limits l;
+  if (!cfg || cfg->struct_size == kConfigSizeV0) return l;
+  if (!(std::isfinite(cfg->max_seconds) && cfg->max_seconds >= 0))
+    throw Input_error("config.max_seconds: " + std::to_string(cfg->max_seconds) +
+                      " is not a finite number >= 0 (0: no time limit)");
+  l.work.max_seconds = cfg->max_seconds;
+  l.work.max_steps = cfg->max_work;
+  l.work.cancel = cfg->cancel ? &cfg->cancel->flag : nullptr;
+  l.max_number_bits = cfg->max_number_bits;
+  return l;
+}
+
+}  // namespace pccd::api
+
+extern "C" {
+
+PCCD_API int pccd_cancel_new(pccd_cancel **out) { return pccd::api::new_handle(__func__, out); }
+
+PCCD_API void pccd_cancel_free(pccd_cancel *c) { delete c; }
+
+PCCD_API int pccd_cancel_set(pccd_cancel *c) {
+  // No guard: this must stay async-signal-safe (no locale, no allocation, no throw).
+  if (!c) return PCCD_EINVAL;
+  c->flag.set();
+  return PCCD_OK;
+}
+
+PCCD_API int pccd_cancel_reset(pccd_cancel *c) {
+  return guard(__func__, [&] {
+    require(c, "c");
+    c->flag.reset();
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_cancel_is_set(const pccd_cancel *c, int *is_set) {
+  return guard(__func__, [&] {
+    require(c, "c");
+    require(is_set, "is_set");
+    *is_set = c->flag.is_set() ? 1 : 0;
+    return PCCD_OK;
+  });
+}
+
+}  // extern "C"
