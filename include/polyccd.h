@@ -135,6 +135,12 @@ PCCD_API int pccd_cancel_reset(pccd_cancel *c);
 /* *is_set = 1 when the flag is set. */
 PCCD_API int pccd_cancel_is_set(const pccd_cancel *c, int *is_set);
 
+/* How many worker threads a call asking for `requested` (1 to 1024: pccd_scene_options,
+ * pccd_batch_options) starts: min(requested, the hardware's thread count), at least 1.
+ * Threads beyond the hardware's only add switching; no answer depends on the count.
+ * PCCD_EINVAL when usable is NULL or requested is outside 1..1024. */
+PCCD_API int pccd_threads_usable(unsigned requested, unsigned *usable);
+
 /* Options of a solve. Initialise with pccd_config_init, then change fields.
  *
  * Work limits (max_seconds, max_work, cancel) bound one call: a solve, a batch, a scene

@@ -87,7 +87,11 @@ def test_float_is_its_binary_value_not_its_decimal():
 
 def test_huge_integers_beyond_python_str_limit():
     n = 10 ** 5000  # more digits than sys.get_int_max_str_digits() allows by default
-    r = polyccd.solve("vertex-face", falling(n, -n))
+    # 16,611 bits: beyond the default input limit (PCCD_DEFAULT_MAX_NUMBER_BITS), which
+    # says so and is raised for the call.
+    with pytest.raises(polyccd.LimitError, match="config.max_number_bits = 16384"):
+        polyccd.solve("vertex-face", falling(n, -n))
+    r = polyccd.solve("vertex-face", falling(n, -n), limits=polyccd.Limits(max_number_bits=None))
     assert r.first_contact.exact == 1
 
 

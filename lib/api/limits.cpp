@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "api/guard.h"
+#include "util/thread_pool.h"
 
 using pccd::api::guard;
 using pccd::api::place;
@@ -92,6 +93,16 @@ Call_limits read_limits(const pccd_config *cfg) {
 }  // namespace pccd::api
 
 extern "C" {
+
+PCCD_API int pccd_threads_usable(unsigned requested, unsigned *usable) {
+  return guard(__func__, [&] {
+    require(usable, "usable");
+    if (requested < 1 || requested > 1024)
+      throw Input_error("requested: " + std::to_string(requested) + " is outside 1..1024");
+    *usable = pccd::util::usable_threads(requested);
+    return PCCD_OK;
+  });
+}
 
 PCCD_API int pccd_cancel_new(pccd_cancel **out) { return pccd::api::new_handle(__func__, out); }
 

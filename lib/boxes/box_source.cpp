@@ -134,6 +134,7 @@ class Box_source final : public narrow::Candidate_source {
 
   void piece(double a, double b, int depth, std::vector<uint32_t> actA, std::vector<uint32_t> actB,
              double parent_spread) {
+    util::work_step();  // one time piece (util/work_budget.h)
     if (sink_->pruned(a)) return;
     ++stats_->pieces;
     Pose_piece pose[2] = {enclose_pose(ctx_.side(0), a, b), enclose_pose(ctx_.side(1), a, b)};

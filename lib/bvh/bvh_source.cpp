@@ -132,6 +132,7 @@ class Bvh_source final : public narrow::Candidate_source {
   }
 
   void piece(double a, double b, int depth, std::vector<Node_pair> front, double parent_spread) {
+    util::work_step();  // one time piece (util/work_budget.h)
     if (sink_->pruned(a)) return;
     ++stats_->pieces;
     const Pose_piece pose[2] = {boxes::enclose_pose(ctx_.side(0), a, b),

@@ -1,6 +1,7 @@
 #include "poly/gcd.h"
 
 #include "poly/integer.h"
+#include "util/work_budget.h"
 
 #include <utility>
 
@@ -26,6 +27,7 @@ Poly<Rational> gcd(Poly<Rational> a, Poly<Rational> b) {
   b = primitive_monic_sign(b);
   if (a.degree() < b.degree()) std::swap(a, b);
   while (!b.c.empty()) {
+    util::work_step();  // a remainder of long numbers can take long (util/work_budget.h)
     Poly<Rational> r = prem_positive(std::move(a), b);  // primitive, c * (a mod b)
     a = std::move(b);
     b = primitive_monic_sign(r);

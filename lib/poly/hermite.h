@@ -14,12 +14,14 @@
 // The paper's r - V(S) - V(H) formula is not used: it is wrong when g shares a root
 // with f. Sign conditions are assembled from TaQs in poly/count.h.
 #pragma once
+#include <type_traits>
 #include <vector>
 
 #include "arith/errors.h"
 #include "arith/interval.h"
 #include "arith/rational.h"
 #include "poly/poly.h"
+#include "util/work_budget.h"
 
 namespace pccd::poly {
 
@@ -48,6 +50,14 @@ inline int pivot_state(const arith::Interval &x) {
   return x.is_point_zero() ? 0 : -1;
 }
 
+// One work step (util/work_budget.h) per exact elimination round: on long numbers a
+// round of a large matrix can take seconds. Nothing for intervals (bounded cost).
+template <class NT>
+inline void exact_work_step() {
+  if constexpr (std::is_same<NT, arith::Rational>::value || std::is_same<NT, arith::Integer>::value)
+    util::work_step();
+}
+
 // The determinant of the n*n matrix m (row-major), by Bareiss elimination with row
 // pivoting: a pivot must be certainly nonzero; a column whose candidates are all exactly
 // zero gives 0; one with an uncertain candidate and no certain pivot throws Uncertain.
@@ -56,6 +66,7 @@ NT bareiss_determinant(std::vector<NT> m, size_t n) {
   NT prev(1);
   bool negate = false;
   for (size_t k = 0; k < n; ++k) {
+    exact_work_step<NT>();
     size_t piv = n;
     bool unsure = false;
     for (size_t i = k; i < n && piv == n; ++i) {
@@ -92,6 +103,7 @@ std::vector<int> leading_minor_signs(const std::vector<NT> &a, size_t n) {
   // After step k, m[i][j] (i, j > k) is the minor of rows 0..k,i x cols 0..k,j, and
   // m[k][k] is D_(k+1).
   for (; k < n; ++k) {
+    exact_work_step<NT>();
     signs[k] = sign_of(m[k * n + k]);
     if (signs[k] == 0) break;
     for (size_t i = k + 1; i < n; ++i)

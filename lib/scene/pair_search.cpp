@@ -61,13 +61,16 @@ class Driver final : public narrow::Candidate_sink {
         sub[k][s] = boxes::enclose_pose(ctx_.side(s), a + (b - a) * k / kSub,
                                         k + 1 == kSub ? b : a + (b - a) * (k + 1) / kSub);
     std::vector<std::pair<double, Prim_pair>> order;
-    for (const Prim_pair &p : fresh)
+    for (size_t i = 0; i < fresh.size(); ++i) {
+      if (i % kStepPairs == 0) util::work_step();
+      const Prim_pair &p = fresh[i];
       for (int k = 0; k < kSub; ++k)
         if (boxes::boxes_meet(boxes::feature_box(ctx_.side(0), 0, p, sub[k][0]),
                               boxes::feature_box(ctx_.side(1), 1, p, sub[k][1]))) {
           order.push_back({a + (b - a) * k / kSub, p});
           break;
         }
+    }
     std::sort(order.begin(), order.end(), [](const auto &x, const auto &y) {
       return x.first != y.first ? x.first < y.first : x.second < y.second;
     });
@@ -94,6 +97,9 @@ class Driver final : public narrow::Candidate_sink {
   // piece's end. A reported contact never depends on the bound (pred/solve.h).
   std::unordered_map<uint64_t, double> cleared_;
   static constexpr double kDone = std::numeric_limits<double>::infinity();
+  // Candidates handled per work step outside the solves (util/work_budget.h): a piece
+  // can list hundreds of thousands of pairs before the first one is solved.
+  static constexpr size_t kStepPairs = 4096;
   bool found_any_ = false, have_best_ = false;
   Rational best_hi_;
 
@@ -108,6 +114,7 @@ class Driver final : public narrow::Candidate_sink {
 
   // The pairs of cand not yet cleared up to horizon, once each, in key order.
   std::vector<Prim_pair> fresh_of(std::vector<Prim_pair> cand, double horizon) const {
+    util::work_step(1 + cand.size() / kStepPairs);  // the sort
     std::sort(cand.begin(), cand.end());
     cand.erase(std::unique(cand.begin(), cand.end()), cand.end());
     std::vector<Prim_pair> fresh;

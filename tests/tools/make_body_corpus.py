@@ -551,6 +551,19 @@ case(SM, "ball-hits-edge-irrational",
       body("B", balls([[0, 0, 0]], [1]), translation=linear([0, -3, 3], [0, 0, 0]))],
      ("irr", [17, -36, 18], F(76, 100), F(77, 100)), options={"time_tolerance": "1e-25"})
 
+# Regression (issue 15, a scene check that ran 60 s): a ball of radius 1/5 + 2^-8000
+# (8,000-bit numbers) turning about the z axis through (0, 1/3, 0) (tau 0 -> 1/2) while a
+# tetrahedron slides into it. Its first time's rational-root test narrowed an isolating
+# interval below 1/lc(F), lc of about 32,000 bits, one halving per step, with fraction
+# arithmetic and a Euclid over Q (poly/rational_root.cpp, poly/gcd.cpp: now quadratic
+# interval refinement and the primitive remainder sequence). Answer: the oracle's.
+case(SM, "slow-rational-root-long-radius",
+     [body("A", balls([[0, F(-1, 3), 0]], [F(1, 5) + F(1, 2 ** 8000)]), translation=still([0, F(1, 3), 0]),
+           rotation=about([0, 0, 1], 0, F(1, 2))),
+      body("B", mesh([[1, -1, -1], [1, 1, -1], [1, 0, 1], [2, 0, 0]], [[0, 1, 2], [0, 1, 3], [1, 2, 3], [0, 2, 3]]),
+           translation=linear([0, 0, 0], [F(-3, 4), F(1, 9), F(1, 7)]))],
+     "any")
+
 # centre (1, 1, 1) + (1 - t)(2, 1, 2), radius 1: the corner (1, 1, 1) is the nearest point,
 # at distance 3 (1 - t) = 1 when t = 2/3.
 case(SM, "ball-hits-cube-corner",

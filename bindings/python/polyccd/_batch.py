@@ -43,6 +43,7 @@ def solve_linear_many(kind, t0, t1, *, time_tolerance="1e-12", want_time=True, w
         raise InputError(f"t1: expected shape {a0.shape} like t0, got {a1.shape}")
     if not isinstance(threads, int) or isinstance(threads, bool) or not 1 <= threads <= 1024:
         raise InputError(f"opt.threads: {threads!r} is outside 1..1024")
+    _limits.warn_threads(threads)
     n = a0.shape[0]
     if limits is None:
         cfg, _keep = _cached_config(time_tolerance, want_time, want_exact)

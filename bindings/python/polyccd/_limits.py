@@ -14,6 +14,7 @@ raises KeyboardInterrupt as it returns. (A Cancel passed in limits is the one se
 import math
 import signal
 import threading
+import warnings
 
 from ._errors import InputError, check
 from ._numbers import show
@@ -78,6 +79,13 @@ class Limits:
         self.cancel = cancel
         self.max_number_bits = max_number_bits
 
+    def __reduce__(self):
+        """Pickles the numbers (for Dask workers); a Cancel is this process's flag."""
+        if self.cancel is not None:
+            raise InputError("limits.cancel: a polyccd.Cancel belongs to one process and "
+                             "cannot be sent to another")
+        return Limits, (self.max_seconds, self.max_work, None, self.max_number_bits)
+
     def __repr__(self):
         return (f"Limits(max_seconds={self.max_seconds!r}, max_work={self.max_work!r}, "
                 f"cancel={self.cancel!r}, max_number_bits={self.max_number_bits!r})")
@@ -95,6 +103,22 @@ def apply(cfg, limits):
     cfg.max_number_bits = limits.max_number_bits or 0
 
 
+def warn_threads(threads, place="threads"):
+    """Warns (RuntimeWarning, once per count) when threads exceeds what the library
+    starts on this machine (pccd_threads_usable): the answers are the same, and the
+    caller learns why the extra threads do not help."""
+    if threads <= 1 or threads in _warned:
+        return
+    out = ffi.new("unsigned *")
+    check(lib.pccd_threads_usable(threads, out))
+    if out[0] < threads:
+        _warned.add(threads)
+        warnings.warn(f"{place}={threads}: this machine runs {out[0]} threads at once, so "
+                      f"{out[0]} are used (the answers do not depend on it)", RuntimeWarning,
+                      stacklevel=4)
+
+
+_warned = set()
 _main = threading.main_thread()
 _sigint = threading.local()  # the main thread's own flag, made on first use
 

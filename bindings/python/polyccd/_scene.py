@@ -169,6 +169,7 @@ def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, lim
                          f"got {show(broad_phase)}")
     if isinstance(threads, bool) or not isinstance(threads, int) or not 1 <= threads <= 1024:
         raise InputError(f"threads: expected an integer from 1 to 1024, got {show(threads)}")
+    _limits.warn_threads(threads)
     if all_contacts not in (True, False):
         raise InputError(f"all_contacts: expected True or False, got {show(all_contacts)}")
     cfg, keep = _config(time_tolerance, True, want_exact, limits)

@@ -179,23 +179,24 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
 
 # ---------------------------------------------------------------------------- files ---
 
-def _check_chunk(paths, threads):
+def _check_chunk(paths, threads, limits=None):
     from .apps._corpus import read_case, solve_case, solve_scene_case
     out = []
     for path in paths:
         try:
             what, case = read_case(path)
-            out.append(solve_scene_case(case, threads=threads) if what == "scene"
-                       else solve_case(case))
+            out.append(solve_scene_case(case, limits=limits, threads=threads) if what == "scene"
+                       else solve_case(case, limits))
         except InputError as e:
             out.append(e)
     return out
 
 
-def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None):
+def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None, limits=None):
     """Yields, for each scene or query file, what `polyccd check FILE` computes: the
-    SceneResult or Result, or the InputError of a bad file (returned, not raised)."""
-    return map_chunks(_check_chunk, [str(p) for p in paths], threads, client=client,
+    SceneResult or Result, or the InputError of a bad file (returned, not raised).
+    limits: a polyccd.Limits without a Cancel (each worker applies it to each file)."""
+    return map_chunks(_check_chunk, [str(p) for p in paths], threads, limits, client=client,
                       chunk_size=chunk_size, progress=progress, desc="check", unit="file")
 
 

@@ -31,10 +31,10 @@ def files_under(paths, pattern):
     return found
 
 
-def solve_case(case):
+def solve_case(case, limits=None):
     """The Result of a validated QueryCase (its time tolerance applies)."""
     return solve_query(case.kind, case.points, case.radii,
-                       case.time_tolerance or DEFAULT_TOLERANCE, True, True)
+                       case.time_tolerance or DEFAULT_TOLERANCE, True, True, limits)
 
 
 def _text(x):
@@ -56,10 +56,11 @@ def read_case(path):
         return "scene", scene_from_doc(doc)
 
 
-def solve_scene_case(scene, **kw):
+def solve_scene_case(scene, limits=None, **kw):
     """The SceneResult of (bodies, options, expect) (its time tolerance applies)."""
     bodies, options, _ = scene
-    return check_scene(bodies, time_tolerance=options.time_tolerance or DEFAULT_TOLERANCE, **kw)
+    return check_scene(bodies, time_tolerance=options.time_tolerance or DEFAULT_TOLERANCE,
+                       limits=limits, **kw)
 
 
 def compare(expect, result, tolerance):

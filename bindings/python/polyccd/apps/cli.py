@@ -26,6 +26,7 @@ from .._results import result_json, time_json
 from .._scene import BROAD_PHASES
 from ._progress import bar, echo
 from ._scene_file import load_scene
+from .._limits import DEFAULT_MAX_NUMBER_BITS, Limits
 
 OK, FAILED, BAD_INPUT = 0, 1, 2
 
@@ -64,14 +65,14 @@ def _check_json(result):
     return out
 
 
-def _check_serial(files, threads, progress):
+def _check_serial(files, threads, progress, limits=None):
     """(SceneResult | Result | InputError) per file, solved here in order."""
     with bar(len(files), "check", "file", progress if len(files) > 1 else False) as b:
         for path in files:
             try:
                 what, case = read_case(path)
-                yield (solve_scene_case(case, threads=threads) if what == "scene"
-                       else solve_case(case))
+                yield (solve_scene_case(case, limits=limits, threads=threads) if what == "scene"
+                       else solve_case(case, limits))
             except InputError as e:
                 yield e
             b.update()
@@ -86,9 +87,10 @@ def cmd_check(args):
         if _distributed(args):
             distributed, client = stack.enter_context(_cluster(args))
             results = distributed.check_map(files, threads=args.threads, client=client,
+                                            limits=_limits(args),
                                             progress=_progress(args))
         else:
-            results = _check_serial(files, args.threads, _progress(args))
+            results = _check_serial(files, args.threads, _progress(args), _limits(args))
         stack.callback(results.close)  # the bar ends (and the cluster's tasks) before more output
         for path, result in zip(files, results):
             if isinstance(result, InputError):
@@ -149,7 +151,7 @@ def cmd_index(args):
             raise InputError(f"bodies[{stored}].{e}") from None
         others = [k for k in range(len(bodies)) if k != stored]
         options = dict(time_tolerance=tolerance, all_contacts=args.all_contacts,
-                       threads=args.threads, broad_phase=args.broad_phase)
+                       threads=args.threads, broad_phase=args.broad_phase, limits=_limits(args))
         for k in others:  # every query motion checked first, as the serial run meets them
             if bodies[k].motion is not None:
                 try:
@@ -295,6 +297,38 @@ def cmd_demo(args):
     return max(status, run_queries([folder], root=folder))
 
 
+def _positive(kind):
+    def parse(text):
+        try:
+            x = kind(text)
+        except ValueError:
+            x = 0
+        if not (x > 0 and x < float("inf")):
+            raise argparse.ArgumentTypeError(f"expected a number > 0, got {text!r}")
+        return x
+    return parse
+
+
+def _limit_flags(c):
+    """--max-seconds, --max-work, --max-number-bits (polyccd.Limits, pccd_config)."""
+    c.add_argument("--max-seconds", type=_positive(float), metavar="S",
+                   help="end a file's check after S seconds (exit 2 with the limit's message)")
+    c.add_argument("--max-work", type=_positive(int), metavar="N",
+                   help="end a file's check after N work steps (deterministic: the same "
+                   "files end on every machine and thread count)")
+    c.add_argument("--max-number-bits", type=_positive(int), metavar="B",
+                   help=f"largest input number in bits (default {DEFAULT_MAX_NUMBER_BITS}); "
+                   "raise it for inputs with longer numbers")
+
+
+def _limits(args):
+    """The polyccd.Limits of the flags (None: the defaults)."""
+    if args.max_seconds is None and args.max_work is None and args.max_number_bits is None:
+        return None
+    return Limits(max_seconds=args.max_seconds, max_work=args.max_work,
+                  max_number_bits=args.max_number_bits or DEFAULT_MAX_NUMBER_BITS)
+
+
 def _threads(text):
     try:
         n = int(text)
@@ -336,6 +370,7 @@ def parser():
                        "(several files: one JSON line per file, with \"file\")")
     c.add_argument("file", nargs="+", metavar="FILE.json")
     c.add_argument("--threads", type=int, default=1, help="worker threads for scenes (default 1)")
+    _limit_flags(c)
     _cluster_flags(c)
     c.set_defaults(run=cmd_check)
     c = sub.add_parser("index", help="index one body of a scene file and check every other "
@@ -349,6 +384,7 @@ def parser():
                    help="list every touching feature pair with its own first time")
     c.add_argument("--threads", type=_threads, default=1, help="worker threads, 1 to 1024 "
                    "(default 1)")
+    _limit_flags(c)
     _cluster_flags(c)
     c.set_defaults(run=cmd_index)
     c = sub.add_parser("corpus", help="check every *.json case under the paths "
