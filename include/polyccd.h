@@ -177,6 +177,13 @@ typedef struct pccd_config {
   const pccd_cancel *cancel;  /* NULL (default), or a flag that cancels the call when set */
   size_t max_number_bits;     /* input limit: bits of the largest input number (above);
                                  default PCCD_DEFAULT_MAX_NUMBER_BITS; 0: no limit */
+  const char *min_distance;   /* minimum separation delta >= 0, a rational string; NULL
+                                 (default) means 0. With delta > 0 a contact is a time
+                                 when the closed primitives are within distance delta
+                                 (the first time the distance drops to delta or below;
+                                 at t = 0 when it starts there); balls grow by delta.
+                                 Primitive queries and batches only: scenes and
+                                 indexes return PCCD_EINVAL for delta > 0. Copied. */
 } pccd_config;
 
 /* Fills *cfg with the defaults. PCCD_EINVAL when cfg is NULL. */

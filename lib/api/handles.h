@@ -39,6 +39,8 @@ pred::Contact_result solve_query(const pccd_query &q, const pred::Solve_options 
 
 // Reads a pccd_config (NULL: defaults) into solver options; Input_error when invalid.
 pred::Solve_options read_config(const pccd_config *cfg);
+// True when cfg sets config.min_distance (the fast linear paths assume delta = 0).
+bool has_min_distance(const pccd_config *cfg);
 // The validation of read_config alone (no options built).
 void checked_config(const pccd_config *cfg);
 

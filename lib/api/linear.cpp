@@ -137,9 +137,10 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
     pccd::api::check_finite(p_t1, n, "p_t1", nullptr);
     const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
     pccd::api::check_double_bits(limits, p_t0, p_t1, n, nullptr);
-    if (!pccd::api::filtered(k, p_t0, p_t1, res->r)) {
+    const bool delta = pccd::api::has_min_distance(cfg);  // the fast paths assume delta = 0
+    if (delta || !pccd::api::filtered(k, p_t0, p_t1, res->r)) {
       const pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
-      if (!pccd::api::certified_hit(k, p_t0, p_t1, opt, res->r)) {
+      if (delta || !pccd::api::certified_hit(k, p_t0, p_t1, opt, res->r)) {
         const pccd::api::Call_budget budget(limits.work);
         res->r = pccd::api::solve_staged(k, n, p_t0, p_t1, opt);
       }
@@ -197,7 +198,8 @@ PCCD_API int pccd_solve_linear_batch_d(pccd_kind kind, size_t n, const double *t
       for (size_t q = c * pccd::api::kChunk; q < end; ++q) {
         const double *p0 = t0 + 3 * np * q, *p1 = t1 + 3 * np * q;
         pccd::api::reset(r);
-        if (!pccd::api::filtered(k, p0, p1, r) && !pccd::api::certified_hit(k, p0, p1, so, r))
+        if (sgn(so.delta) > 0 ||
+            (!pccd::api::filtered(k, p0, p1, r) && !pccd::api::certified_hit(k, p0, p1, so, r)))
           r = pccd::api::solve_staged(k, np, p0, p1, so);
         pccd::api::write(*out, q, r);
       }

@@ -80,6 +80,9 @@ namespace pccd::api {
 scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt) {
   scene::Scene_options so;
   so.solve = read_config(cfg);
+  if (sgn(so.solve.delta) > 0)  // the broad phases do not grow their bounds by delta yet
+    throw Input_error("config.min_distance: scenes and indexes take no minimum distance yet "
+                      "(primitive queries and batches do)");
   if (!opt) return so;
   if (opt->struct_size != sizeof(pccd_scene_options))
     throw Input_error("opt.struct_size: " + std::to_string(opt->struct_size) +

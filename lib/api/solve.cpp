@@ -26,7 +26,7 @@ struct Tolerance_cache {
   Rational value;
   bool valid = false;
 };
-thread_local Tolerance_cache tl_tolerance;
+thread_local Tolerance_cache tl_tolerance, tl_min_distance;
 
 // Validates cfg (NULL: defaults); the parsed tolerance when cfg has one, else nullptr.
 const Rational *checked_tolerance(const pccd_config *cfg) {
@@ -53,12 +53,30 @@ const Rational *checked_tolerance(const pccd_config *cfg) {
 
 void checked_config(const pccd_config *cfg) { checked_tolerance(cfg); }
 
+bool has_min_distance(const pccd_config *cfg) {
+  return cfg && cfg->struct_size == sizeof(pccd_config) && cfg->min_distance;
+}
+
 pred::Solve_options read_config(const pccd_config *cfg) {
   pred::Solve_options o;
   if (const Rational *tol = checked_tolerance(cfg)) o.tol = *tol;
   if (!cfg) return o;
   o.want_time = cfg->want_time != 0;
   o.want_exact = cfg->want_exact != 0;
+  if (has_min_distance(cfg)) {
+    Tolerance_cache &c = tl_min_distance;
+    if (!(c.valid && std::strcmp(cfg->min_distance, c.text.c_str()) == 0)) {
+      c.valid = false;
+      Rational d = arith::parse_rational(cfg->min_distance, "config.min_distance");
+      if (sgn(d) < 0)
+        throw Input_error(std::string("config.min_distance: \"") + cfg->min_distance +
+                          "\" must be >= 0");
+      c.text = cfg->min_distance;
+      c.value = std::move(d);
+      c.valid = true;
+    }
+    o.delta = c.value;
+  }
   return o;
 }
 
@@ -114,6 +132,7 @@ PCCD_API int pccd_config_init(pccd_config *cfg) {
     cfg->max_work = 0;
     cfg->cancel = nullptr;
     cfg->max_number_bits = PCCD_DEFAULT_MAX_NUMBER_BITS;
+    cfg->min_distance = nullptr;
     return PCCD_OK;
   });
 }

@@ -185,12 +185,14 @@ void add_edge_edge(Feature_set<NT> &set, const Point_traj<NT> &a0, const Point_t
 // hit of one of these systems and every hit is a contact (distance exactly r); the
 // vertex systems are closed sublevel sets, which makes the union closed. A ball that
 // already meets the triangle at t = 0 without touching a vertex is found by the
-// static test (pred/static_contact.h).
+// static test (pred/static_contact.h). `label` (optional) names the system's feature
+// otherwise (the minimum-separation queries of delta_systems.h reuse these systems with
+// the ball at a vertex of radius delta).
 template <class NT>
 void add_ball_vertex(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_traj<NT> &v,
-                     const Poly<NT> &r2d2, int iv) {
+                     const Poly<NT> &r2d2, int iv, const Feature *label = nullptr) {
   using K = typename System<NT>::Kind;
-  const Feature feat{SPHERE_VERTEX, {{0, iv, -1, -1}}};
+  const Feature feat = label ? *label : Feature{SPHERE_VERTEX, {{0, iv, -1, -1}}};
   if (!set.wants(feat)) return skip_feature(set, feat);
   auto d = c - v;
   add_system(set, feat, K::sublevel, motion::dot(d, d) - r2d2, {});
@@ -198,9 +200,10 @@ void add_ball_vertex(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_
 
 template <class NT>
 void add_ball_edge(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_traj<NT> &e0,
-                   const Point_traj<NT> &e1, const Poly<NT> &r2d2, int i0, int i1) {
+                   const Point_traj<NT> &e1, const Poly<NT> &r2d2, int i0, int i1,
+                   const Feature *label = nullptr) {
   using K = typename System<NT>::Kind;
-  const Feature feat{SPHERE_EDGE, {{0, i0, i1, -1}}};
+  const Feature feat = label ? *label : Feature{SPHERE_EDGE, {{0, i0, i1, -1}}};
   if (!set.wants(feat)) return skip_feature(set, feat);
   auto e = e1 - e0;
   auto u = motion::cross(e, c - e0);
@@ -211,9 +214,10 @@ void add_ball_edge(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_tr
 
 template <class NT>
 void add_ball_face(Feature_set<NT> &set, const Point_traj<NT> &c,
-                   const std::array<const Point_traj<NT> *, 3> &fv, const Poly<NT> &r2d2) {
+                   const std::array<const Point_traj<NT> *, 3> &fv, const Poly<NT> &r2d2,
+                   const Feature *label = nullptr) {
   using K = typename System<NT>::Kind;
-  const Feature feat{SPHERE_FACE, {{0, 1, 2, 3}}};
+  const Feature feat = label ? *label : Feature{SPHERE_FACE, {{0, 1, 2, 3}}};
   if (!set.wants(feat)) return skip_feature(set, feat);
   auto n = motion::cross(*fv[1] - *fv[0], *fv[2] - *fv[0]);
   Poly<NT> h = motion::dot(n, c - *fv[0]);

@@ -41,6 +41,12 @@ bool bounds_separate(const Query_data<Interval> &q) {
                         arith::round_up(box[side][a].hi + grow)};
     }
   }
+  if (q.has_delta) {  // within delta: grow one side by delta * max D
+    const double dmax = q.scale.c.empty() ? 1.0 : poly::range_on_unit(q.scale).hi;
+    const double grow = (q.delta * Interval(dmax)).hi;
+    for (int a = 0; a < 3; ++a)
+      box[0][a] = {arith::round_down(box[0][a].lo - grow), arith::round_up(box[0][a].hi + grow)};
+  }
   for (int a = 0; a < 3; ++a)
     if (box[0][a].hi < box[1][a].lo || box[1][a].hi < box[0][a].lo) return true;
   return false;
@@ -50,6 +56,12 @@ bool bernstein_excludes(const Query_data<Interval> &q) {
   const Interval zero(0.0), one(1.0);
   const auto &p = q.p;
   auto rootless = [&](const Poly<Interval> &f) { return poly::certainly_no_root(f, zero, one); };
+  if (q.has_delta) {  // the polynomials below are those of delta = 0; only points have one
+    if (q.kind != VERTEX_VERTEX) return false;
+    auto d = p[0] - p[1];
+    Poly<Interval> f = motion::dot(d, d) - radius_squared(q.delta, q.scale);
+    return !f.c.empty() && poly::certain_sign_on(f, zero, one) > 0;
+  }
   switch (q.kind) {
     case VERTEX_FACE: {
       auto n = motion::cross(p[2] - p[1], p[3] - p[1]);

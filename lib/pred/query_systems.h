@@ -3,6 +3,7 @@
 #pragma once
 #include <vector>
 
+#include "pred/delta_systems.h"
 #include "pred/features.h"
 
 namespace pccd::pred {
@@ -14,12 +15,19 @@ namespace pccd::pred {
 // polynomial D > 0 on [0, 1] (body queries clear the denominators of rational motions
 // this way). Contact conditions between points are homogeneous in point differences
 // and unchanged; radii are multiplied by D. Empty means D = 1.
+//
+// `has_delta`: a minimum separation delta > 0 (pccd_config.min_distance) for the kinds
+// VERTEX_FACE, EDGE_EDGE, VERTEX_EDGE, VERTEX_VERTEX: a contact is then a time when the
+// closed primitives are within distance delta (delta_systems.h). Scaled by D like radii.
+// (Ball kinds take delta into their radii instead.)
 template <class NT>
 struct Query_data {
   int kind = 0;
   std::vector<Point_traj<NT>> p;
   NT radius[2];
   Poly<NT> scale;
+  bool has_delta = false;
+  NT delta = arith::from_int<NT>(0);
 };
 
 // r^2 D^2 as a polynomial.
@@ -37,6 +45,10 @@ Feature_set<NT> build_systems(const Query_data<NT> &q, const std::vector<Feature
   Feature_set<NT> s;
   s.only = only;
   const auto &p = q.p;
+  if (q.has_delta) {
+    add_delta_systems(s, q.kind, p, radius_squared(q.delta, q.scale));
+    return s;
+  }
   switch (q.kind) {
     case VERTEX_FACE:
       add_vertex_face(s, p[0], {{&p[1], &p[2], &p[3]}}, {{0, 1, 2, 3}});

@@ -71,15 +71,29 @@ poly::Search_state<Rational> exact_state(const poly::Search_state<Interval> &st,
 template <class NT>
 NT at_zero(const Poly<NT> &p) { return p.c.empty() ? arith::from_int<NT>(0) : p.c[0]; }
 
-// SPHERE_TRIANGLE: the ball already meets the closed triangle at t = 0.
+// The primitives already touch at t = 0: SPHERE_TRIANGLE, the ball meets the closed
+// triangle; a query with a minimum separation delta, the closed primitives are within
+// delta (the vertex's ball of radius delta meets the closed triangle or segment, or
+// the segments are within delta).
 template <class NT>
-bool ball_meets_triangle_at_zero(const Query_data<NT> &q) {
-  std::array<Vec3<NT>, 4> x;
-  for (int i = 0; i < 4; ++i)
+bool meets_at_zero(const Query_data<NT> &q) {
+  std::vector<Vec3<NT>> x(q.p.size());
+  for (size_t i = 0; i < q.p.size(); ++i)
     for (int a = 0; a < 3; ++a) x[i][a] = at_zero(q.p[i][a]);
   NT d = q.scale.c.empty() ? arith::from_int<NT>(1) : at_zero(q.scale);
-  NT r2d2 = q.radius[0] * q.radius[0] * d * d;
-  return ball_meets_triangle(x[0], r2d2, {{x[1], x[2], x[3]}});
+  const NT &r = q.kind == SPHERE_TRIANGLE ? q.radius[0] : q.delta;
+  NT r2d2 = r * r * d * d;
+  switch (q.kind) {
+    case SPHERE_TRIANGLE:
+    case VERTEX_FACE: return ball_meets_triangle(x[0], r2d2, {{x[1], x[2], x[3]}});
+    case VERTEX_EDGE: return ball_meets_triangle(x[0], r2d2, {{x[1], x[2], x[2]}});
+    case VERTEX_VERTEX: {
+      Vec3<NT> e = sub(x[0], x[1]);
+      return arith::sign(dot3(e, e) - r2d2) <= 0;
+    }
+    case EDGE_EDGE: return segments_within(x[0], x[1], x[2], x[3], r2d2);
+  }
+  throw arith::Internal_error("meets_at_zero: no static test for this kind");
 }
 
 // The query over [0, u] reparametrized to [0, 1] (for the filters of a bounded search).
@@ -104,12 +118,14 @@ Query_data<Rational> integral(Query_data<Rational> q) {
     for (int a = 0; a < 3; ++a)
       for (const Rational &c : pt[a].c) take(c);
   for (const Rational &r : q.radius) take(r);
+  take(q.delta);
   if (L != 1) {
     const Rational l(L);
     for (auto &pt : q.p)
       for (int a = 0; a < 3; ++a)
         for (Rational &c : pt[a].c) c *= l;
     for (Rational &r : q.radius) r *= l;
+    q.delta *= l;
   }
   return q;
 }
@@ -132,7 +148,9 @@ bool first_time_irrational(const Query_data<Rational> &q, const std::vector<Feat
   for (const Feature &f : active) {
     const auto &p = q.p;
     const auto &i = f.points;
-    if (f.kind == VERTEX_FACE && q.kind == VERTEX_FACE)
+    if (q.has_delta)
+      others.push_back(f);  // the polynomials below are those of delta = 0
+    else if (f.kind == VERTEX_FACE && q.kind == VERTEX_FACE)
       fs.push_back(vertex_face_polynomial(p[i[0]], {{&p[i[1]], &p[i[2]], &p[i[3]]}}));
     else if (f.kind == EDGE_EDGE && q.kind == EDGE_EDGE)
       fs.push_back(edge_edge_polynomial(p[i[0]], p[i[1]], p[i[2]], p[i[3]]));
@@ -153,18 +171,51 @@ bool first_time_irrational(const Query_data<Rational> &q, const std::vector<Feat
   return true;
 }
 
-void set_contact_at_zero(Contact_result &out, int stage) {
+// Touching at t = 0 by the static test: the feature is the whole query (its kind, all
+// its points).
+void set_contact_at_zero(Contact_result &out, int stage, int kind) {
   out.collides = out.exact = true;
   out.lo = out.hi = 0;
-  out.features = {Feature{SPHERE_TRIANGLE, {{0, 1, 2, 3}}}};
+  Feature whole{kind, {{0, 1, -1, -1}}};
+  const int points = kind == VERTEX_EDGE ? 3 : kind == VERTEX_VERTEX ? 2 : 4;
+  for (int i = 0; i < points; ++i) whole.points[i] = i;
+  out.features = {whole};
   out.stage = stage;
 }
+
+// The query at minimum separation delta > 0 (Solve_options::delta): radii + delta for
+// balls, the delta systems for the point kinds (query_systems.h, has_delta).
+template <class NT>
+Query_data<NT> with_delta(Query_data<NT> q, const NT &delta) {
+  if (q.kind == SPHERE_SPHERE || q.kind == SPHERE_TRIANGLE) {
+    q.radius[0] = q.radius[0] + delta;
+  } else {
+    q.has_delta = true;
+    q.delta = delta;
+  }
+  return q;
+}
+
+Contact_result solve_at(const Query_data<Interval> &iq,
+                        const std::function<Query_data<Rational>()> &exact_points,
+                        const Solve_options &opt);
 
 }  // namespace
 
 Contact_result solve(const Query_data<Interval> &iq,
                      const std::function<Query_data<Rational>()> &exact_points,
                      const Solve_options &opt) {
+  if (sgn(opt.delta) == 0) return solve_at(iq, exact_points, opt);
+  if (sgn(opt.delta) < 0) throw arith::Internal_error("solve: a negative minimum distance");
+  const Query_data<Interval> dq = with_delta(iq, arith::enclose(opt.delta));
+  return solve_at(dq, [&] { return with_delta(exact_points(), opt.delta); }, opt);
+}
+
+namespace {
+
+Contact_result solve_at(const Query_data<Interval> &iq,
+                        const std::function<Query_data<Rational>()> &exact_points,
+                        const Solve_options &opt) {
   Contact_result out;
   const arith::Nearest_scope nearest;  // lets intervals certify exact operations
   util::work_step();  // one query (util/work_budget.h)
@@ -191,17 +242,17 @@ Contact_result solve(const Query_data<Interval> &iq,
       }
     }
   }
-  if (iq.kind == SPHERE_TRIANGLE) {
+  if (iq.kind == SPHERE_TRIANGLE || iq.has_delta) {
     bool meets;
     int stage = STAGE_INTERVAL;
     try {
-      meets = ball_meets_triangle_at_zero(iq);
+      meets = meets_at_zero(iq);
     } catch (const arith::Uncertain &) {
-      meets = ball_meets_triangle_at_zero(integral(exact_points()));
+      meets = meets_at_zero(integral(exact_points()));
       stage = STAGE_EXACT;
     }
     if (meets) {
-      set_contact_at_zero(out, stage);
+      set_contact_at_zero(out, stage, iq.kind);
       return out;
     }
   }
@@ -260,5 +311,7 @@ Contact_result solve(const Query_data<Interval> &iq,
   }
   return out;
 }
+
+}  // namespace
 
 }  // namespace pccd::pred

@@ -26,6 +26,11 @@ struct Solve_options {
   // (poly/earliest.h), so answers never depend on it. Body queries set it from the
   // best contact found so far.
   arith::Rational until = 1;
+  // Minimum separation delta >= 0 (pccd_config.min_distance): a contact is a time when
+  // the closed primitives are within distance delta (0: they touch). solve() applies
+  // it to the query: ball radii grow by delta, point kinds get the systems of
+  // pred/delta_systems.h.
+  arith::Rational delta = 0;
 };
 
 struct Contact_result {

@@ -110,6 +110,22 @@ bool ball_meets_triangle(const Vec3<NT> &c, const NT &r2d2, const std::array<Vec
   return sign(h * h - r2d2 * dot3(n, n)) <= 0;
 }
 
+template <class NT>
+bool segments_within(const Vec3<NT> &p, const Vec3<NT> &q, const Vec3<NT> &a, const Vec3<NT> &b,
+                     const NT &r2d2) {
+  if (ball_meets_triangle(p, r2d2, {{a, b, b}}) || ball_meets_triangle(q, r2d2, {{a, b, b}}) ||
+      ball_meets_triangle(a, r2d2, {{p, q, q}}) || ball_meets_triangle(b, r2d2, {{p, q, q}}))
+    return true;
+  const Vec3<NT> ea = sub(q, p), eb = sub(b, a), w = sub(a, p);
+  const Vec3<NT> n = cross3(ea, eb);
+  const NT nn = dot3(n, n);
+  if (sign(nn) <= 0) return false;  // parallel: an endpoint pair above is as close
+  const NT s = dot3(cross3(w, eb), n), u = dot3(cross3(w, ea), n);
+  if (sign(s) <= 0 || sign(nn - s) <= 0 || sign(u) <= 0 || sign(nn - u) <= 0) return false;
+  const NT h = dot3(n, w);
+  return sign(h * h - r2d2 * nn) <= 0;
+}
+
 template bool triangles_meet(const std::array<Vec3<arith::Rational>, 3> &,
                              const std::array<Vec3<arith::Rational>, 3> &);
 template bool triangles_meet(const std::array<Vec3<arith::Interval>, 3> &,
@@ -118,5 +134,11 @@ template bool ball_meets_triangle(const Vec3<arith::Rational> &, const arith::Ra
                                   const std::array<Vec3<arith::Rational>, 3> &);
 template bool ball_meets_triangle(const Vec3<arith::Interval> &, const arith::Interval &,
                                   const std::array<Vec3<arith::Interval>, 3> &);
+template bool segments_within(const Vec3<arith::Rational> &, const Vec3<arith::Rational> &,
+                              const Vec3<arith::Rational> &, const Vec3<arith::Rational> &,
+                              const arith::Rational &);
+template bool segments_within(const Vec3<arith::Interval> &, const Vec3<arith::Interval> &,
+                              const Vec3<arith::Interval> &, const Vec3<arith::Interval> &,
+                              const arith::Interval &);
 
 }  // namespace pccd::pred

@@ -56,6 +56,13 @@ template <class NT> bool triangles_meet(const std::array<Vec3<NT>, 3> &a,
 template <class NT> bool ball_meets_triangle(const Vec3<NT> &c, const NT &r2d2,
                                              const std::array<Vec3<NT>, 3> &t);
 
+// The closed segments [p, q] and [a, b] are within distance r (r2d2 = r^2 D^2): an
+// endpoint's ball meets the other closed segment, or the lines' closest points lie
+// strictly inside both segments at distance <= r (delta_systems.h: the closest pair
+// lies in relatively open features).
+template <class NT> bool segments_within(const Vec3<NT> &p, const Vec3<NT> &q, const Vec3<NT> &a,
+                                         const Vec3<NT> &b, const NT &r2d2);
+
 extern template bool triangles_meet(const std::array<Vec3<arith::Rational>, 3> &,
                                     const std::array<Vec3<arith::Rational>, 3> &);
 extern template bool triangles_meet(const std::array<Vec3<arith::Interval>, 3> &,
@@ -64,5 +71,11 @@ extern template bool ball_meets_triangle(const Vec3<arith::Rational> &, const ar
                                          const std::array<Vec3<arith::Rational>, 3> &);
 extern template bool ball_meets_triangle(const Vec3<arith::Interval> &, const arith::Interval &,
                                          const std::array<Vec3<arith::Interval>, 3> &);
+extern template bool segments_within(const Vec3<arith::Rational> &, const Vec3<arith::Rational> &,
+                                     const Vec3<arith::Rational> &, const Vec3<arith::Rational> &,
+                                     const arith::Rational &);
+extern template bool segments_within(const Vec3<arith::Interval> &, const Vec3<arith::Interval> &,
+                                     const Vec3<arith::Interval> &, const Vec3<arith::Interval> &,
+                                     const arith::Interval &);
 
 }  // namespace pccd::pred

@@ -281,12 +281,46 @@ static void cancel_and_deadline(void)
   pccd_scene_free(s);
 }
 
+/* config.min_distance: a primitive query's first time within distance delta (a point
+ * from x = 3 to x = 0 against the origin, delta = 1: |3 - 3t| = 1 at t = 2/3), its bad
+ * values, and the scenes that refuse it. */
+static void min_distance(void)
+{
+  pccd_config cfg;
+  pccd_result *res = NULL;
+  pccd_scene *s = rows_scene(2);
+  pccd_report *rep = NULL;
+  const double p0[6] = {0, 0, 0, 3, 0, 0}, p1[6] = {0, 0, 0, 0, 0, 0};
+  char buf[32];
+
+  g_case = "min_distance";
+  OK(pccd_result_new(&res));
+  OK(pccd_report_new(&rep));
+  OK(pccd_config_init(&cfg));
+  CHECK(cfg.min_distance == NULL);
+  cfg.min_distance = "1";
+  OK(API(pccd_solve_linear_d(PCCD_VERTEX_VERTEX, p0, p1, &cfg, res)));
+  OK(pccd_result_time(res, 2, buf, sizeof buf, NULL));
+  CHECK(strcmp(buf, "2/3") == 0);
+  cfg.min_distance = "-1";
+  FAILS(API(pccd_solve_linear_d(PCCD_VERTEX_VERTEX, p0, p1, &cfg, res)), PCCD_EINVAL,
+        "config.min_distance: \"-1\" must be >= 0");
+  cfg.min_distance = "1";
+  FAILS(SOLVE(s, &cfg, NULL, rep), PCCD_EINVAL, "config.min_distance: scenes and indexes take no minimum");
+  cfg.min_distance = "0";
+  OK(SOLVE(s, &cfg, NULL, rep));
+  pccd_result_free(res);
+  pccd_report_free(rep);
+  pccd_scene_free(s);
+}
+
 static void cases(void)
 {
   defaults_and_bad_values();
   input_limit();
   work_limit_is_deterministic();
   cancel_and_deadline();
+  min_distance();
 }
 
 int main(void) { return run_in_every_mode(cases); }

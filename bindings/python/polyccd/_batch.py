@@ -32,7 +32,7 @@ class LinearBatch:
 
 
 def solve_linear_many(kind, t0, t1, *, time_tolerance="1e-12", want_time=True, want_exact=True,
-                      threads=1, limits=None):
+                      threads=1, limits=None, min_distance=None):
     """Every query k of t0[k], t1[k] (float64 arrays of shape (n, npoints, 3): points
     moving linearly from t0 to t1) solved in one call on `threads` workers; answers
     do not depend on the number of threads. Returns a LinearBatch of numpy arrays."""
@@ -46,9 +46,9 @@ def solve_linear_many(kind, t0, t1, *, time_tolerance="1e-12", want_time=True, w
     _limits.warn_threads(threads)
     n = a0.shape[0]
     if limits is None:
-        cfg, _keep = _cached_config(time_tolerance, want_time, want_exact)
+        cfg, _keep = _cached_config(time_tolerance, want_time, want_exact, min_distance)
     else:
-        cfg, _keep = _config(time_tolerance, want_time, want_exact, limits)
+        cfg, _keep = _config(time_tolerance, want_time, want_exact, limits, min_distance)
     opt = ffi.new("pccd_batch_options *")
     check(lib.pccd_batch_options_init(opt))
     opt.threads = threads

@@ -76,32 +76,37 @@ class _Thread(threading.local):
 
 
 
-def _cached_config(time_tolerance, want_time, want_exact):
+def _cached_config(time_tolerance, want_time, want_exact, min_distance=None):
     try:
-        key = (type(time_tolerance), time_tolerance, bool(want_time), bool(want_exact))
+        key = (type(time_tolerance), time_tolerance, bool(want_time), bool(want_exact),
+               type(min_distance), min_distance)
         hit = _thread.cache.get(key)
     except TypeError:  # an unhashable tolerance: no caching
-        return _config(time_tolerance, want_time, want_exact)
+        return _config(time_tolerance, want_time, want_exact, min_distance=min_distance)
     if hit is None:
-        hit = _config(time_tolerance, want_time, want_exact)
+        hit = _config(time_tolerance, want_time, want_exact, min_distance=min_distance)
         if len(_thread.cache) > 32:
             _thread.cache.clear()
         _thread.cache[key] = hit
     return hit
 
 
-def _config(time_tolerance, want_time, want_exact, limits=None):
-    """(pccd_config, keep-alive) of the keyword arguments. The tolerance is named by its
-    C field, config.time_tolerance, here as in the library's messages."""
+def _config(time_tolerance, want_time, want_exact, limits=None, min_distance=None):
+    """(pccd_config, keep-alive) of the keyword arguments. The tolerance and the minimum
+    distance are named by their C fields, config.time_tolerance and config.min_distance,
+    here as in the library's messages."""
     cfg = ffi.new("pccd_config *")
     check(lib.pccd_config_init(cfg))
     _limits.apply(cfg, limits)
-    keep = limits
+    keep = [limits]
+    if min_distance is not None:
+        text = number_text(min_distance, "config.min_distance")
+        keep.append(ffi.new("char[]", text.encode("utf-8", "replace")))
+        cfg.min_distance = keep[-1]
     if time_tolerance is not None:
         text = number_text(time_tolerance, "config.time_tolerance")
-        text_keep = ffi.new("char[]", text.encode("utf-8", "replace"))
-        cfg.time_tolerance = text_keep
-        keep = (text_keep, limits)
+        keep.append(ffi.new("char[]", text.encode("utf-8", "replace")))
+        cfg.time_tolerance = keep[-1]
     cfg.want_time = 1 if want_time else 0
     cfg.want_exact = 1 if want_exact else 0
     return cfg, keep
@@ -110,7 +115,8 @@ def _config(time_tolerance, want_time, want_exact, limits=None):
 _thread = _Thread()  # after _config, which its __init__ calls
 
 
-def solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limits=None):
+def solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limits=None,
+                min_distance=None):
     """solve(), positional. Shapes are checked here; every number and index is checked
     by C, which names it as points[i][axis][coefficient] or radii[which]."""
     code = kind_code(kind)
@@ -140,22 +146,24 @@ def solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limi
             check(lib.pccd_query_set_radius_s(query, which, text))
     elif radii is not None:
         raise InputError(f"radii: only sphere-sphere queries have radii, not {kind}")
-    cfg, keep = _config(time_tolerance, want_time, want_exact, limits)
+    cfg, keep = _config(time_tolerance, want_time, want_exact, limits, min_distance)
     res = handles.new("result")
     check(_limits.run(cfg, lib.pccd_query_solve, query, cfg, res))
     return read_result(res)
 
 
 def solve(kind, points, radii=None, *, time_tolerance="1e-12", want_time=True,
-          want_exact=True, limits=None):
+          want_exact=True, limits=None, min_distance=None):
     """Decides exactly whether the moving primitives touch during [0, 1]; see
     bindings/python/API.md. points: one [xs, ys, zs] per point, ascending powers of t.
-    limits: a polyccd.Limits (work limits, input limit) or None for the defaults."""
-    return solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limits)
+    limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
+    min_distance: delta >= 0: the first time the closed primitives are within delta."""
+    return solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limits,
+                       min_distance)
 
 
 def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
-                 want_exact=True, limits=None):
+                 want_exact=True, limits=None, min_distance=None):
     """solve() for points moving linearly from p_t0 (t = 0) to p_t1 (t = 1), arrays of
     shape (npoints, 3): float64 (exact binary values), integer or object arrays (int,
     Fraction, float) or nested lists; values that are not exactly doubles take the exact
@@ -166,11 +174,11 @@ def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
         a1 = linear_coords(p_t1, "p_t1", _NPOINTS[kind])
     except NotDouble:
         return solve_query(kind, linear_trajectories(p_t0, p_t1, _NPOINTS[kind]), None,
-                           time_tolerance, want_time, want_exact, limits)
+                           time_tolerance, want_time, want_exact, limits, min_distance)
     if limits is None:
-        cfg, _keep = _cached_config(time_tolerance, want_time, want_exact)
+        cfg, _keep = _cached_config(time_tolerance, want_time, want_exact, min_distance)
     else:
-        cfg, _keep = _config(time_tolerance, want_time, want_exact, limits)
+        cfg, _keep = _config(time_tolerance, want_time, want_exact, limits, min_distance)
     res = _thread.res
     check(lib.pccd_solve_linear_d(code, ffi.from_buffer("double[]", a0),
                                   ffi.from_buffer("double[]", a1), cfg, res))

@@ -34,7 +34,8 @@ def files_under(paths, pattern):
 def solve_case(case, limits=None):
     """The Result of a validated QueryCase (its time tolerance applies)."""
     return solve_query(case.kind, case.points, case.radii,
-                       case.time_tolerance or DEFAULT_TOLERANCE, True, True, limits)
+                       case.time_tolerance or DEFAULT_TOLERANCE, True, True, limits,
+                       case.min_distance)
 
 
 def _text(x):

@@ -140,6 +140,9 @@ class QueryCase:
     radii: Optional[List[str]]
     time_tolerance: Optional[str]
     expect: Optional[Expect]
+    # options.min_distance (an optional extension of formats.md): the first time the
+    # closed primitives are within this distance (None: 0, they touch).
+    min_distance: Optional[str] = None
 
 
 def _expect_at(value, path):
@@ -217,7 +220,19 @@ def query_case(doc):
         raise InputError(f"radii: only sphere-sphere queries have radii, not {kind}")
     tolerance = options_and_labels(top)
     expect = _expect_at(top["expect"], "expect") if "expect" in top else None
-    return QueryCase(kind, points, radii, tolerance, expect)
+    return QueryCase(kind, points, radii, tolerance, expect, min_distance_option(top))
+
+
+def min_distance_option(top):
+    """options.min_distance of a query file (None when absent), a number >= 0."""
+    options = top.get("options")
+    if not isinstance(options, dict) or "min_distance" not in options:
+        return None
+    path = "options.min_distance"
+    text = number_at(options["min_distance"], path)
+    if exact_fraction(text, path) < 0:
+        raise InputError(f"{path}: {show(text)} must be >= 0")
+    return text
 
 
 def read_query(path):
