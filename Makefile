@@ -174,8 +174,9 @@ tsan: deps
 include tests/bench/bench.mk
 include tests/fuzz/fuzz.mk
 
-bench: all $(BUILD)/bench_linear
+bench: all $(BUILD)/bench_linear $(BUILD)/bench_min_distance
 	$(BUILD)/bench_linear $(BENCH_LINEAR_ARGS)
+	$(BUILD)/bench_min_distance $(BENCH_MD_ARGS)
 	$(VENV)/bin/pip install -q -r tests/bench/requirements.txt
 	$(VPY) tests/bench/bench_queries.py
 	$(VPY) tests/bench/bench_bodies.py

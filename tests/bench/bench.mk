@@ -39,4 +39,15 @@ $(BUILD)/bench_linear: $(BENCH_LINEAR_OBJS) $(TI_OBJS) $(PCCD_LIBDIR)/libpolyccd
 bench-linear: $(BUILD)/bench_linear
 	$(BUILD)/bench_linear $(BENCH_LINEAR_ARGS)
 
--include $(BENCH_LINEAR_OBJS:.o=.d) $(TI_OBJS:.o=.d)
+# bench_min_distance: pccd_config.min_distance against Tight Inclusion's ms on the public
+# set (tests/bench/bench_min_distance.cpp); `make bench` runs it after bench_linear.
+BENCH_MD_OBJS := $(patsubst %,$(BENCH_DIR)/%.o,bench_min_distance bench_linear_input)
+.PHONY: bench-min-distance
+$(BUILD)/bench_min_distance: $(BENCH_MD_OBJS) $(TI_OBJS) $(PCCD_LIBDIR)/libpolyccd.so
+	$(CXX) -o $@ $(BENCH_MD_OBJS) $(TI_OBJS) -L$(PCCD_LIBDIR) -lpolyccd -lgmp \
+	  -Wl,-rpath,$(abspath $(PCCD_LIBDIR)) -pthread
+
+bench-min-distance: $(BUILD)/bench_min_distance
+	$(BUILD)/bench_min_distance $(BENCH_MD_ARGS)
+
+-include $(BENCH_LINEAR_OBJS:.o=.d) $(BENCH_MD_OBJS:.o=.d) $(TI_OBJS:.o=.d)
