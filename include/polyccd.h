@@ -182,8 +182,9 @@ typedef struct pccd_config {
                                  when the closed primitives are within distance delta
                                  (the first time the distance drops to delta or below;
                                  at t = 0 when it starts there); balls grow by delta.
-                                 Primitive queries and batches only: scenes and
-                                 indexes return PCCD_EINVAL for delta > 0. Copied. */
+                                 Every query and body kind; scenes and indexes then
+                                 search brute force over the feature pairs (broad
+                                 phase AUTO or BRUTE; any other: PCCD_EINVAL). Copied. */
 } pccd_config;
 
 /* Fills *cfg with the defaults. PCCD_EINVAL when cfg is NULL. */

@@ -80,9 +80,7 @@ namespace pccd::api {
 scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt) {
   scene::Scene_options so;
   so.solve = read_config(cfg);
-  if (sgn(so.solve.delta) > 0)  // the broad phases do not grow their bounds by delta yet
-    throw Input_error("config.min_distance: scenes and indexes take no minimum distance yet "
-                      "(primitive queries and batches do)");
+
   if (!opt) return so;
   if (opt->struct_size != sizeof(pccd_scene_options))
     throw Input_error("opt.struct_size: " + std::to_string(opt->struct_size) +
@@ -98,6 +96,13 @@ scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene
   so.threads = opt->threads;
   so.all_contacts = opt->all_contacts == 1;
   so.broad_phase = static_cast<scene::Broad_phase>(opt->broad_phase);  // constants.cpp
+  // With a minimum distance only brute force lists every pair within delta so far
+  // (scene/broad_phase.h); auto takes it.
+  if (sgn(so.solve.delta) > 0 && so.broad_phase != scene::Broad_phase::automatic &&
+      so.broad_phase != scene::Broad_phase::brute)
+    throw Input_error("opt.broad_phase: " + std::to_string(opt->broad_phase) +
+                      " does not take config.min_distance > 0 yet; use PCCD_BROAD_AUTO or "
+                      "PCCD_BROAD_BRUTE (brute force over the feature pairs)");
   return so;
 }
 

@@ -14,8 +14,12 @@ enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3, bvh = 4
 // tests/bench/bench_bvh.py, tests/bench/bench_online.py). online: the pair comes from an
 // on-line index (the stored side's trees exist already and are shared by every query):
 // range; otherwise a scene's body pair: bvh (the hierarchies are built with the bodies).
-inline Broad_phase resolve(Broad_phase p, bool online) {
+// min_distance: the solve has a minimum separation delta > 0 (pred::Solve_options), which
+// only brute force covers so far (the other sources would have to grow their bounds by
+// delta; the api refuses them explicitly).
+inline Broad_phase resolve(Broad_phase p, bool online, bool min_distance = false) {
   if (p != Broad_phase::automatic) return p;
+  if (min_distance) return Broad_phase::brute;
   return online ? Broad_phase::range : Broad_phase::bvh;
 }
 

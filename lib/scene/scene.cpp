@@ -74,7 +74,7 @@ Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
   Search_options so;
   so.solve = opt.solve;
   so.all_contacts = opt.all_contacts;
-  so.phase = resolve(opt.broad_phase, stored >= 0);
+  so.phase = resolve(opt.broad_phase, stored >= 0, sgn(opt.solve.delta) > 0);
   so.stored = stored;
 
   std::vector<std::unique_ptr<Pair_work>> work;

@@ -306,7 +306,15 @@ static void min_distance(void)
   FAILS(API(pccd_solve_linear_d(PCCD_VERTEX_VERTEX, p0, p1, &cfg, res)), PCCD_EINVAL,
         "config.min_distance: \"-1\" must be >= 0");
   cfg.min_distance = "1";
-  FAILS(SOLVE(s, &cfg, NULL, rep), PCCD_EINVAL, "config.min_distance: scenes and indexes take no minimum");
+  OK(SOLVE(s, &cfg, NULL, rep)); /* auto: brute force */
+  {
+    pccd_scene_options opt;
+    OK(pccd_scene_options_init(&opt));
+    opt.broad_phase = PCCD_BROAD_BVH;
+    FAILS(SOLVE(s, &cfg, &opt, rep), PCCD_EINVAL, "opt.broad_phase: 4 does not take config.min_distance");
+    opt.broad_phase = PCCD_BROAD_BRUTE;
+    OK(SOLVE(s, &cfg, &opt, rep));
+  }
   cfg.min_distance = "0";
   OK(SOLVE(s, &cfg, NULL, rep));
   pccd_result_free(res);

@@ -35,25 +35,25 @@ class Index:
         return Index, (self.body,)
 
     def query(self, body, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-              broad_phase="auto", want_exact=True, limits=None):
+              broad_phase="auto", want_exact=True, limits=None, min_distance=None):
         """The SceneResult of the two bodies (indexed body, query body); the keyword
         arguments as for polyccd.check."""
         if not isinstance(body, Body):
             raise InputError(f"body: expected a polyccd.Body, got {show(body)}")
         cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
-                                   limits)
+                                   limits, min_distance)
         rep = handles.new("report")
         check(_limits.run(cfg, lib.pccd_index_query, self._handle, body.shape._handle,
                           _motion_handle(body.motion), cfg, opt, rep))
         return _read(rep, _names([self.body, body]), (self.body, body))
 
     def query_many(self, bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-                   broad_phase="auto", want_exact=True, limits=None):
+                   broad_phase="auto", want_exact=True, limits=None, min_distance=None):
         """The SceneResults of every query body, in order (one C call; `threads` workers
         share the queries, each query solved on one thread)."""
         bodies = _bodies_list(bodies)
         cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
-                                   limits)
+                                   limits, min_distance)
         n = len(bodies)
         shapes = ffi.new("pccd_body *[]", [b.shape._handle for b in bodies] or 1)
         motions = ffi.new("pccd_motion *[]", [_motion_handle(b.motion) for b in bodies] or 1)

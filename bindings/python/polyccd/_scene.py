@@ -162,7 +162,8 @@ def _bodies_list(bodies):
     return bodies
 
 
-def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None):
+def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None,
+             min_distance=None):
     """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query."""
     if broad_phase not in BROAD_PHASES:
         raise InputError("broad_phase: expected \"auto\", \"boxes\", \"brute\", \"bvh\" or \"range\", "
@@ -172,7 +173,7 @@ def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, lim
     _limits.warn_threads(threads)
     if all_contacts not in (True, False):
         raise InputError(f"all_contacts: expected True or False, got {show(all_contacts)}")
-    cfg, keep = _config(time_tolerance, True, want_exact, limits)
+    cfg, keep = _config(time_tolerance, True, want_exact, limits, min_distance)
     opt = ffi.new("pccd_scene_options *")
     check(lib.pccd_scene_options_init(opt))
     opt.threads = threads
@@ -186,14 +187,15 @@ def _motion_handle(motion):
 
 
 def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-                broad_phase="auto", want_exact=True, limits=None):
+                broad_phase="auto", want_exact=True, limits=None, min_distance=None):
     """Every body pair in contact and the scene's first contact (API.md, Scenes).
-    limits: a polyccd.Limits (work limits, input limit) or None for the defaults."""
+    limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
+    min_distance: delta >= 0: contacts are times when bodies are within delta."""
     bodies = _bodies_list(bodies)
     if len(bodies) < 2:
         raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
-                               limits)
+                               limits, min_distance)
     scene = handles.new("scene")
     for b in bodies:
         check(lib.pccd_scene_add(scene, b.shape._handle, _motion_handle(b.motion), ffi.NULL))

@@ -61,7 +61,7 @@ def solve_scene_case(scene, limits=None, **kw):
     """The SceneResult of (bodies, options, expect) (its time tolerance applies)."""
     bodies, options, _ = scene
     return check_scene(bodies, time_tolerance=options.time_tolerance or DEFAULT_TOLERANCE,
-                       limits=limits, **kw)
+                       limits=limits, min_distance=options.min_distance, **kw)
 
 
 def compare(expect, result, tolerance):

@@ -11,12 +11,14 @@ from .._errors import InputError
 from .._motion import Motion
 from .._scene import Body
 from ._json import (SCENE_FORMAT, _expect_at, _list_at, _object_at, _string_at, describe, load,
-                    number_at, options_and_labels)
+                    min_distance_option, number_at, options_and_labels)
 
 
 @dataclass(frozen=True)
 class SceneOptions:
     time_tolerance: Optional[str]
+    # options.min_distance (an optional extension of formats.md; None: 0)
+    min_distance: Optional[str] = None
 
 
 def _traj_lists(value, path, count, what):
@@ -116,7 +118,7 @@ def scene_from_doc(doc):
                 pairs.append(tuple(sorted(pair, key=names.index)))
             order = sorted(set(pairs), key=lambda x: (names.index(x[0]), names.index(x[1])))
             expect = dataclasses.replace(expect, pairs=tuple(order))
-    return bodies, SceneOptions(tolerance), expect
+    return bodies, SceneOptions(tolerance, min_distance_option(top)), expect
 
 
 def load_scene(path_or_doc):

@@ -151,7 +151,8 @@ def cmd_index(args):
             raise InputError(f"bodies[{stored}].{e}") from None
         others = [k for k in range(len(bodies)) if k != stored]
         options = dict(time_tolerance=tolerance, all_contacts=args.all_contacts,
-                       threads=args.threads, broad_phase=args.broad_phase, limits=_limits(args))
+                       threads=args.threads, broad_phase=args.broad_phase, limits=_limits(args),
+                       min_distance=options.min_distance)
         for k in others:  # every query motion checked first, as the serial run meets them
             if bodies[k].motion is not None:
                 try:
