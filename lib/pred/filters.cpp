@@ -56,11 +56,38 @@ bool bernstein_excludes(const Query_data<Interval> &q) {
   const Interval zero(0.0), one(1.0);
   const auto &p = q.p;
   auto rootless = [&](const Poly<Interval> &f) { return poly::certainly_no_root(f, zero, one); };
-  if (q.has_delta) {  // the polynomials below are those of delta = 0; only points have one
-    if (q.kind != VERTEX_VERTEX) return false;
-    auto d = p[0] - p[1];
-    Poly<Interval> f = motion::dot(d, d) - radius_squared(q.delta, q.scale);
-    return !f.c.empty() && poly::certain_sign_on(f, zero, one) > 0;
+  if (q.has_delta) {
+    // The distance to the closed primitive is at least the distance to its plane
+    // (vertex-face), to its line (vertex-edge) or between the lines (edge-edge; where they
+    // are parallel the polynomial is h^2 = 0 and cannot be certainly positive). Squared
+    // and multiplied by |n|^2 (|e|^2), each is above delta on all of [0, 1] when its
+    // polynomial below is certainly positive there: then no contact within delta.
+    const Poly<Interval> r2 = radius_squared(q.delta, q.scale);
+    auto above = [&](const Poly<Interval> &f) {
+      return !f.c.empty() && poly::certain_sign_on(f, zero, one) > 0;
+    };
+    switch (q.kind) {
+      case VERTEX_VERTEX: {
+        auto d = p[0] - p[1];
+        return above(motion::dot(d, d) - r2);
+      }
+      case VERTEX_EDGE: {
+        auto e = p[2] - p[1];
+        auto u = motion::cross(e, p[0] - p[1]);
+        return above(motion::dot(u, u) - r2 * motion::dot(e, e));
+      }
+      case VERTEX_FACE: {
+        auto n = motion::cross(p[2] - p[1], p[3] - p[1]);
+        Poly<Interval> h = motion::dot(n, p[0] - p[1]);
+        return above(h * h - r2 * motion::dot(n, n));
+      }
+      case EDGE_EDGE: {
+        auto n = motion::cross(p[1] - p[0], p[3] - p[2]);
+        Poly<Interval> h = motion::dot(n, p[2] - p[0]);
+        return above(h * h - r2 * motion::dot(n, n));
+      }
+    }
+    return false;
   }
   switch (q.kind) {
     case VERTEX_FACE: {
