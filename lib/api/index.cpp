@@ -11,16 +11,7 @@
 using pccd::api::guard;
 using pccd::api::require;
 
-namespace {
-
-pccd::scene::Scene_body scene_body(const pccd_body *body, const pccd_motion *motion) {
-  pccd::scene::Scene_body b;
-  b.body = body->data;
-  if (motion) b.motion = motion->m;
-  return b;
-}
-
-}  // namespace
+using pccd::api::scene_body;
 
 extern "C" {
 

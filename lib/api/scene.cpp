@@ -1,5 +1,6 @@
 // pccd_scene_*: scenes of bodies on motions, solved into a pccd_report.
 #include <string>
+#include <vector>
 
 #include "api/body_handle.h"
 #include "api/guard.h"
@@ -22,10 +23,7 @@ PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_mot
   return guard(__func__, [&] {
     require(s, "s");
     require(body, "body");
-    pccd::scene::Scene_body b;
-    b.body = body->data;
-    if (motion) b.motion = motion->m;
-    s->bodies.push_back(std::move(b));
+    s->bodies.push_back(pccd::api::scene_body(body, motion));
     if (index) *index = s->bodies.size() - 1;
     return PCCD_OK;
   });
@@ -51,6 +49,22 @@ PCCD_API int pccd_scene_options_init(pccd_scene_options *opt) {
   });
 }
 
+PCCD_API int pccd_pair_solve(const pccd_body *a, const pccd_motion *ma, const pccd_body *b,
+                             const pccd_motion *mb, const pccd_config *cfg,
+                             const pccd_scene_options *opt, pccd_report *rep) {
+  return guard(__func__, [&] {
+    require(a, "a");
+    require(b, "b");
+    require(rep, "rep");
+    rep->solved = false;
+    const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
+    std::vector<pccd::scene::Scene_body> bodies{pccd::api::scene_body(a, ma), pccd::api::scene_body(b, mb)};
+    rep->r = pccd::scene::solve_scene(bodies, so);
+    rep->solved = true;
+    return PCCD_OK;
+  });
+}
+
 PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
                               const pccd_scene_options *opt, pccd_report *rep) {
   return guard(__func__, [&] {
@@ -67,6 +81,14 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
 }  // extern "C"
 
 namespace pccd::api {
+
+scene::Scene_body scene_body(const pccd_body *body, const pccd_motion *motion) {
+  scene::Scene_body b;
+  b.body = body->data;
+  b.prepared = motion_data(motion);
+  if (motion && !b.prepared) b.motion = motion->m;  // invalid: the solve reports it
+  return b;
+}
 
 scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt) {
   scene::Scene_options so;

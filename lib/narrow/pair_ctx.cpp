@@ -24,14 +24,14 @@ void Pair_ctx::compute() const {
     const Moving_body &me = *sides[s], &other = *sides[1 - s];
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
-        M_[s][i][j] = me.Rn[i][j] * other.W;
+        M_[s][i][j] = me.mo->Rn[i][j] * other.mo->W;
         Mi_[s][i][j] = poly::convert<Interval>(M_[s][i][j]);
       }
-      N_[s][i] = me.O[i] * other.W;
+      N_[s][i] = me.mo->O[i] * other.mo->W;
       Ni_[s][i] = poly::convert<Interval>(N_[s][i]);
     }
   }
-  D_ = A_.W * B_.W;
+  D_ = A_.mo->W * B_.mo->W;
   Di_ = poly::convert<Interval>(D_);
 }
 
