@@ -153,7 +153,9 @@ Pose_piece enclose_pose(const Moving_body &b, double a, double t1) {
     }
     if (w_pos) {
       // O_q = O + Rn q, coefficient by coefficient in interval arithmetic (q is exact).
-      poly::Poly<Interval> Oq = b.mo->O_i[i];
+      // (A per-thread buffer: no allocation per call once it has grown.)
+      thread_local poly::Poly<Interval> Oq;
+      Oq.c.assign(b.mo->O_i[i].c.begin(), b.mo->O_i[i].c.end());
       for (int j = 0; j < 3; ++j) {
         const auto &r = b.mo->Rn_i[i][j];
         if (r.c.size() > Oq.c.size()) Oq.c.resize(r.c.size(), Interval(0.0));

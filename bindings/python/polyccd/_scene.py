@@ -204,6 +204,9 @@ def _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact)
     return cfg, keep, opt
 
 
+_NULL = ffi.NULL
+
+
 def _motion_handle(motion):
     return motion._handle if motion is not None else ffi.NULL
 
@@ -218,8 +221,11 @@ def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1
     rep = _scratch.report
     if len(bodies) == 2:  # one call, no scene (pccd_pair_solve: the same answers)
         a, b = bodies
-        check(lib.pccd_pair_solve(a.shape._handle, _motion_handle(a.motion), b.shape._handle,
-                                  _motion_handle(b.motion), cfg, opt, rep))
+        ma, mb = a.motion, b.motion
+        rc = lib.pccd_pair_solve(a.shape._handle, _NULL if ma is None else ma._handle,
+                                 b.shape._handle, _NULL if mb is None else mb._handle, cfg, opt, rep)
+        if rc:
+            check(rc)
     else:
         scene = handles.new("scene")
         for b in bodies:
@@ -238,6 +244,7 @@ class _Scratch(threading.local):
         self.size_out = ffi.new("size_t *")
         self.stats = ffi.new("pccd_scene_stats *")
         self.stats_bytes = ffi.buffer(self.stats)
+        self.read = (self.int_out, self.size_out, self.stats, self.stats_bytes)  # one lookup
 
 
 _scratch = _Scratch()
@@ -255,13 +262,14 @@ assert set(SceneResult.__dataclass_fields__) == {"collides", "first_contact", "p
 
 def _read(rep, bodies):
     """The SceneResult held by a solved report of these bodies (names: the bodies')."""
-    out = _scratch.int_out
-    check(lib.pccd_report_collides(rep, out))
+    out, count, stats, stats_bytes = _scratch.read
+    rc = lib.pccd_report_collides(rep, out)
+    if rc:
+        check(rc)
     collides = bool(out[0])
     pairs, first = [], []
     if collides:  # else the report has no pairs (pccd_report_pair_count would say 0)
         names = _names(bodies)
-        count = _scratch.size_out
         check(lib.pccd_report_pair_count(rep, count))
         bi, bj, fi, fj = ffi.new("size_t *"), ffi.new("size_t *"), ffi.new("int *"), ffi.new("int *")
         ii, ij = ffi.new("size_t *"), ffi.new("size_t *")
@@ -280,9 +288,10 @@ def _read(rep, bodies):
             pairs.append(pr)
             if is_first[0]:
                 first.append(pr)
-    stats = _scratch.stats
-    check(lib.pccd_report_stats(rep, stats))
-    v = _STATS.unpack_from(_scratch.stats_bytes)
+    rc = lib.pccd_report_stats(rep, stats)
+    if rc:
+        check(rc)
+    v = _STATS.unpack_from(stats_bytes)
     stat_dict = {"pieces": v[0], "leaves": v[1], "candidates": v[2], "solved": v[3],
                  "static_tests": v[4], "refined": v[5], "stage_bounds": v[6],
                  "stage_bernstein": v[7], "stage_interval": v[8], "stage_exact": v[9]}
