@@ -571,6 +571,19 @@ PCCD_API int pccd_scene_options_init(pccd_scene_options *opt);
 PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
                               const pccd_scene_options *opt, pccd_report *rep);
 
+/* Solves the two-body scene of body a on motion ma and body b on motion mb (NULL:
+ * stationary) into rep, without a pccd_scene: the answer (report, errors, messages
+ * "bodies[1].motion: ...") is that of pccd_scene_solve on a scene made by
+ * pccd_scene_add(a, ma) then pccd_scene_add(b, mb). The call for many checks of few
+ * bodies: a far-apart pair is rejected by the root boxes of the bodies' hierarchies
+ * (PCCD_BROAD_AUTO, PCCD_BROAD_BVH) in a few microseconds, and a motion handle keeps
+ * its validated polynomials from the first solve that uses it until it is changed.
+ * PCCD_EINVAL: a, b or rep NULL, bad options, or a motion's quaternion vanishes on
+ * [0, 1]; on any error rep holds no answer. */
+PCCD_API int pccd_pair_solve(const pccd_body *a, const pccd_motion *ma, const pccd_body *b,
+                             const pccd_motion *mb, const pccd_config *cfg,
+                             const pccd_scene_options *opt, pccd_report *rep);
+
 PCCD_API int pccd_report_new(pccd_report **out);
 PCCD_API void pccd_report_free(pccd_report *rep);
 

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import polyccd as P
-from test_scene_property import summary
+from test_scene_property import scene_call, summary
 
 SEED = int(os.environ.get("POLYCCD_BVH_SEED", "20261124"))
 COUNT = int(os.environ.get("POLYCCD_BVH_COUNT", "30"))
@@ -117,3 +117,48 @@ def test_work_does_not_depend_on_threads():
     for th in (2, 3):
         r = P.check(bodies, broad_phase="bvh", threads=th)
         assert summary(r) == summary(base) and dict(r.stats) == dict(base.stats), th
+
+
+@pytest.mark.parametrize("k", range(COUNT))
+def test_pair_call_equals_scene_call(k):
+    """check() of two bodies is one pccd_pair_solve call (no pccd_scene): the answer and
+    the work counters equal those of the same two bodies solved as a pccd_scene, for 1-3
+    threads, every broad phase, first-contact and all-contacts modes; and they equal
+    brute force."""
+    import test_scene_property as T
+    rng = random.Random(SEED * 1000 + 500 + k)
+    bodies = T.random_scene(rng)[:2]
+    for all_contacts in (False, True):
+        kw = dict(all_contacts=all_contacts, time_tolerance="1e-9")
+        brute = summary(P.check(bodies, broad_phase="brute", **kw))
+        for bp in ("auto", "bvh", "boxes", "brute", "range"):
+            for threads in ((1, 2, 3) if bp in ("auto", "bvh") else (1,)):
+                got = P.check(bodies, broad_phase=bp, threads=threads, **kw)
+                via = scene_call(bodies, broad_phase=bp, threads=threads, **kw)
+                assert summary(got) == summary(via) == brute, (k, all_contacts, bp, threads)
+                assert got.stats == via.stats, (k, all_contacts, bp, threads)
+
+
+def test_motion_changes_after_a_solve_are_seen():
+    """A motion handle keeps its derived data from the first solve; the Python Motion
+    never changes, so the C setters are driven directly: after a valid solve, making the
+    motion invalid must fail the next solve, and changing the path must change the
+    answer (lib/api/motion_handle.h: every setter drops the kept data)."""
+    from polyccd._pccd import ffi, lib
+    A = P.Body(cube([0, 0, 0], 1), name="A")
+    m = P.Motion.linear([3, 0, 0], [0, 0, 0])   # B's face x = 3 - 3t meets x = 1 at 2/3
+    B = P.Body(cube([0, 0, 0], 1), m, name="B")
+    assert P.check([A, B]).first_contact.exact == F(2, 3)
+    h = m._handle
+    try:
+        assert lib.pccd_motion_set_linear_translation_d(h, [3.0, 0, 0], [-1.0, 0, 0]) == 0
+        assert P.check([A, B]).first_contact.exact == F(1, 2)   # 3 - 4t = 1
+        w = [ffi.new("char[]", b"1"), ffi.new("char[]", b"-2")]
+        assert lib.pccd_motion_set_rotation_s(h, 0, ffi.new("char *[]", w), 2) == 0   # r(1/2) = 0
+        with pytest.raises(P.InputError, match=r"bodies\[1\]\.motion: .*1/2"):
+            P.check([A, B])
+        one = [ffi.new("char[]", b"1")]
+        assert lib.pccd_motion_set_rotation_s(h, 0, ffi.new("char *[]", one), 1) == 0
+        assert P.check([A, B]).first_contact.exact == F(1, 2)
+    finally:  # the Motion object is shared by nothing else here, but leave it as it was
+        assert lib.pccd_motion_set_linear_translation_d(h, [3.0, 0, 0], [0.0, 0, 0]) == 0

@@ -136,6 +136,21 @@ def test_threads_and_broad_phases_agree(path):
         assert other == base, "%s differs from threads=1, boxes:\n%r\n%r" % (kw, other, base)
 
 
+@pytest.mark.parametrize("path", FILES, ids=[str(p.relative_to(CORPUS)) for p in FILES])
+def test_pair_call_equals_scene_call(path):
+    """Two-body cases: check() is one pccd_pair_solve call; the same bodies solved as a
+    pccd_scene give the same answer and the same work counters, for 1-3 threads."""
+    from test_scene_property import scene_call
+    doc, tol, bodies, base = run(path)
+    if len(bodies) != 2:
+        pytest.skip("a scene of %d bodies (check() uses a pccd_scene)" % len(bodies))
+    for threads in (1, 2, 3):
+        got = polyccd.check(bodies, time_tolerance=tol, threads=threads)
+        via = scene_call(bodies, time_tolerance=tol, threads=threads)
+        assert summary(got) == summary(via) == summary(base), threads
+        assert got.stats == via.stats, threads
+
+
 def test_corpus_is_big_enough():
     cats = {}
     for p in FILES:

@@ -75,6 +75,25 @@ def random_scene(rng):
     return bodies
 
 
+def scene_call(bodies, **kw):
+    """polyccd.check's answer computed through a pccd_scene (pccd_scene_add,
+    pccd_scene_solve), as check() does for three or more bodies; check() of two bodies
+    calls pccd_pair_solve instead, which must answer the same."""
+    from polyccd import _handles, _scene
+    from polyccd._pccd import ffi, lib
+    args = dict(time_tolerance="1e-12", all_contacts=False, threads=1, broad_phase="auto",
+                want_exact=True)
+    args.update(kw)
+    cfg, _keep, opt = _scene._options(**args)
+    scene = _handles.new("scene")
+    for b in bodies:
+        _scene.check(lib.pccd_scene_add(scene, b.shape._handle,
+                                        ffi.NULL if b.motion is None else b.motion._handle, ffi.NULL))
+    rep = _handles.new("report")
+    _scene.check(lib.pccd_scene_solve(scene, cfg, opt, rep))
+    return _scene._read(rep, bodies)
+
+
 def summary(r):
     """Everything a result says, as comparable values."""
     def t(ct):

@@ -46,12 +46,16 @@ SIGINT_SHIM = r"""
 #include <stdatomic.h>
 #include <string.h>
 
-static pccd_cancel *_Atomic polyccd_py_target;
+static pccd_cancel *_Atomic polyccd_py_target; /* a caller's own flag, during a call */
+static pccd_cancel *polyccd_py_own; /* the main thread's flag, for calls given none */
+static volatile long polyccd_py_hits; /* SIGINTs seen (Python resets polyccd_py_own) */
 static struct sigaction polyccd_py_prev;
 
 static void polyccd_py_on_sigint(int sig, siginfo_t *info, void *ctx) {
   pccd_cancel *c = atomic_load(&polyccd_py_target);
   if (c) pccd_cancel_set(c);
+  if (polyccd_py_own) pccd_cancel_set(polyccd_py_own);
+  polyccd_py_hits = polyccd_py_hits + 1;
   if (polyccd_py_prev.sa_flags & SA_SIGINFO) {
     if (polyccd_py_prev.sa_sigaction) polyccd_py_prev.sa_sigaction(sig, info, ctx);
   } else if (polyccd_py_prev.sa_handler != SIG_IGN && polyccd_py_prev.sa_handler != SIG_DFL) {
@@ -63,6 +67,7 @@ static void polyccd_py_on_sigint(int sig, siginfo_t *info, void *ctx) {
  * disposition is SIG_DFL or SIG_IGN: Python does not handle SIGINT then). */
 static int polyccd_py_sigint_install(void) {
   struct sigaction cur, mine;
+  if (!polyccd_py_own && pccd_cancel_new(&polyccd_py_own) != PCCD_OK) return 0;
   if (sigaction(SIGINT, NULL, &cur) != 0) return 0;
   if ((cur.sa_flags & SA_SIGINFO) && cur.sa_sigaction == polyccd_py_on_sigint) return 1;
   if (!(cur.sa_flags & SA_SIGINFO) && (cur.sa_handler == SIG_DFL || cur.sa_handler == SIG_IGN))
@@ -75,12 +80,17 @@ static int polyccd_py_sigint_install(void) {
   return sigaction(SIGINT, &mine, NULL) == 0;
 }
 
-static void polyccd_py_sigint_target(pccd_cancel *c) { atomic_store(&polyccd_py_target, c); }
+/* Around a main-thread call given its own flag: Ctrl-C sets that flag too. */
+static void polyccd_py_target_set(pccd_cancel *c) { atomic_store(&polyccd_py_target, c); }
+static pccd_cancel *polyccd_py_own_flag(void) { return polyccd_py_own; }
+static long polyccd_py_hit_count(void) { return polyccd_py_hits; }
 """
 
 SIGINT_CDEF = """
 int polyccd_py_sigint_install(void);
-void polyccd_py_sigint_target(pccd_cancel *c);
+void polyccd_py_target_set(pccd_cancel *c);
+pccd_cancel *polyccd_py_own_flag(void);
+long polyccd_py_hit_count(void);
 """
 
 

@@ -11,21 +11,16 @@
 using pccd::api::guard;
 using pccd::api::require;
 
+using pccd::api::scene_body;
+
 namespace {
 
 // The largest number of a body and its motion ("vertices[1][2]", "motion.rotation[0][1]").
 pccd::api::Biggest_number biggest_of(const pccd_body *body, const pccd_motion *motion) {
   pccd::api::Biggest_number big;
   big.see(body->biggest, "");
-  if (motion) big.see(pccd::api::biggest_in(motion->m), "motion.");
+  if (motion) big.see(*pccd::api::motion_biggest(motion), "motion.");
   return big;
-}
-
-pccd::scene::Scene_body scene_body(const pccd_body *body, const pccd_motion *motion) {
-  pccd::scene::Scene_body b;
-  b.body = body->data;
-  if (motion) b.motion = motion->m;
-  return b;
 }
 
 }  // namespace
@@ -59,7 +54,7 @@ PCCD_API int pccd_index_query(const pccd_index *ix, const pccd_body *body,
     const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
     limits.check(ix->biggest, "ix: the stored body's ");
     limits.check(body->biggest, "body.");
-    if (motion) limits.check(pccd::api::biggest_in(motion->m), "motion.");
+    if (motion) limits.check(*pccd::api::motion_biggest(motion), "motion.");
     const pccd::api::Call_budget budget(limits.work);
     rep->r = ix->ix->query(scene_body(body, motion), so);
     rep->solved = true;

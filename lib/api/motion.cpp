@@ -104,7 +104,7 @@ PCCD_API int pccd_motion_set_translation_d(pccd_motion *m, size_t axis, const do
                                            size_t n) {
   return guard(__func__, [&] {
     check_poly_args(m, "translation", "axis", axis, 3, coeffs, n);
-    m->m.set_translation(static_cast<int>(axis), poly_d("translation", axis, coeffs, n));
+    pccd::api::edit(m).set_translation(static_cast<int>(axis), poly_d("translation", axis, coeffs, n));
     return PCCD_OK;
   });
 }
@@ -113,7 +113,7 @@ PCCD_API int pccd_motion_set_translation_s(pccd_motion *m, size_t axis,
                                            const char *const *coeffs, size_t n) {
   return guard(__func__, [&] {
     check_poly_args(m, "translation", "axis", axis, 3, coeffs, n);
-    m->m.set_translation(static_cast<int>(axis), poly_s("translation", axis, coeffs, n));
+    pccd::api::edit(m).set_translation(static_cast<int>(axis), poly_s("translation", axis, coeffs, n));
     return PCCD_OK;
   });
 }
@@ -133,7 +133,7 @@ PCCD_API int pccd_motion_set_rotation_d(pccd_motion *m, size_t component, const 
     check_poly_args(m, "rotation", "component", component, 4, coeffs, n);
     Poly_q f = poly_d("rotation", component, coeffs, n);
     require_rotation_settable(m);
-    m->m.set_rotation(static_cast<int>(component), std::move(f));
+    pccd::api::edit(m).set_rotation(static_cast<int>(component), std::move(f));
     return PCCD_OK;
   });
 }
@@ -144,7 +144,7 @@ PCCD_API int pccd_motion_set_rotation_s(pccd_motion *m, size_t component,
     check_poly_args(m, "rotation", "component", component, 4, coeffs, n);
     Poly_q f = poly_s("rotation", component, coeffs, n);
     require_rotation_settable(m);
-    m->m.set_rotation(static_cast<int>(component), std::move(f));
+    pccd::api::edit(m).set_rotation(static_cast<int>(component), std::move(f));
     return PCCD_OK;
   });
 }
@@ -153,7 +153,7 @@ PCCD_API int pccd_motion_set_linear_translation_d(pccd_motion *m, const double p
                                                   const double p1[3]) {
   return guard(__func__, [&] {
     require(m, "m");
-    m->m.set_translation(pccd::motion::linear_path(vec_d(p0, "p0"), vec_d(p1, "p1")));
+    pccd::api::edit(m).set_translation(pccd::motion::linear_path(vec_d(p0, "p0"), vec_d(p1, "p1")));
     return PCCD_OK;
   });
 }
@@ -162,7 +162,7 @@ PCCD_API int pccd_motion_set_linear_translation_s(pccd_motion *m, const char *co
                                                   const char *const p1[3]) {
   return guard(__func__, [&] {
     require(m, "m");
-    m->m.set_translation(pccd::motion::linear_path(vec_s(p0, "p0"), vec_s(p1, "p1")));
+    pccd::api::edit(m).set_translation(pccd::motion::linear_path(vec_s(p0, "p0"), vec_s(p1, "p1")));
     return PCCD_OK;
   });
 }
@@ -172,7 +172,7 @@ PCCD_API int pccd_motion_set_bezier_translation_d(pccd_motion *m, const double c
     require(m, "m");
     std::array<Vec3_q, 4> c;
     for (size_t k = 0; k < 4; ++k) c[k] = vec_d(ctrl, "ctrl", k);
-    m->m.set_translation(pccd::motion::bezier_path(c));
+    pccd::api::edit(m).set_translation(pccd::motion::bezier_path(c));
     return PCCD_OK;
   });
 }
@@ -182,7 +182,7 @@ PCCD_API int pccd_motion_set_bezier_translation_s(pccd_motion *m, const char *co
     require(m, "m");
     std::array<Vec3_q, 4> c;
     for (size_t k = 0; k < 4; ++k) c[k] = vec_s(ctrl, "ctrl", k);
-    m->m.set_translation(pccd::motion::bezier_path(c));
+    pccd::api::edit(m).set_translation(pccd::motion::bezier_path(c));
     return PCCD_OK;
   });
 }
@@ -192,7 +192,7 @@ PCCD_API int pccd_motion_set_hermite_translation_d(pccd_motion *m, const double 
                                                    const double v1[3]) {
   return guard(__func__, [&] {
     require(m, "m");
-    m->m.set_translation(pccd::motion::hermite_path(vec_d(p0, "p0"), vec_d(v0, "v0"),
+    pccd::api::edit(m).set_translation(pccd::motion::hermite_path(vec_d(p0, "p0"), vec_d(v0, "v0"),
                                                     vec_d(p1, "p1"), vec_d(v1, "v1")));
     return PCCD_OK;
   });
@@ -204,7 +204,7 @@ PCCD_API int pccd_motion_set_hermite_translation_s(pccd_motion *m, const char *c
                                                    const char *const v1[3]) {
   return guard(__func__, [&] {
     require(m, "m");
-    m->m.set_translation(pccd::motion::hermite_path(vec_s(p0, "p0"), vec_s(v0, "v0"),
+    pccd::api::edit(m).set_translation(pccd::motion::hermite_path(vec_s(p0, "p0"), vec_s(v0, "v0"),
                                                     vec_s(p1, "p1"), vec_s(v1, "v1")));
     return PCCD_OK;
   });
@@ -215,7 +215,7 @@ PCCD_API int pccd_motion_set_axis_rotation_s(pccd_motion *m, const char *const a
                                              const char *tau1) {
   return guard(__func__, [&] {
     require(m, "m");
-    m->m = pccd::motion::axis_rotation(vec_s(axis, "axis"), vec_s(center, "center"),
+    pccd::api::edit(m) = pccd::motion::axis_rotation(vec_s(axis, "axis"), vec_s(center, "center"),
                                        number_s(tau0, "tau0"), number_s(tau1, "tau1"));
     return PCCD_OK;
   });
@@ -226,7 +226,7 @@ PCCD_API int pccd_motion_set_screw_s(pccd_motion *m, const char *const axis[3],
                                      const char *tau1, const char *advance) {
   return guard(__func__, [&] {
     require(m, "m");
-    m->m = pccd::motion::screw(vec_s(axis, "axis"), vec_s(center, "center"),
+    pccd::api::edit(m) = pccd::motion::screw(vec_s(axis, "axis"), vec_s(center, "center"),
                                number_s(tau0, "tau0"), number_s(tau1, "tau1"),
                                number_s(advance, "advance"));
     return PCCD_OK;
@@ -245,7 +245,7 @@ PCCD_API int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *co
     const Vec3_q p = vec_s(offset, "offset");
     pccd::motion::Rigid_motion next = m->m;
     if (side == PCCD_POSE_BODY) next.compose_body(q, p); else next.compose_world(q, p);
-    m->m = std::move(next);
+    pccd::api::edit(m) = std::move(next);
     return PCCD_OK;
   });
 }

@@ -1,5 +1,6 @@
 // pccd_scene_*: scenes of bodies on motions, solved into a pccd_report.
 #include <string>
+#include <vector>
 
 #include "api/body_handle.h"
 #include "api/guard.h"
@@ -22,14 +23,11 @@ PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_mot
   return guard(__func__, [&] {
     require(s, "s");
     require(body, "body");
-    pccd::scene::Scene_body b;
-    b.body = body->data;
-    if (motion) b.motion = motion->m;
-    pccd::api::Biggest_number big;
+    pccd::api::Biggest_number big;  // for config.max_number_bits, found once
     big.see(body->biggest, "");
-    if (motion) big.see(pccd::api::biggest_in(motion->m), "motion.");
+    if (motion) big.see(*pccd::api::motion_biggest(motion), "motion.");
     s->biggest.reserve(s->bodies.size() + 1);
-    s->bodies.push_back(std::move(b));
+    s->bodies.push_back(pccd::api::scene_body(body, motion));
     s->biggest.push_back(std::move(big));
     if (index) *index = s->bodies.size() - 1;
     return PCCD_OK;
@@ -56,6 +54,31 @@ PCCD_API int pccd_scene_options_init(pccd_scene_options *opt) {
   });
 }
 
+PCCD_API int pccd_pair_solve(const pccd_body *a, const pccd_motion *ma, const pccd_body *b,
+                             const pccd_motion *mb, const pccd_config *cfg,
+                             const pccd_scene_options *opt, pccd_report *rep) {
+  return guard(__func__, [&] {
+    require(a, "a");
+    require(b, "b");
+    require(rep, "rep");
+    rep->solved = false;
+    const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
+    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    if (limits.max_number_bits) {
+      // named as the scene's two bodies, as the solve names a motion's error
+      limits.check(a->biggest, "bodies[0].");
+      if (ma) limits.check(*pccd::api::motion_biggest(ma), "bodies[0].motion.");
+      limits.check(b->biggest, "bodies[1].");
+      if (mb) limits.check(*pccd::api::motion_biggest(mb), "bodies[1].motion.");
+    }
+    const pccd::api::Call_budget budget(limits.work);
+    std::vector<pccd::scene::Scene_body> bodies{pccd::api::scene_body(a, ma), pccd::api::scene_body(b, mb)};
+    rep->r = pccd::scene::solve_scene(bodies, so);
+    rep->solved = true;
+    return PCCD_OK;
+  });
+}
+
 PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
                               const pccd_scene_options *opt, pccd_report *rep) {
   return guard(__func__, [&] {
@@ -76,6 +99,14 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
 }  // extern "C"
 
 namespace pccd::api {
+
+scene::Scene_body scene_body(const pccd_body *body, const pccd_motion *motion) {
+  scene::Scene_body b;
+  b.body = body->data;
+  b.prepared = motion_data(motion);
+  if (motion && !b.prepared) b.motion = motion->m;  // invalid: the solve reports it
+  return b;
+}
 
 scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt) {
   scene::Scene_options so;

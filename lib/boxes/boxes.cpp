@@ -21,8 +21,25 @@ constexpr double kSlack = 1.0 / (1ull << 48);  // > 20 u, see boxes.h
 constexpr double kTiny = 1e-300;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
+// p(t) by interval Horner evaluation: an enclosure of p'(t) for every p' with
+// coefficients in p's.
+Interval value_at(const poly::Poly<Interval> &p, double t) {
+  Interval r = p.c.back();
+  for (size_t i = p.c.size() - 1; i-- > 0;) r = r * Interval(t) + p.c[i];
+  return r;
+}
+
+// An enclosure of p over [a, b]. Shortcuts (each an enclosure by itself; they matter
+// for a far-apart pair, which costs two calls of enclose_pose): a constant is its
+// coefficient; at a point a = b, interval Horner evaluation; a line (translations)
+// takes its values between those at a and b, so the hull of their enclosures; on
+// [0, 1] the Bernstein hull needs no change of variable.
 Interval range_on(const poly::Poly<Interval> &p, double a, double b) {
   if (p.c.empty()) return Interval(0.0);
+  if (p.c.size() == 1) return p.c[0];
+  if (a == b) return value_at(p, a);
+  if (p.c.size() == 2) return arith::hull(value_at(p, a), value_at(p, b));
+  if (a == 0 && b == 1) return poly::range_on_unit(p);
   return poly::range_on_unit(poly::reparametrize(p, Interval(a), Interval(b)));
 }
 
@@ -63,10 +80,10 @@ void approx_pose(const Moving_body &b, double t, double R[3][3], double o[3]) {
     for (size_t i = p.c.size(); i-- > 0;) r = r * t + 0.5 * (p.c[i].lo + p.c[i].hi);
     return r;
   };
-  const double w = ev(b.W_i);
+  const double w = ev(b.mo->W_i);
   for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) R[i][j] = ev(b.Rn_i[i][j]) / w;
-    o[i] = ev(b.O_i[i]) / w;
+    for (int j = 0; j < 3; ++j) R[i][j] = ev(b.mo->Rn_i[i][j]) / w;
+    o[i] = ev(b.mo->O_i[i]) / w;
   }
 }
 
@@ -120,14 +137,15 @@ void choose_pivot(const Moving_body &b, double a, double t1, double q[3]) {
 Pose_piece enclose_pose(const Moving_body &b, double a, double t1) {
   Pose_piece p;
   choose_pivot(b, a, t1, p.q);
-  const Interval W = range_on(b.W_i, a, t1);
+  const Interval W = range_on(b.mo->W_i, a, t1);
   const bool w_pos = W.lo > 0;
   double max_rr = 0, max_or = 0;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
       Interval r(-1.0, 1.0);  // rotation entries lie in [-1, 1]
       if (w_pos) {
-        Interval q = range_on(b.Rn_i[i][j], a, t1) / W;
+        Interval q = range_on(b.mo->Rn_i[i][j], a, t1);
+        if (!(W.lo == 1 && W.hi == 1)) q = q / W;  // W = 1: translations, the identity
         r = Interval(std::fmax(q.lo, -1.0), std::fmin(q.hi, 1.0));
       }
       mid_rad(r, p.Rm[i][j], p.Rr[i][j]);
@@ -135,13 +153,17 @@ Pose_piece enclose_pose(const Moving_body &b, double a, double t1) {
     }
     if (w_pos) {
       // O_q = O + Rn q, coefficient by coefficient in interval arithmetic (q is exact).
-      poly::Poly<Interval> Oq = b.O_i[i];
+      // (A per-thread buffer: no allocation per call once it has grown.)
+      thread_local poly::Poly<Interval> Oq;
+      Oq.c.assign(b.mo->O_i[i].c.begin(), b.mo->O_i[i].c.end());
       for (int j = 0; j < 3; ++j) {
-        const auto &r = b.Rn_i[i][j];
+        const auto &r = b.mo->Rn_i[i][j];
         if (r.c.size() > Oq.c.size()) Oq.c.resize(r.c.size(), Interval(0.0));
         for (size_t k = 0; k < r.c.size(); ++k) Oq.c[k] = Oq.c[k] + r.c[k] * Interval(p.q[j]);
       }
-      mid_rad(range_on(Oq, a, t1) / W, p.om[i], p.orad[i]);
+      Interval o = range_on(Oq, a, t1);
+      if (!(W.lo == 1 && W.hi == 1)) o = o / W;
+      mid_rad(o, p.om[i], p.orad[i]);
       p.finite = p.finite && std::isfinite(p.om[i]) && std::isfinite(p.orad[i]);
       max_or = std::fmax(max_or, p.orad[i]);
     } else {

@@ -39,8 +39,11 @@ class Bvh_source final : public narrow::Candidate_source {
   explicit Bvh_source(const Pair_ctx &ctx)
       : ctx_(ctx), H_{&hierarchy(*ctx.side(0).data), &hierarchy(*ctx.side(1).data)} {}
 
-  // The triangle pairs whose boxes meet at t = 0.
+  // The triangle pairs whose boxes meet at t = 0. None when the root boxes miss over
+  // all of [0, 1] (they hold the bodies at t = 0 too): a far-apart pair costs the two
+  // enclosures of the whole piece, which run() reuses, and one box test.
   std::vector<Prim_pair> static_candidates(util::Thread_pool &pool) override {
+    if (!roots_meet(whole())) return {};
     const Pose_piece pose[2] = {boxes::enclose_pose(ctx_.side(0), 0.0, 0.0),
                                 boxes::enclose_pose(ctx_.side(1), 0.0, 0.0)};
     std::vector<Node_pair> leaves, wait;
@@ -67,6 +70,20 @@ class Bvh_source final : public narrow::Candidate_source {
   Search_stats *stats_ = nullptr;
   util::Thread_pool *pool_ = nullptr;
   double delta_ = 0;
+  bool have_whole_ = false;
+  Pose_piece whole_[2];  // the motions' enclosures over [0, 1], computed once
+
+  const Pose_piece *whole() {
+    if (!have_whole_) {
+      for (int s = 0; s < 2; ++s) whole_[s] = boxes::enclose_pose(ctx_.side(s), 0.0, 1.0);
+      have_whole_ = true;
+    }
+    return whole_;
+  }
+
+  bool roots_meet(const Pose_piece pose[2]) const {
+    return boxes::boxes_meet(node_box(0, pose[0], 0), node_box(1, pose[1], 0));
+  }
 
   Box node_box(int s, const Pose_piece &pose, uint32_t k) const {
     const Node &n = H_[s]->nodes[k];
@@ -135,8 +152,9 @@ class Bvh_source final : public narrow::Candidate_source {
     util::work_step();  // one time piece (util/work_budget.h)
     if (sink_->pruned(a)) return;
     ++stats_->pieces;
-    const Pose_piece pose[2] = {boxes::enclose_pose(ctx_.side(0), a, b),
-                                boxes::enclose_pose(ctx_.side(1), a, b)};
+    Pose_piece pose[2];
+    for (int s = 0; s < 2; ++s)
+      pose[s] = depth == 0 ? whole()[s] : boxes::enclose_pose(ctx_.side(s), a, b);
     const double spread = std::max(pose[0].spread, pose[1].spread);
     bool final = depth >= kMax_depth || spread <= delta_ || boxes::spread_stalled(depth, spread, parent_spread);
     if (!final && front.size() <= kLeaf_pairs) {

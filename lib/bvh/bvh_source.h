@@ -23,7 +23,9 @@
 // Coverage: a feature pair touching at t lies in a pair of elements (a vertex or edge
 // is part of some triangle that has it) whose world boxes meet on every piece holding
 // t, and so do the boxes of all their ancestors; so that element pair reaches a final
-// piece holding t unless the sink pruned it. A far-apart pair ends with the two roots.
+// piece holding t unless the sink pruned it. A far-apart pair ends with the two roots:
+// their boxes over [0, 1] miss, which also holds at t = 0, so the static candidates
+// (the triangle pairs meeting at t = 0) are none without a traversal.
 //
 // Threads: a front is processed one level at a time in chunks of a fixed size
 // (kChunk), in parallel, and the chunks' outputs are concatenated in chunk order: the

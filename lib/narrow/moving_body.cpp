@@ -32,22 +32,38 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-Moving_body prepare_body(std::shared_ptr<const Body_data> data, const motion::Rigid_motion &m) {
+std::shared_ptr<const Motion_data> prepare_motion(const motion::Rigid_motion &m) {
   m.validate();
+  auto d = std::make_shared<Motion_data>();
+  d->motion = m;
+  d->Rn = motion::rotation_numerator(m.r);
+  d->O = m.offset_numerator();
+  d->W = m.denominator();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) d->Rn_i[i][j] = poly::convert<Interval>(d->Rn[i][j]);
+    d->O_i[i] = poly::convert<Interval>(d->O[i]);
+  }
+  d->W_i = poly::convert<Interval>(d->W);
+  return d;
+}
+
+const std::shared_ptr<const Motion_data> &identity_motion() {
+  static const std::shared_ptr<const Motion_data> id = prepare_motion(motion::Rigid_motion());
+  return id;
+}
+
+Moving_body prepare_body(std::shared_ptr<const Body_data> data, std::shared_ptr<const Motion_data> mo) {
+  if (!mo) throw arith::Internal_error("prepare_body: no motion data");
   Moving_body b;
   b.data = std::move(data);
   b.mesh = b.data->mesh;
   b.spheres = b.data->spheres;
-  b.motion = m;
-  b.Rn = motion::rotation_numerator(m.r);
-  b.O = m.offset_numerator();
-  b.W = m.denominator();
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) b.Rn_i[i][j] = poly::convert<Interval>(b.Rn[i][j]);
-    b.O_i[i] = poly::convert<Interval>(b.O[i]);
-  }
-  b.W_i = poly::convert<Interval>(b.W);
+  b.mo = std::move(mo);
   return b;
+}
+
+Moving_body prepare_body(std::shared_ptr<const Body_data> data, const motion::Rigid_motion &m) {
+  return prepare_body(std::move(data), prepare_motion(m));
 }
 
 std::shared_ptr<const Body_data> make_body_data(std::shared_ptr<const motion::Mesh_body> mesh,

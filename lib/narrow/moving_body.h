@@ -64,12 +64,11 @@ struct Body_data {
 std::shared_ptr<const Body_data> make_body_data(std::shared_ptr<const motion::Mesh_body> mesh,
                                                 std::shared_ptr<const motion::Sphere_body> spheres);
 
-struct Moving_body {
-  std::shared_ptr<const Body_data> data;
-  std::shared_ptr<const motion::Mesh_body> mesh;     // = data->mesh, data->spheres
-  std::shared_ptr<const motion::Sphere_body> spheres;
+// The motion-dependent part of a Moving_body, derived from a valid motion alone and
+// shared: a pccd_motion keeps the one of its current value (api/motion_handle.h), so a
+// check that reuses a motion handle does not rebuild (or revalidate) it.
+struct Motion_data {
   motion::Rigid_motion motion;
-
   // Exact homogeneous motion.
   motion::Mat3_poly Rn;
   motion::Vec3p<Rational> O;
@@ -78,6 +77,18 @@ struct Moving_body {
   std::array<std::array<poly::Poly<Interval>, 3>, 3> Rn_i;
   std::array<poly::Poly<Interval>, 3> O_i;
   poly::Poly<Interval> W_i;
+};
+
+// Validates the motion (Input_error when r(t) vanishes on [0, 1]) and derives its data.
+std::shared_ptr<const Motion_data> prepare_motion(const motion::Rigid_motion &m);
+// The data of the stationary (identity) motion: built once per process.
+const std::shared_ptr<const Motion_data> &identity_motion();
+
+struct Moving_body {
+  std::shared_ptr<const Body_data> data;
+  std::shared_ptr<const motion::Mesh_body> mesh;     // = data->mesh, data->spheres
+  std::shared_ptr<const motion::Sphere_body> spheres;
+  std::shared_ptr<const Motion_data> mo;             // never null
 
   bool is_mesh() const { return static_cast<bool>(mesh); }
   size_t n_points() const { return data->pts.size(); }
@@ -87,6 +98,8 @@ struct Moving_body {
   }
 };
 
+// A body on a prepared motion (no work that scales with the body: shared pointers only).
+Moving_body prepare_body(std::shared_ptr<const Body_data> data, std::shared_ptr<const Motion_data> mo);
 // Validates the motion (Input_error when r(t) vanishes on [0, 1]) and derives the data.
 Moving_body prepare_body(std::shared_ptr<const Body_data> data, const motion::Rigid_motion &m);
 

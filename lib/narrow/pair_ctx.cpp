@@ -14,50 +14,53 @@ Pair_ctx::Pair_ctx(const Moving_body &a, const Moving_body &b) : A_(a), B_(b) {}
 
 // The common-denominator trajectories, on the first solve (a pair the broad phase
 // finds no candidate for never needs them; call_once: solves run in parallel).
-void Pair_ctx::init() const {
-  std::call_once(once_, [this] { compute(); });
+const Pair_ctx::Common &Pair_ctx::init() const {
+  std::call_once(once_, [this] { c_ = compute(); });
+  return *c_;
 }
 
-void Pair_ctx::compute() const {
+std::unique_ptr<const Pair_ctx::Common> Pair_ctx::compute() const {
+  auto c = std::make_unique<Common>();
   const Moving_body *sides[2] = {&A_, &B_};
   for (int s = 0; s < 2; ++s) {
     const Moving_body &me = *sides[s], &other = *sides[1 - s];
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
-        M_[s][i][j] = me.Rn[i][j] * other.W;
-        Mi_[s][i][j] = poly::convert<Interval>(M_[s][i][j]);
+        c->M[s][i][j] = me.mo->Rn[i][j] * other.mo->W;
+        c->Mi[s][i][j] = poly::convert<Interval>(c->M[s][i][j]);
       }
-      N_[s][i] = me.O[i] * other.W;
-      Ni_[s][i] = poly::convert<Interval>(N_[s][i]);
+      c->N[s][i] = me.mo->O[i] * other.mo->W;
+      c->Ni[s][i] = poly::convert<Interval>(c->N[s][i]);
     }
   }
-  D_ = A_.W * B_.W;
-  Di_ = poly::convert<Interval>(D_);
+  c->D = A_.mo->W * B_.mo->W;
+  c->Di = poly::convert<Interval>(c->D);
+  return c;
 }
 
 Point_traj<Rational> Pair_ctx::traj_q(int s, uint32_t k) const {
-  init();
+  const Common &c = init();
   const motion::Point3_q &p = side(s).point(k);
   Point_traj<Rational> x;
   for (int i = 0; i < 3; ++i) {
-    Poly_q v = N_[s][i];
+    Poly_q v = c.N[s][i];
     for (int j = 0; j < 3; ++j)
-      if (sgn(p[j]) != 0) v = v + M_[s][i][j] * Poly_q::constant(p[j]);
+      if (sgn(p[j]) != 0) v = v + c.M[s][i][j] * Poly_q::constant(p[j]);
     x[i] = std::move(v);
   }
   return x;
 }
 
 Point_traj<Interval> Pair_ctx::traj_i(int s, uint32_t k) const {
-  init();
+  const Common &c = init();
   const motion::Point3_q &p = side(s).point(k);
   Interval q[3];
   for (int j = 0; j < 3; ++j) q[j] = arith::enclose(p[j]);
   Point_traj<Interval> x;
   for (int i = 0; i < 3; ++i) {
-    Poly<Interval> v = Ni_[s][i];
+    Poly<Interval> v = c.Ni[s][i];
     for (int j = 0; j < 3; ++j)
-      if (!q[j].is_point_zero()) v = v + Mi_[s][i][j] * Poly<Interval>::constant(q[j]);
+      if (!q[j].is_point_zero()) v = v + c.Mi[s][i][j] * Poly<Interval>::constant(q[j]);
     x[i] = std::move(v);
   }
   return x;
@@ -116,9 +119,9 @@ pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p) const {
       throw arith::Internal_error("Pair_ctx::query: not a time-dependent feature pair");
   }
   if (p.type == SS || p.type == ST || p.type == TS) {
-    init();
-    if constexpr (std::is_same_v<NT, Rational>) q.scale = D_;
-    else q.scale = Di_;
+    const Common &c = init();
+    if constexpr (std::is_same_v<NT, Rational>) q.scale = c.D;
+    else q.scale = c.Di;
   }
   return q;
 }

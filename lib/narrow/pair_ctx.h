@@ -13,6 +13,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -64,17 +65,21 @@ class Pair_ctx {
 
  private:
   const Moving_body &A_, &B_;
-  // Set once by init() (lazily; see narrow.cpp).
+  // The common-denominator trajectories' polynomials, made once by init() (lazily; a
+  // pair with no candidate, such as a far-apart one, never makes or frees them).
+  struct Common {
+    std::array<motion::Mat3_poly, 2> M;  // Rn_s W_other
+    std::array<motion::Vec3p<Rational>, 2> N;  // O_s W_other
+    std::array<std::array<std::array<poly::Poly<Interval>, 3>, 3>, 2> Mi;
+    std::array<motion::Vec3p<Interval>, 2> Ni;
+    Poly_q D;
+    poly::Poly<Interval> Di;
+  };
   mutable std::once_flag once_;
-  mutable std::array<motion::Mat3_poly, 2> M_;  // Rn_s W_other
-  mutable std::array<motion::Vec3p<Rational>, 2> N_;  // O_s W_other
-  mutable std::array<std::array<std::array<poly::Poly<Interval>, 3>, 3>, 2> Mi_;
-  mutable std::array<motion::Vec3p<Interval>, 2> Ni_;
-  mutable Poly_q D_;
-  mutable poly::Poly<Interval> Di_;
+  mutable std::unique_ptr<const Common> c_;
 
-  void init() const;
-  void compute() const;
+  const Common &init() const;
+  std::unique_ptr<const Common> compute() const;
 
   template <class NT> pred::Query_data<NT> query(const Prim_pair &p) const;
   std::array<uint32_t, 3> triangle(int s, uint32_t t) const;

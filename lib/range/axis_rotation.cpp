@@ -42,7 +42,7 @@ std::optional<std::array<Rational, 3>> solve3(std::vector<std::array<Rational, 4
 }  // namespace
 
 std::optional<Axis_rotation> detect_axis_rotation(const Moving_body &S, const Moving_body &Q) {
-  const Quat_poly rho = motion::quat_mul(motion::quat_conj(S.motion.r), Q.motion.r);
+  const Quat_poly rho = motion::quat_mul(motion::quat_conj(S.mo->motion.r), Q.mo->motion.r);
   for (const Poly_q &p : rho)
     if (p.degree() > 1) return std::nullopt;
   Quat_q r0, r1;
@@ -64,7 +64,7 @@ std::optional<Axis_rotation> detect_axis_rotation(const Moving_body &S, const Mo
   const Poly_q WE = motion::quat_norm2(E);
 
   // Exact relative motion: y = (M p + u) / w.
-  const Relative_pose<Poly_q> rel = relative_pose(S.Rn, S.O, S.W, Q.Rn, Q.O, Q.W);
+  const Relative_pose<Poly_q> rel = relative_pose(S.mo->Rn, S.mo->O, S.mo->W, Q.mo->Rn, Q.mo->O, Q.mo->W);
   const auto &M = rel.M;
   const auto &u = rel.u;
   const Poly_q &w = rel.w;

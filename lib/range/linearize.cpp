@@ -173,11 +173,11 @@ namespace {
 
 // Both rotations (hence W) constant and both translations of degree <= 1, exactly.
 bool is_linear_translation(const Moving_body &b) {
-  if (b.W.degree() > 0) return false;
+  if (b.mo->W.degree() > 0) return false;
   for (int i = 0; i < 3; ++i) {
-    if (b.O[i].degree() > 1) return false;
+    if (b.mo->O[i].degree() > 1) return false;
     for (int j = 0; j < 3; ++j)
-      if (b.Rn[i][j].degree() > 0) return false;
+      if (b.mo->Rn[i][j].degree() > 0) return false;
   }
   return true;
 }
@@ -187,7 +187,7 @@ bool is_linear_translation(const Moving_body &b) {
 Relative_motion::Relative_motion(const Moving_body &S, const Moving_body &Q) {
   linear_translation = is_linear_translation(S) && is_linear_translation(Q);
   if (!linear_translation) axis_rotation = detect_axis_rotation(S, Q);
-  Relative_pose<IPoly> r = relative_pose(S.Rn_i, S.O_i, S.W_i, Q.Rn_i, Q.O_i, Q.W_i);
+  Relative_pose<IPoly> r = relative_pose(S.mo->Rn_i, S.mo->O_i, S.mo->W_i, Q.mo->Rn_i, Q.mo->O_i, Q.mo->W_i);
   M = std::move(r.M);
   u = std::move(r.u);
   w = std::move(r.w);

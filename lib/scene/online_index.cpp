@@ -11,7 +11,7 @@ namespace {
 
 Moving_body prepare(const Scene_body &b, const std::string &where = "") {
   try {
-    return prepare_body(b.body, b.motion);
+    return prepare_body(b);
   } catch (const arith::Input_error &e) {
     throw arith::Input_error(where + "motion: " + e.what());
   }

@@ -49,42 +49,72 @@ class Driver final : public narrow::Candidate_sink {
   void whole(std::vector<Prim_pair> cand) override { solve_batch(fresh_of(std::move(cand), 1.0), 1.0); }
 
   // Solves the candidates of [a, b] in the order of the first of kSub equal sub-pieces
-  // on which their two boxes meet (pair_search.h).
+  // on which their two boxes meet (pair_search.h). A pair about to be solved is first
+  // tested on the kSub equal parts of that sub-piece (their enclosures made once, when
+  // first needed): the start of its first part where the boxes meet, or the sub-piece's
+  // end when none does, is a finer lower bound of its contacts in [a, b], and a pair
+  // whose finer bound is pruned is not solved (as a pair whose coarse bound is). On the
+  // 75k-triangle bunnies turning (bench_bvh.py, rot) this kept 170 of 293 solved pairs,
+  // none touching, from the solver.
   void piece(double a, double b, std::vector<Prim_pair> cand) override {
     std::vector<Prim_pair> fresh = fresh_of(std::move(cand), b);
     if (fresh.empty()) return;
-    constexpr int kSub = 8;
     constexpr size_t kBatch = 64;
-    std::vector<std::array<boxes::Pose_piece, 2>> sub(kSub);
-    for (int k = 0; k < kSub; ++k)
-      for (int s = 0; s < 2; ++s)
-        sub[k][s] = boxes::enclose_pose(ctx_.side(s), a + (b - a) * k / kSub,
-                                        k + 1 == kSub ? b : a + (b - a) * (k + 1) / kSub);
-    std::vector<std::pair<double, Prim_pair>> order;
+    const std::vector<Part> sub = parts(a, b);
+    std::vector<std::pair<int, Prim_pair>> order;  // (first sub-piece where boxes meet, pair)
     for (size_t i = 0; i < fresh.size(); ++i) {
       if (i % kStepPairs == 0) util::work_step();
-      const Prim_pair &p = fresh[i];
-      for (int k = 0; k < kSub; ++k)
-        if (boxes::boxes_meet(boxes::feature_box(ctx_.side(0), 0, p, sub[k][0]),
-                              boxes::feature_box(ctx_.side(1), 1, p, sub[k][1]))) {
-          order.push_back({a + (b - a) * k / kSub, p});
+      const int k = first_meeting(fresh[i], sub);
+      if (k < kSub) order.push_back({k, fresh[i]});
+    }
+    std::sort(order.begin(), order.end());
+    std::vector<std::vector<Part>> fine(kSub);  // parts of sub-piece k, when needed
+    auto fine_pruned = [&](int k, const Prim_pair &p) {
+      if (opt_.all_contacts || !have_best_) return false;
+      if (fine[k].empty()) fine[k] = parts(sub[k].a, sub[k].b);
+      const int j = first_meeting(p, fine[k]);
+      return pruned(j < kSub ? fine[k][j].a : sub[k].b);
+    };
+    size_t size = 4;  // batches of 4, 8, ..., kBatch pairs: the first bound comes early
+    for (size_t i = 0; i < order.size(); size = std::min(kBatch, 2 * size)) {
+      std::vector<Prim_pair> batch;
+      for (; i < order.size() && batch.size() < size; ++i) {
+        if (pruned(sub[order[i].first].a)) {
+          i = order.size();  // sorted: every later bound is pruned too
           break;
         }
-    }
-    std::sort(order.begin(), order.end(), [](const auto &x, const auto &y) {
-      return x.first != y.first ? x.first < y.first : x.second < y.second;
-    });
-    size_t size = 4;  // batches of 4, 8, ..., kBatch pairs: the first bound comes early
-    for (size_t start = 0; start < order.size(); start += size, size = std::min(kBatch, 2 * size)) {
-      std::vector<Prim_pair> batch;
-      for (size_t i = start; i < std::min(order.size(), start + size); ++i)
-        if (!pruned(order[i].first)) batch.push_back(order[i].second);
-      if (batch.empty()) break;  // sorted: every later bound is pruned too
+        if (!fine_pruned(order[i].first, order[i].second)) batch.push_back(order[i].second);
+      }
       solve_batch(batch, b);
     }
   }
 
  private:
+  static constexpr int kSub = 8;
+  // A time part [a, b] and the two motions' enclosures over it.
+  struct Part {
+    double a, b;
+    std::array<boxes::Pose_piece, 2> pose;
+  };
+  // [a, b] cut into kSub equal parts (exact: pieces and parts are dyadic).
+  std::vector<Part> parts(double a, double b) const {
+    std::vector<Part> out(kSub);
+    for (int k = 0; k < kSub; ++k) {
+      out[k].a = a + (b - a) * k / kSub;
+      out[k].b = k + 1 == kSub ? b : a + (b - a) * (k + 1) / kSub;
+      for (int s = 0; s < 2; ++s) out[k].pose[s] = boxes::enclose_pose(ctx_.side(s), out[k].a, out[k].b);
+    }
+    return out;
+  }
+  // The first part on which the pair's two feature boxes meet (kSub: none).
+  int first_meeting(const Prim_pair &p, const std::vector<Part> &part) const {
+    for (int k = 0; k < kSub; ++k)
+      if (boxes::boxes_meet(boxes::feature_box(ctx_.side(0), 0, p, part[k].pose[0]),
+                            boxes::feature_box(ctx_.side(1), 1, p, part[k].pose[1])))
+        return k;
+    return kSub;
+  }
+
   const Pair_ctx &ctx_;
   const Search_options &opt_;
   Thread_pool &pool_;

@@ -48,13 +48,19 @@ First_contact combine(std::vector<std::pair<Pair_work *, size_t>> items, const S
 
 }  // namespace
 
+Moving_body prepare_body(const Scene_body &b) {
+  if (b.prepared) return narrow::prepare_body(b.body, b.prepared);
+  if (b.motion) return narrow::prepare_body(b.body, *b.motion);
+  return narrow::prepare_body(b.body, narrow::identity_motion());
+}
+
 Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt) {
   if (bodies.size() < 2) throw arith::Input_error("bodies: a scene needs at least 2 bodies");
   std::vector<Moving_body> mb;
   mb.reserve(bodies.size());
   for (size_t k = 0; k < bodies.size(); ++k) {
     try {
-      mb.push_back(prepare_body(bodies[k].body, bodies[k].motion));
+      mb.push_back(prepare_body(bodies[k]));
     } catch (const arith::Input_error &e) {
       throw arith::Input_error("bodies[" + std::to_string(k) + "].motion: " + e.what());
     }

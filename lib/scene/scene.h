@@ -2,6 +2,7 @@
 #pragma once
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "scene/pair_search.h"
@@ -12,8 +13,16 @@ using narrow::Body_data;
 
 struct Scene_body {
   std::shared_ptr<const Body_data> body;  // make_body_data, once per body
-  motion::Rigid_motion motion;
+  // The motion's validated data when the caller has it (a pccd_motion keeps it:
+  // api/motion_handle.h). Else the motion, derived and validated by the solve (an
+  // invalid motion is reported there); neither: stationary.
+  std::shared_ptr<const narrow::Motion_data> prepared;
+  std::optional<motion::Rigid_motion> motion;
 };
+
+// The body on its motion (prepared or derived now; Input_error when the motion is
+// invalid).
+Moving_body prepare_body(const Scene_body &b);
 
 struct Scene_options {
   pred::Solve_options solve;

@@ -20,7 +20,9 @@ class Thread_pool {
  public:
   // threads >= 1; 1 runs everything inline. At most usable_threads(threads) run: more
   // threads than the hardware has only add switching (a 1024-thread request on 2 cores
-  // ran 6x slower than 2), and no answer depends on the count.
+  // ran 6x slower than 2), and no answer depends on the count. The workers start with
+  // the first loop of more than one item (a far-apart body pair, which never has one,
+  // costs no thread start: about 45 us with two threads).
   explicit Thread_pool(unsigned threads);
   ~Thread_pool();
   Thread_pool(const Thread_pool &) = delete;
@@ -32,9 +34,11 @@ class Thread_pool {
   // (work_budget.h; the workers take both on before each loop), so results never
   // depend on which thread ran an item.
   void parallel_for(size_t n, const std::function<void(size_t)> &fn);
-  unsigned size() const { return static_cast<unsigned>(workers_.size()) + 1; }
+  unsigned size() const { return threads_; }
 
  private:
+  void start();  // starts the workers (once)
+  unsigned threads_ = 1;
   void work();
   void run_items();
 

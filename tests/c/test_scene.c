@@ -1,7 +1,8 @@
 /*
- * test_scene.c -- the scene part of the C API (pccd_scene_*, pccd_report_*): known
- * answers of small scenes (hand-derived below), identical answers for any thread count
- * and both broad phases, and every error path of that section of include/polyccd.h.
+ * test_scene.c -- the scene part of the C API (pccd_scene_*, pccd_pair_solve,
+ * pccd_report_*): known answers of small scenes (hand-derived below), identical answers
+ * for any thread count and both broad phases, and every error path of that section of
+ * include/polyccd.h.
  *
  * Plain C99 (built with -std=c99 -Wall -Wextra -Werror). Prints every failed check,
  * then "N passed, N failed"; exit status 0 only when nothing failed. Every handle is
@@ -133,6 +134,76 @@ static void errors(void)
   pccd_body_free(cube);
 }
 
+/* pccd_pair_solve: the two-body scene without a pccd_scene. Cube B slides from x = 3 to
+ * x = 0 against cube A (first contact 2/3, as two_cubes): the same answer and the same
+ * work counters as the scene of (A, NULL), (B, m). The motion handle keeps its derived
+ * data from the first solve; every setter drops it: changing m to x = 3 -> -1 moves the
+ * contact to 3 - 4t = 1, t = 1/2, and a world-side shift by -1 to 2 - 4t = 1, t = 1/4,
+ * while the scene built before keeps the motion it copied (2/3). A motion made invalid
+ * after a valid solve fails the next solve; fixed again, it solves. */
+static void pair_solve(unsigned threads, int broad)
+{
+  pccd_body *cube = NULL;
+  pccd_motion *m = slide_x(3, 0);
+  pccd_scene *s = NULL;
+  pccd_report *rep = NULL, *rep2 = NULL;
+  pccd_scene_options opt;
+  pccd_scene_stats st, st2;
+  size_t n = 0, n2 = 0;
+  int v = -1;
+  const double p0[3] = {3, 0, 0}, p1[3] = {-1, 0, 0};
+  const char *q[4] = {"1", "0", "0", "0"}, *shift[3] = {"-1", "0", "0"};
+  const char *w_bad[2] = {"1", "-2"}, *w_one[1] = {"1"};
+  if (!CHECK(m != NULL)) return;
+  OK(pccd_body_new_mesh_d(&cube, kCubeV, 8, kCubeT, 12));
+  OK(pccd_scene_new(&s));
+  OK(pccd_scene_add(s, cube, NULL, NULL));
+  OK(pccd_scene_add(s, cube, m, NULL));
+  OK(pccd_scene_options_init(&opt));
+  opt.threads = threads;
+  opt.broad_phase = broad;
+  OK(pccd_report_new(&rep));
+  OK(pccd_report_new(&rep2));
+  OK(pccd_pair_solve(cube, NULL, cube, m, NULL, &opt, rep));
+  OK(pccd_scene_solve(s, NULL, &opt, rep2));
+  CHECK(time_is(rep, PCCD_WHOLE, PCCD_WHOLE, 2, "2/3") && time_is(rep2, PCCD_WHOLE, PCCD_WHOLE, 2, "2/3"));
+  OK(pccd_report_contact_count(rep, 0, &n));
+  OK(pccd_report_contact_count(rep2, 0, &n2));
+  CHECK(n > 0 && n == n2);
+  OK(pccd_report_stats(rep, &st));
+  OK(pccd_report_stats(rep2, &st2));
+  CHECK(memcmp(&st, &st2, sizeof st) == 0);
+  OK(pccd_motion_set_linear_translation_d(m, p0, p1));
+  OK(pccd_pair_solve(cube, NULL, cube, m, NULL, &opt, rep));
+  CHECK(time_is(rep, PCCD_WHOLE, PCCD_WHOLE, 2, "1/2"));
+  OK(pccd_scene_solve(s, NULL, &opt, rep2));
+  CHECK(time_is(rep2, PCCD_WHOLE, PCCD_WHOLE, 2, "2/3"));
+  OK(pccd_motion_compose_pose_s(m, PCCD_POSE_WORLD, q, shift));
+  OK(pccd_pair_solve(cube, NULL, cube, m, NULL, &opt, rep));
+  CHECK(time_is(rep, PCCD_WHOLE, PCCD_WHOLE, 2, "1/4"));
+  OK(pccd_pair_solve(cube, m, cube, NULL, NULL, &opt, rep)); /* the moving body first */
+  CHECK(time_is(rep, PCCD_WHOLE, PCCD_WHOLE, 2, "1/4"));
+  OK(pccd_motion_set_rotation_s(m, 0, w_bad, 2));
+  FAILS(pccd_pair_solve(cube, NULL, cube, m, NULL, &opt, rep), PCCD_EINVAL, "pccd_pair_solve: bodies[1].motion");
+  CHECK(strstr(pccd_last_error(), "1/2") != NULL);
+  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "rep: holds no answer");
+  FAILS(pccd_pair_solve(cube, m, cube, NULL, NULL, &opt, rep), PCCD_EINVAL, "bodies[0].motion");
+  OK(pccd_motion_set_rotation_s(m, 0, w_one, 1));
+  OK(pccd_pair_solve(cube, NULL, cube, m, NULL, &opt, rep));
+  CHECK(time_is(rep, PCCD_WHOLE, PCCD_WHOLE, 2, "1/4"));
+  FAILS(pccd_pair_solve(NULL, NULL, cube, m, NULL, &opt, rep), PCCD_EINVAL, "pccd_pair_solve: a: is NULL");
+  FAILS(pccd_pair_solve(cube, NULL, NULL, m, NULL, &opt, rep), PCCD_EINVAL, "pccd_pair_solve: b: is NULL");
+  FAILS(pccd_pair_solve(cube, NULL, cube, m, NULL, &opt, NULL), PCCD_EINVAL, "pccd_pair_solve: rep: is NULL");
+  opt.threads = 0;
+  FAILS(pccd_pair_solve(cube, NULL, cube, m, NULL, &opt, rep), PCCD_EINVAL, "pccd_pair_solve: opt.threads: 0 is outside");
+  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "rep: holds no answer");
+  pccd_report_free(rep);
+  pccd_report_free(rep2);
+  pccd_scene_free(s);
+  pccd_motion_free(m);
+  pccd_body_free(cube);
+}
+
 int main(void)
 {
   unsigned t;
@@ -141,6 +212,8 @@ int main(void)
     two_cubes(t, PCCD_BROAD_BRUTE);
     two_cubes(t, PCCD_BROAD_RANGE);
     two_cubes(t, PCCD_BROAD_BVH);
+    pair_solve(t, PCCD_BROAD_AUTO);
+    pair_solve(t, PCCD_BROAD_BOXES);
   }
   errors();
   printf("%d passed, %d failed\n", g_pass, g_fail);

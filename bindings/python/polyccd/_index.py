@@ -9,7 +9,7 @@ from . import _limits
 from ._errors import InputError, check
 from ._numbers import show
 from ._pccd import ffi, lib
-from ._scene import Body, _bodies_list, _motion_handle, _names, _options, _read
+from ._scene import Body, _bodies_list, _motion_handle, _options, _read, _scratch
 
 
 class Index:
@@ -42,10 +42,10 @@ class Index:
             raise InputError(f"body: expected a polyccd.Body, got {show(body)}")
         cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
                                    limits, min_distance)
-        rep = handles.new("report")
+        rep = _scratch.report
         check(_limits.run(cfg, lib.pccd_index_query, self._handle, body.shape._handle,
                           _motion_handle(body.motion), cfg, opt, rep))
-        return _read(rep, _names([self.body, body]), (self.body, body))
+        return _read(rep, (self.body, body))
 
     def query_many(self, bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
                    broad_phase="auto", want_exact=True, limits=None, min_distance=None):
@@ -61,4 +61,4 @@ class Index:
         rep_array = ffi.new("pccd_report *[]", reps or 1)
         check(_limits.run(cfg, lib.pccd_index_query_many, self._handle, shapes, motions, n, cfg,
                           opt, rep_array))
-        return [_read(r, _names([self.body, b]), (self.body, b)) for r, b in zip(reps, bodies)]
+        return [_read(r, (self.body, b)) for r, b in zip(reps, bodies)]

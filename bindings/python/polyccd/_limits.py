@@ -119,27 +119,41 @@ def warn_threads(threads, place="threads"):
 
 
 _warned = set()
-_main = threading.main_thread()
-_sigint = threading.local()  # the main thread's own flag, made on first use
+_get_ident, _main_ident = threading.get_ident, threading.main_thread().ident
+_NULL = ffi.NULL
+_shim = []  # [own flag, SIGINTs seen] once the shim is in front of Python's SIGINT handler
+
+
+def _install():
+    if signal.getsignal(signal.SIGINT) is not signal.default_int_handler:
+        return False  # the program handles SIGINT itself: its handler decides
+    if not lib.polyccd_py_sigint_install():
+        return False
+    _shim[:] = [lib.polyccd_py_own_flag(), lib.polyccd_py_hit_count()]
+    return True
 
 
 def run(cfg, fn, *args):
-    """fn(*args), a C call that takes cfg, interruptible by Ctrl-C (see the top)."""
-    if (threading.current_thread() is not _main or
-            signal.getsignal(signal.SIGINT) is not signal.default_int_handler or
-            not lib.polyccd_py_sigint_install()):
+    """fn(*args), a C call that takes cfg, interruptible by Ctrl-C (see the top). On the
+    main thread the call gets the shim's flag in cfg.cancel (or, when the caller gave a
+    Cancel, the shim sets that one too). The shim is installed on the first call made
+    while SIGINT has Python's default handler; a handler the program installs later
+    replaces it (Ctrl-C then waits for the call, as without polyccd's help)."""
+    if _get_ident() != _main_ident or (not _shim and not _install()):
         return fn(*args)
-    own = cfg.cancel == ffi.NULL
-    if own:
-        flag = getattr(_sigint, "flag", None)
-        if flag is None:
-            flag = _sigint.flag = handles.new("cancel")
-        lib.pccd_cancel_reset(flag)
-        cfg.cancel = flag
-    lib.polyccd_py_sigint_target(ffi.cast("pccd_cancel *", cfg.cancel))
+    own, seen = _shim
+    hits = lib.polyccd_py_hit_count()
+    if hits != seen:  # a Ctrl-C since the last call: its KeyboardInterrupt has been raised
+        lib.pccd_cancel_reset(own)
+        _shim[1] = hits
+    if cfg.cancel == _NULL:
+        cfg.cancel = own
+        try:
+            return fn(*args)
+        finally:
+            cfg.cancel = _NULL
+    lib.polyccd_py_target_set(ffi.cast("pccd_cancel *", cfg.cancel))
     try:
         return fn(*args)
     finally:
-        lib.polyccd_py_sigint_target(ffi.NULL)
-        if own:
-            cfg.cancel = ffi.NULL
+        lib.polyccd_py_target_set(_NULL)

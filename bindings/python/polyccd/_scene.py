@@ -1,9 +1,12 @@
 """Scenes: bodies on motions, checked exactly (bindings/python/API.md, "Scenes").
 
-Only conversion here: the scene is built in C (pccd_scene), solved there
-(pccd_scene_solve) and read back from the pccd_report. Scene files are read by
+Only conversion here: two bodies are solved in C by one call (pccd_pair_solve), more
+as a scene (pccd_scene, pccd_scene_solve), and the answers are read back from a
+pccd_report (one per thread, reused). Scene files are read by
 polyccd.apps._scene_file.
 """
+import struct
+import threading
 from dataclasses import dataclass, field
 from typing import Optional, Tuple
 
@@ -162,9 +165,37 @@ def _bodies_list(bodies):
     return bodies
 
 
+# _options of recent keyword sets (the library only reads cfg and opt, so one set serves
+# every call and thread). Keys carry the types: 1, 1.0 and True are equal, but True is
+# not a thread count.
+_OPTIONS = {}
+_OPTIONS_MAX = 64
+
+
 def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None,
              min_distance=None):
     """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query."""
+    key = (time_tolerance, type(time_tolerance), all_contacts, type(all_contacts), threads,
+           type(threads), broad_phase, want_exact, type(want_exact), id(limits),
+           min_distance, type(min_distance))
+    try:
+        hit = _OPTIONS[key]
+        if hit[1][0] is limits:  # the same Limits object (ids are reused after collection)
+            return hit
+    except KeyError:
+        pass
+    except TypeError:  # an unhashable argument: built each time (and checked there)
+        return _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
+                            limits, min_distance)
+    out = _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits,
+                       min_distance)
+    if len(_OPTIONS) < _OPTIONS_MAX:
+        _OPTIONS[key] = out
+    return out
+
+
+def _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None,
+                 min_distance=None):
     if broad_phase not in BROAD_PHASES:
         raise InputError("broad_phase: expected \"auto\", \"boxes\", \"brute\", \"bvh\" or \"range\", "
                          f"got {show(broad_phase)}")
@@ -182,6 +213,10 @@ def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, lim
     return cfg, keep, opt
 
 
+_NULL = ffi.NULL
+_run, _pair_solve = _limits.run, lib.pccd_pair_solve
+
+
 def _motion_handle(motion):
     return motion._handle if motion is not None else ffi.NULL
 
@@ -196,43 +231,100 @@ def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1
         raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
                                limits, min_distance)
-    scene = handles.new("scene")
-    for b in bodies:
-        check(lib.pccd_scene_add(scene, b.shape._handle, _motion_handle(b.motion), ffi.NULL))
-    rep = handles.new("report")
-    check(_limits.run(cfg, lib.pccd_scene_solve, scene, cfg, opt, rep))
-    return _read(rep, _names(bodies), bodies)
+    rep = _scratch.report
+    if len(bodies) == 2:  # one call, no scene (pccd_pair_solve: the same answers)
+        a, b = bodies
+        ma, mb = a.motion, b.motion
+        rc = _run(cfg, _pair_solve, a.shape._handle, _NULL if ma is None else ma._handle,
+                  b.shape._handle, _NULL if mb is None else mb._handle, cfg, opt, rep)
+        if rc:
+            check(rc)
+    else:
+        scene = handles.new("scene")
+        for b in bodies:
+            check(lib.pccd_scene_add(scene, b.shape._handle, _motion_handle(b.motion), ffi.NULL))
+        check(_run(cfg, lib.pccd_scene_solve, scene, cfg, opt, rep))
+    return _read(rep, bodies)
 
 
-def _read(rep, names, bodies=()):
-    out = ffi.new("int *")
-    check(lib.pccd_report_collides(rep, out))
+class _Scratch(threading.local):
+    """Per-thread report handle and output cells, reused by every check (_read copies
+    every answer out, so nothing refers to them afterwards)."""
+
+    def __init__(self):
+        self.report = handles.new("report")
+        self.int_out = ffi.new("int *")
+        self.size_out = ffi.new("size_t *")
+        self.stats = ffi.new("pccd_scene_stats *")
+        self.stats_bytes = ffi.buffer(self.stats)
+        self.read = (self.int_out, self.size_out, self.stats, self.stats_bytes)  # one lookup
+
+
+_scratch = _Scratch()
+
+
+# pccd_scene_stats read at once: six counters, then by_stage[5], all unsigned long long
+# (so no padding); by_stage[0] (no stage) is skipped.
+_STATS = struct.Struct("=6Q8x4Q")
+assert ffi.sizeof("pccd_scene_stats") == _STATS.size == 11 * 8
+assert [f for f, _ in ffi.typeof("pccd_scene_stats").fields] == [
+    "pieces", "leaves", "candidates", "solved", "static_tests", "refined", "by_stage"]
+assert set(SceneResult.__dataclass_fields__) == {"collides", "first_contact", "pairs", "first",
+                                                  "stats", "bodies"}
+
+
+def _read(rep, bodies):
+    """The SceneResult held by a solved report of these bodies (names: the bodies')."""
+    out, count, stats, stats_bytes = _scratch.read
+    rc = lib.pccd_report_collides(rep, out)
+    if rc:
+        check(rc)
     collides = bool(out[0])
-    count = ffi.new("size_t *")
-    check(lib.pccd_report_pair_count(rep, count))
-    bi, bj, fi, fj = ffi.new("size_t *"), ffi.new("size_t *"), ffi.new("int *"), ffi.new("int *")
-    ii, ij = ffi.new("size_t *"), ffi.new("size_t *")
     pairs, first = [], []
-    for p in range(count[0]):
-        is_first = ffi.new("int *")
-        check(lib.pccd_report_pair(rep, p, bi, bj, is_first))
-        ncontacts = ffi.new("size_t *")
-        check(lib.pccd_report_contact_count(rep, p, ncontacts))
-        contacts = []
-        for c in range(ncontacts[0]):
-            check(lib.pccd_report_contact(rep, p, c, fi, ii, fj, ij))
-            contacts.append(Contact((FEATURES[fi[0]], int(ii[0])), (FEATURES[fj[0]], int(ij[0])),
-                                    _time(rep, p, c)))
-        i, j = int(bi[0]), int(bj[0])
-        pr = PairResult((i, j), (names[i], names[j]), _time(rep, p, _WHOLE), tuple(contacts))
-        pairs.append(pr)
-        if is_first[0]:
-            first.append(pr)
-    stats = ffi.new("pccd_scene_stats *")
-    check(lib.pccd_report_stats(rep, stats))
-    stat_dict = {k: int(getattr(stats, k)) for k in
-                 ("pieces", "leaves", "candidates", "solved", "static_tests", "refined")}
-    for k, name in ((1, "bounds"), (2, "bernstein"), (3, "interval"), (4, "exact")):
-        stat_dict["stage_" + name] = int(stats.by_stage[k])
+    if collides:  # else the report has no pairs (pccd_report_pair_count would say 0)
+        names = _names(bodies)
+        check(lib.pccd_report_pair_count(rep, count))
+        bi, bj, fi, fj = ffi.new("size_t *"), ffi.new("size_t *"), ffi.new("int *"), ffi.new("int *")
+        ii, ij = ffi.new("size_t *"), ffi.new("size_t *")
+        for p in range(count[0]):
+            is_first = ffi.new("int *")
+            check(lib.pccd_report_pair(rep, p, bi, bj, is_first))
+            ncontacts = ffi.new("size_t *")
+            check(lib.pccd_report_contact_count(rep, p, ncontacts))
+            contacts = []
+            for c in range(ncontacts[0]):
+                check(lib.pccd_report_contact(rep, p, c, fi, ii, fj, ij))
+                contacts.append(Contact((FEATURES[fi[0]], int(ii[0])), (FEATURES[fj[0]], int(ij[0])),
+                                        _time(rep, p, c)))
+            i, j = int(bi[0]), int(bj[0])
+            pr = PairResult((i, j), (names[i], names[j]), _time(rep, p, _WHOLE), tuple(contacts))
+            pairs.append(pr)
+            if is_first[0]:
+                first.append(pr)
+    rc = lib.pccd_report_stats(rep, stats)
+    if rc:
+        check(rc)
+    v = _STATS.unpack_from(stats_bytes)
+    stat_dict = {"pieces": v[0], "leaves": v[1], "candidates": v[2], "solved": v[3],
+                 "static_tests": v[4], "refined": v[5], "stage_bounds": v[6],
+                 "stage_bernstein": v[7], "stage_interval": v[8], "stage_exact": v[9]}
     whole = _time(rep, _WHOLE, _WHOLE) if collides else None
-    return SceneResult(collides, whole, tuple(pairs), tuple(first), stat_dict, tuple(bodies))
+    return _scene_result(collides, whole, tuple(pairs), tuple(first), stat_dict, tuple(bodies))
+
+
+_new = object.__new__
+
+
+def _scene_result(collides, first_contact, pairs, first, stats, bodies):
+    """SceneResult(...) with its fields set directly: the frozen dataclass's __init__
+    costs 0.7 us, an eighth of a far-apart check from Python (same object: equal to
+    the one __init__ makes, and the fields are exactly SceneResult's)."""
+    r = _new(SceneResult)
+    d = r.__dict__
+    d["collides"] = collides
+    d["first_contact"] = first_contact
+    d["pairs"] = pairs
+    d["first"] = first
+    d["stats"] = stats
+    d["bodies"] = bodies
+    return r
