@@ -180,6 +180,24 @@ def write(out_dir, harness, name, data, counts):
     counts[harness] = counts.get(harness, 0) + 1
 
 
+def binary_seeds(doc):
+    """[(harness, seed name with NAME for the file's stem, seed)] of a corpus case for the
+    binary harnesses; ValueError when a number does not fit their encoding."""
+    out = []
+    if doc.get("format") == "polyccd-query/1":
+        for cross in (False, True):
+            seed = query_seed(doc, cross)
+            if seed is not None:
+                out.append(("fuzz_query", f"NAME-{int(cross)}", seed))
+        return out
+    scene, body_seeds, motion_seeds = scene_seeds(doc)
+    if scene is not None:
+        out.append(("fuzz_scene", "NAME", scene))
+    out += [("fuzz_body", f"NAME-{k}", s) for k, s in enumerate(body_seeds)]
+    out += [("fuzz_motion", f"NAME-{k}", s) for k, s in enumerate(motion_seeds)]
+    return out
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("out", type=Path)
@@ -193,19 +211,14 @@ def main(argv=None):
         number_texts(doc, texts)
         name = path.stem
         write(args.out, "fuzz_readers", name + ".json", b"\x00" + path.read_bytes(), counts)
-        if doc.get("format") == "polyccd-query/1":
-            for cross in (False, True):
-                seed = query_seed(doc, cross)
-                if seed is not None:
-                    write(args.out, "fuzz_query", f"{name}-{int(cross)}", seed, counts)
-        else:
-            scene, body_seeds, motion_seeds = scene_seeds(doc)
-            if scene is not None:
-                write(args.out, "fuzz_scene", name, scene, counts)
-            for k, s in enumerate(body_seeds):
-                write(args.out, "fuzz_body", f"{name}-{k}", s, counts)
-            for k, s in enumerate(motion_seeds):
-                write(args.out, "fuzz_motion", f"{name}-{k}", s, counts)
+        try:
+            binary = binary_seeds(doc)
+        except ValueError:  # a number text beyond the binary harnesses' 255 bytes
+            print(f"seeds: {path.name}: a number too long for the binary harnesses "
+                  "(fuzz_readers gets the file)", file=sys.stderr)
+            continue
+        for harness, seed_name, seed in binary:
+            write(args.out, harness, seed_name.replace("NAME", name), seed, counts)
     for k, text in enumerate(sorted(texts)):  # fuzz_numbers: the text, then a mode byte
         write(args.out, "fuzz_numbers", f"n{k}", text.encode() + b"\x00", counts)
     if args.queries.is_dir():
