@@ -15,7 +15,8 @@
  *   u8 kind       kind % 5; kind >= 0xF0: an i32 follows, the raw (maybe invalid) kind
  *   u8 cfg        bit 0: cfg NULL; bits 1-2: want_time from {1, 0, 1, -1}; bits 3-4:
  *                 want_exact from {1, 0, 1, 7}; bit 5: a time_tolerance number follows;
- *                 bit 6: a wrong struct_size
+ *                 bit 6: a wrong struct_size; bit 7: a u8 follows choosing min_distance
+ *                 (low 3 bits) from {none, "0", "1/4", "1e-30", "-1", "1/3", "2", "x"}
  *   variant 0/3:  per point, per axis: u8 spec, n = spec % (FZ_MAX_DEGREE + 2)
  *                 coefficients (numbers), through _s when spec & 0x80 else _d; then for
  *                 SPHERE_SPHERE two radii: u8 (bit k: radius k through _s), 2 numbers
@@ -123,6 +124,10 @@ static void read_config(fz_in *in, pccd_config *cfg, const pccd_config **use, ch
     cfg->time_tolerance = tol;
   }
   if (b & 64) cfg->struct_size = sizeof *cfg + 8;
+  if (b & 128) {
+    static const char *const deltas[8] = {NULL, "0", "1/4", "1e-30", "-1", "1/3", "2", "x"};
+    cfg->min_distance = deltas[fz_u8(in) & 7];
+  }
   *use = (b & 1) ? NULL : cfg;
 }
 
