@@ -366,6 +366,23 @@ PCCD_API int pccd_motion_set_screw_s(pccd_motion *m, const char *const axis[3],
 PCCD_API int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *const quat[4],
                                         const char *const offset[3]);
 
+/* Creates in *out the composition outer o inner of two motions at the same time t:
+ *     x(t) = M_outer(M_inner(p, t), t),
+ * exactly (lib/motion/rigid_motion.h): rotation r = r_outer r_inner, denominator
+ * W = W_outer W_inner, homogeneous offset O = Rn(r_outer) O_inner + W_inner O_outer.
+ * Degrees add (deg r = deg r_outer + deg r_inner), so a chain of n links turning about
+ * their joints gives degree n. The inputs are unchanged; release *out with
+ * pccd_motion_free. When r_outer is not constant, the composite's body origin path is a
+ * rational function of t (as after pccd_motion_compose_pose_s with a body-side
+ * offset) and pccd_motion_set_rotation_* returns PCCD_ESTATE on it.
+ * PCCD_EINVAL: out, outer or inner NULL ("out", "outer", "inner"), or a factor whose
+ * r(t) vanishes on [0, 1] (the composite's r vanishes exactly where one factor's does;
+ * the message names the factor: "outer: the rotation quaternion r(t) ... vanishes at
+ * t = 1/2 ..."); PCCD_ELIMIT: a polynomial of the composite (r, translation) of degree
+ * above PCCD_MAX_TRAJ_DEGREE ("outer, inner: ..."). On error *out is NULL. */
+PCCD_API int pccd_motion_compose(pccd_motion **out, const pccd_motion *outer,
+                                 const pccd_motion *inner);
+
 /* Decides exactly whether r(t) vanishes for some t in the CLOSED [0, 1], i.e. whether
  * w, x, y, z have a common root there (r with no common root is valid even when each
  * component has roots). PCCD_OK when the motion is valid. PCCD_EINVAL when r vanishes,
