@@ -163,6 +163,10 @@ Rigid_motion compose_motions(const Rigid_motion &outer, const Rigid_motion &inne
     Vanishing v = f.first->vanishing();
     if (v.vanishes) throw Input_error(std::string(f.second) + ": " + describe_vanishing(v));
   }
+  return compose_valid(outer, inner);
+}
+
+Rigid_motion compose_valid(const Rigid_motion &outer, const Rigid_motion &inner) {
   Rigid_motion m;
   m.r = quat_mul(outer.r, inner.r);
   const Mat3_poly Rn_o = rotation_numerator(outer.r);

@@ -101,6 +101,8 @@ struct Rigid_motion {
 // "outer: ..." / "inner: ..." when that factor's r vanishes on [0, 1] (checked first:
 // outer, then inner).
 Rigid_motion compose_motions(const Rigid_motion &outer, const Rigid_motion &inner);
+// The same without the vanishing checks, for factors known to be valid (motion/chain.h).
+Rigid_motion compose_valid(const Rigid_motion &outer, const Rigid_motion &inner);
 
 // "t = 1/2" or "an irrational time t with lo < t < hi" (for messages).
 std::string describe_vanishing(const Vanishing &v);

@@ -36,10 +36,11 @@ from ._body import Mesh, Spheres  # noqa: E402
 from ._scene import Body, Contact, PairResult, SceneResult  # noqa: E402
 from ._scene import check_scene as check  # noqa: E402
 from ._index import Index  # noqa: E402
+from ._chain import Chain  # noqa: E402
 
 __all__ = ["__version__", "KINDS", "solve", "solve_linear", "collides_linear", "solve_linear_many",
            "LinearBatch", "Result", "Answers", "answers",
-           "ContactTime", "Feature", "Motion", "Mesh", "Spheres", "Body", "check", "load_scene", "Index",
+           "ContactTime", "Feature", "Motion", "Chain", "Mesh", "Spheres", "Body", "check", "load_scene", "Index",
            "SceneResult", "PairResult", "Contact", "Error", "InputError",
            "LimitError", "InternalError"]
 

@@ -218,6 +218,9 @@ def _from_recipe(recipe):
     name, args = recipe
     if name == "__init__":
         return Motion(*args)
+    if name == "chain":
+        from ._chain import motion_from_recipe
+        return motion_from_recipe(*args)
     if name == "compose_motions":
         return _from_recipe(args[0]).compose(_from_recipe(args[1]))
     if name == "compose":
