@@ -581,6 +581,14 @@ PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_mot
                             size_t *index);
 PCCD_API int pccd_scene_body_count(const pccd_scene *s, size_t *count);
 
+/* Whether pccd_scene_solve checks the body pair (i, j) (either order): check = 1 (the
+ * default for every pair) or 0 (skip it: e.g. adjacent links of a robot, or any pair
+ * allowed to touch). A skipped pair is left out before the broad phase, whichever phase
+ * runs, and never appears in a report; the bodies' motions are still validated. Pairs
+ * keep their setting when bodies are added. PCCD_EINVAL: s NULL, i or j not a body index
+ * ("j: 4 out of range (3 bodies)"), i == j, check not 0 or 1. */
+PCCD_API int pccd_scene_set_pair_check(pccd_scene *s, size_t i, size_t j, int check);
+
 typedef struct pccd_scene_options {
   size_t struct_size;     /* set by pccd_scene_options_init */
   unsigned threads;       /* worker threads, >= 1 (default 1); answers do not depend on it;

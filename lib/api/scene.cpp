@@ -1,5 +1,7 @@
 // pccd_scene_*: scenes of bodies on motions, solved into a pccd_report.
+#include <algorithm>
 #include <string>
+#include <utility>
 
 #include "api/body_handle.h"
 #include "api/guard.h"
@@ -40,6 +42,23 @@ PCCD_API int pccd_scene_body_count(const pccd_scene *s, size_t *count) {
   });
 }
 
+PCCD_API int pccd_scene_set_pair_check(pccd_scene *s, size_t i, size_t j, int check) {
+  return guard(__func__, [&] {
+    require(s, "s");
+    const size_t n = s->bodies.size();
+    for (auto [x, name] : {std::make_pair(i, "i"), std::make_pair(j, "j")})
+      if (x >= n)
+        throw Input_error(std::string(name) + ": " + std::to_string(x) + " out of range (" +
+                          std::to_string(n) + " bodies)");
+    if (i == j) throw Input_error("j: " + std::to_string(j) + " equals i (a body is not paired with itself)");
+    if (check != 0 && check != 1)
+      throw Input_error("check: " + std::to_string(check) + " is not 0 (skip) or 1 (check)");
+    const std::pair<size_t, size_t> key{std::min(i, j), std::max(i, j)};
+    if (check) s->skipped.erase(key); else s->skipped.insert(key);
+    return PCCD_OK;
+  });
+}
+
 PCCD_API int pccd_scene_options_init(pccd_scene_options *opt) {
   return guard(__func__, [&] {
     require(opt, "opt");
@@ -58,7 +77,7 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
     require(rep, "rep");
     rep->solved = false;  // a failed call leaves no earlier answer readable
     const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
-    rep->r = pccd::scene::solve_scene(s->bodies, so);
+    rep->r = pccd::scene::solve_scene(s->bodies, so, s->skipped);
     rep->solved = true;
     return PCCD_OK;
   });

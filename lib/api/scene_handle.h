@@ -9,6 +9,7 @@
 
 struct pccd_scene {
   std::vector<pccd::scene::Scene_body> bodies;  // shared bodies, copied motions
+  pccd::scene::Pair_set skipped;                // pairs (i, j), i < j, not checked
 };
 
 struct pccd_index {

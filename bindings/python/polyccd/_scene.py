@@ -16,7 +16,7 @@ from ._motion import Motion
 from ._numbers import fraction_from_text, show
 from ._pccd import ffi, lib
 from ._results import ContactTime
-from ._solve import _config
+from ._solve import _config, _items
 
 FEATURES = ("vertex", "edge", "triangle", "sphere")
 BROAD_PHASES = {"auto": lib.PCCD_BROAD_AUTO, "boxes": lib.PCCD_BROAD_BOXES,
@@ -183,9 +183,23 @@ def _motion_handle(motion):
     return motion._handle if motion is not None else ffi.NULL
 
 
+def _pair_index(x, names, place):
+    """A body index from an int or a body name."""
+    if isinstance(x, str):
+        if names.count(x) != 1:
+            raise InputError(f"{place}: {x!r} is not the name of exactly one body")
+        return names.index(x)
+    if isinstance(x, bool) or not isinstance(x, int):
+        raise InputError(f"{place}: expected a body index or name, got {show(x)}")
+    if not 0 <= x < len(names):
+        raise InputError(f"{place}: {x} out of range ({len(names)} bodies)")
+    return x
+
+
 def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-                broad_phase="auto", want_exact=True):
-    """Every body pair in contact and the scene's first contact (API.md, Scenes)."""
+                broad_phase="auto", want_exact=True, skip_pairs=()):
+    """Every body pair in contact and the scene's first contact (API.md, Scenes).
+    skip_pairs: body pairs (i, j) (indices or names) not to check."""
     bodies = _bodies_list(bodies)
     if len(bodies) < 2:
         raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
@@ -193,6 +207,13 @@ def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1
     scene = handles.new("scene")
     for b in bodies:
         check(lib.pccd_scene_add(scene, b.shape._handle, _motion_handle(b.motion), ffi.NULL))
+    names = _names(bodies)
+    for k, pair in enumerate(_items(skip_pairs, "skip_pairs", "a list of body pairs")):
+        items = _items(pair, f"skip_pairs[{k}]", "a pair (i, j)")
+        if len(items) != 2:
+            raise InputError(f"skip_pairs[{k}]: expected a pair (i, j), got {show(pair)}")
+        i, j = (_pair_index(x, names, f"skip_pairs[{k}][{a}]") for a, x in enumerate(items))
+        check(lib.pccd_scene_set_pair_check(scene, i, j, 0))
     rep = handles.new("report")
     check(lib.pccd_scene_solve(scene, cfg, opt, rep))
     return _read(rep, _names(bodies), bodies)
