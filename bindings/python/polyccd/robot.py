@@ -24,6 +24,8 @@ Policies (stated once, checked here or by the C library):
 """
 import os
 import xml.etree.ElementTree as ET
+from dataclasses import dataclass
+from typing import Optional
 
 import numpy as np
 
@@ -103,8 +105,9 @@ class Robot:
     polyccd.Chain, one link per URDF link plus one per offset geometry); shapes: list of
     (link name, geometry index, chain index, Mesh | Spheres)."""
 
-    def __init__(self, name, links, joints, chain, shapes, joint_link, mimic, limits):
+    def __init__(self, name, links, joints, chain, shapes, joint_link, mimic, limits, tree):
         self.name, self.links, self.joints = name, links, joints
+        self.tree = tree                # URDF link -> (parent link, joint type); root: None
         self.chain, self.shapes = chain, shapes
         self._joint_link = joint_link   # actuated joint name -> chain index of its child link
         self._mimic = mimic             # chain index -> (leader name, multiplier, offset)
@@ -126,7 +129,10 @@ class Robot:
 
     def motions(self, q0, q1):
         """The exact world Motion of every chain link over the segment q0 -> q1."""
-        return self.chain.motions(self.chain_values(q0), self.chain_values(q1))
+        try:
+            return self.chain.motions(self.chain_values(q0), self.chain_values(q1))
+        except InputError as e:
+            raise InputError(self._joint_place(str(e))) from None
 
     def link_motions(self, q0, q1):
         """{URDF link name: Motion} over the segment q0 -> q1."""
@@ -138,6 +144,138 @@ class Robot:
         v = self.chain.joint_values(self.chain_values(q0), self.chain_values(q1), t)
         return {name: float(v[self._joint_link[name]]) for name in self.joints}
 
+    def _joint_place(self, message):
+        """A chain error "q1[k]: ..." with k the chain link, as "q1[j] (joint name): ..."."""
+        head, sep, rest = message.partition(": ")
+        for name, k in self._joint_link.items():
+            for q in ("q0", "q1"):
+                if head == f"{q}[{k}]":
+                    return f"{q}[{self.joints.index(name)}] ({name}){sep}{rest}"
+        return message
+
+    def adjacent_pairs(self):
+        """The default allowed link pairs: URDF links joined by a path of joints with at
+        most one moving joint (fixed joints merge links into one rigid group; a group and
+        the group it hangs from by one moving joint are adjacent)."""
+        def group(link):
+            while self.tree[link] is not None and self.tree[link][1] == "fixed":
+                link = self.tree[link][0]
+            return link
+        up = {}
+        for link, pj in self.tree.items():
+            if pj is not None and pj[1] != "fixed":
+                up[link] = group(pj[0])  # a group root hangs from this group
+        urdf_links = list(self.tree)
+        out = set()
+        for i, a in enumerate(urdf_links):
+            for b in urdf_links[i + 1:]:
+                ga, gb = group(a), group(b)
+                if ga == gb or up.get(ga) == gb or up.get(gb) == ga:
+                    out.add(frozenset((a, b)))
+        return out
+
+    def bodies(self, q0, q1):
+        """The robot's geometry as polyccd Bodies on their exact motions over q0 -> q1,
+        named "<link>" (or "<link>[i]" for a link with several geometries), with the URDF
+        link of each."""
+        m = self.motions(q0, q1)
+        count = {}
+        for link, _, _, _ in self.shapes:
+            count[link] = count.get(link, 0) + 1
+        from ._scene import Body
+        return ([Body(shape, m[k], name=link if count[link] == 1 else f"{link}[{i}]")
+                 for link, i, k, shape in self.shapes],
+                [link for link, _, _, _ in self.shapes])
+
+    def check(self, q0, q1, obstacles=(), *, self_collision=True, allowed=None,
+              time_tolerance="1e-12", all_contacts=False, threads=1, broad_phase="auto"):
+        """The exact first contact over the segment q0 -> q1 of the robot with the
+        obstacles (polyccd.Body, stationary or moving) and, when self_collision, of its
+        links with each other except the allowed pairs (an iterable of link-name pairs;
+        None: adjacent_pairs()) and a link's own geometries. One polyccd scene with those
+        pairs skipped (pccd_scene_set_pair_check); obstacle pairs are not checked.
+        Returns a RobotResult (first contact, contacts by link name and feature, joint
+        values at the ends of the time enclosure)."""
+        from ._scene import Body, check_scene
+        obstacles = list(obstacles)
+        for i, o in enumerate(obstacles):
+            if not isinstance(o, Body):
+                raise InputError(f"obstacles[{i}]: expected a polyccd.Body, got {type(o).__name__}")
+        robot_bodies, owner = self.bodies(q0, q1)
+        if allowed is None:
+            allowed = self.adjacent_pairs()
+        allowed_set = set()
+        for k, pair in enumerate(allowed):
+            pair = tuple(pair)
+            if len(pair) != 2 or any(x not in self.tree for x in pair):
+                raise InputError(f"allowed[{k}]: {pair!r} is not a pair of link names")
+            allowed_set.add(frozenset(pair))
+        n = len(robot_bodies)
+        skip = []
+        for i in range(n):
+            for j in range(i + 1, n):
+                if (not self_collision or owner[i] == owner[j]
+                        or frozenset((owner[i], owner[j])) in allowed_set):
+                    skip.append((i, j))
+        for i in range(len(obstacles)):
+            for j in range(i + 1, len(obstacles)):
+                skip.append((n + i, n + j))
+        bodies = robot_bodies + [Body(o.shape, o.motion, name=o.name if o.name is not None
+                                      else f"obstacle{i}") for i, o in enumerate(obstacles)]
+        if len(bodies) < 2:
+            raise InputError("obstacles: nothing to check (one body, no obstacle)")
+        r = check_scene(bodies, time_tolerance=time_tolerance, all_contacts=all_contacts,
+                        threads=threads, broad_phase=broad_phase, skip_pairs=skip)
+        return RobotResult.of(r, self, q0, q1)
+
+    def check_path(self, waypoints, obstacles=(), **options):
+        """Checks the segments waypoints[0] -> waypoints[1] -> ... in order and stops at
+        the first that collides: a PathResult (segment index and its RobotResult, or
+        segment None when no segment collides). Options as check()."""
+        w = [np.asarray(q, dtype=np.float64) for q in waypoints]
+        if len(w) < 2:
+            raise InputError(f"waypoints: a path needs at least 2 waypoints, got {len(w)}")
+        for s in range(len(w) - 1):
+            try:
+                r = self.check(w[s], w[s + 1], obstacles, **options)
+            except InputError as e:
+                raise InputError(f"waypoints[{s}] -> waypoints[{s + 1}]: {e}") from None
+            if r.collides:
+                return PathResult(s, r)
+        return PathResult(None, None)
+
+
+@dataclass(frozen=True)
+class RobotContact:
+    """Two touching features: (body name, feature kind, index) each, the pair's time."""
+    a: tuple
+    b: tuple
+    first_contact: object
+
+
+@dataclass(frozen=True)
+class RobotResult:
+    collides: bool
+    first_contact: object          # ContactTime or None
+    contacts: tuple                # RobotContact of the pairs that may touch first
+    joint_values: Optional[tuple]  # ({joint: value} at first_contact.lo, at .hi)
+    scene: object                  # the SceneResult
+
+    @staticmethod
+    def of(r, robot, q0, q1):
+        contacts = tuple(RobotContact((p.names[0],) + tuple(c.a), (p.names[1],) + tuple(c.b),
+                                      c.first_contact) for p in r.first for c in p.contacts)
+        values = None
+        if r.collides:
+            values = (robot.joint_values(q0, q1, r.first_contact.lo),
+                      robot.joint_values(q0, q1, r.first_contact.hi))
+        return RobotResult(r.collides, r.first_contact, contacts, values, r)
+
+
+@dataclass(frozen=True)
+class PathResult:
+    segment: Optional[int]   # the first colliding segment (waypoints[s] -> [s + 1]), or None
+    result: Optional[RobotResult]
 
 def load_urdf(path, *, geometry="collision"):
     """A Robot from the URDF file at path; geometry: "collision" (default) or "visual".
@@ -223,7 +361,9 @@ def load_urdf(path, *, geometry="collision"):
             names.append(f"{link_name}#{i}")
         shape = _geometry(g.find("geometry"), urdf, place)
         shapes.append((link_name, i, k, shape))
-    return Robot(robot.name, names, actuated, chain, shapes, joint_link, mimic, limits)
+    tree = {j.child: (j.parent, j.type) for j in robot.joints}
+    tree[roots[0]] = None
+    return Robot(robot.name, names, actuated, chain, shapes, joint_link, mimic, limits, tree)
 
 
 def _geometry(g, urdf, place):
