@@ -103,7 +103,10 @@ class Robot:
     """A robot read from URDF (load_urdf). Attributes: name; links (URDF link names, in
     chain order); joints (the actuated joints' names: the order of q); chain (the
     polyccd.Chain, one link per URDF link plus one per offset geometry); shapes: list of
-    (link name, geometry index, chain index, Mesh | Spheres)."""
+    (link name, geometry index, chain index, Mesh | Spheres) (a list: replace the
+    geometry at will); tree: {URDF link: (parent link, joint type)} (root: None);
+    joint_types: {joint: type}; mimic_joints: {joint: (leader, multiplier, offset)};
+    limits: {actuated joint: (lower, upper) or None}."""
 
     def __init__(self, name, links, joints, chain, shapes, joint_link, mimic, limits, tree):
         self.name, self.links, self.joints = name, links, joints
@@ -363,7 +366,11 @@ def load_urdf(path, *, geometry="collision"):
         shapes.append((link_name, i, k, shape))
     tree = {j.child: (j.parent, j.type) for j in robot.joints}
     tree[roots[0]] = None
-    return Robot(robot.name, names, actuated, chain, shapes, joint_link, mimic, limits, tree)
+    out = Robot(robot.name, names, actuated, chain, shapes, joint_link, mimic, limits, tree)
+    out.joint_types = {j.name: j.type for j in robot.joints}
+    out.mimic_joints = {j.name: (j.mimic.joint, float(j.mimic.multiplier if j.mimic.multiplier is not None else 1),
+                                 float(j.mimic.offset or 0)) for j in robot.joints if j.mimic is not None}
+    return out
 
 
 def _geometry(g, urdf, place):
