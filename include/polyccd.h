@@ -422,6 +422,23 @@ PCCD_API int pccd_motion_set_screw_s(pccd_motion *m, const char *const axis[3],
 PCCD_API int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *const quat[4],
                                         const char *const offset[3]);
 
+/* Creates in *out the composition outer o inner of two motions at the same time t:
+ *     x(t) = M_outer(M_inner(p, t), t),
+ * exactly (lib/motion/rigid_motion.h): rotation r = r_outer r_inner, denominator
+ * W = W_outer W_inner, homogeneous offset O = Rn(r_outer) O_inner + W_inner O_outer.
+ * Degrees add (deg r = deg r_outer + deg r_inner), so a chain of n links turning about
+ * their joints gives degree n. The inputs are unchanged; release *out with
+ * pccd_motion_free. When r_outer is not constant, the composite's body origin path is a
+ * rational function of t (as after pccd_motion_compose_pose_s with a body-side
+ * offset) and pccd_motion_set_rotation_* returns PCCD_ESTATE on it.
+ * PCCD_EINVAL: out, outer or inner NULL ("out", "outer", "inner"), or a factor whose
+ * r(t) vanishes on [0, 1] (the composite's r vanishes exactly where one factor's does;
+ * the message names the factor: "outer: the rotation quaternion r(t) ... vanishes at
+ * t = 1/2 ..."); PCCD_ELIMIT: a polynomial of the composite (r, translation) of degree
+ * above PCCD_MAX_TRAJ_DEGREE ("outer, inner: ..."). On error *out is NULL. */
+PCCD_API int pccd_motion_compose(pccd_motion **out, const pccd_motion *outer,
+                                 const pccd_motion *inner);
+
 /* Decides exactly whether r(t) vanishes for some t in the CLOSED [0, 1], i.e. whether
  * w, x, y, z have a common root there (r with no common root is valid even when each
  * component has roots). PCCD_OK when the motion is valid. PCCD_EINVAL when r vanishes,
@@ -440,6 +457,73 @@ PCCD_API int pccd_motion_validate(const pccd_motion *m);
  * number beyond the text limits. */
 PCCD_API int pccd_motion_position_s(const pccd_motion *m, const char *const p[3], const char *t,
                                     char *buf, size_t cap, size_t *needed);
+
+/* ---- Kinematic chains ---- */
+
+/* A kinematic chain (tree) of links joined by fixed, revolute, continuous or prismatic
+ * joints, as in URDF, and the exact motion of every link over a joint-space segment
+ * q0 -> q1 (lib/motion/chain.h has the derivations). Link k hangs from its parent by
+ *     X_parent = T_origin J_k(q) X_k,
+ * T_origin the joint's origin (translation xyz, rotation roll-pitch-yaw rpy:
+ * Rz(yaw) Ry(pitch) Rx(roll)), J_k the motion of the joint: a rotation by q about the
+ * axis (right-handed; revolute, continuous), a translation by q along it (prismatic),
+ * none (fixed). Every double is taken as its exact binary value; the origin rotation is
+ * the exact rotation of the quaternion qz qy qx evaluated in doubles (within ~1e-16 of
+ * the roll-pitch-yaw rotation). Over a segment a revolute joint's quaternion is
+ * (c(t), s(t) axis) with c, s linear between (cos(q/2), sin(q/2) / |axis|) at q0[k] and
+ * q1[k] (rounded to doubles, then exact): the half-angle tangent is interpolated
+ * linearly, as by pccd_motion_set_axis_rotation_s, so each link's motion is an exact
+ * polynomial rigid motion whose rotation has degree = the number of revolute and
+ * continuous joints above it. Policy: a revolute or continuous segment must turn by
+ * less than 2 pi (|q1[k] - q0[k]| < 2 pi; split longer ones); joint limits are not
+ * checked. Floating and planar joints are not supported (a chain of prismatic and
+ * revolute joints expresses them). */
+typedef struct pccd_chain pccd_chain;
+
+typedef enum pccd_joint_type {
+  PCCD_JOINT_FIXED = 0,
+  PCCD_JOINT_REVOLUTE = 1,
+  PCCD_JOINT_CONTINUOUS = 2, /* a revolute joint without limits (the same motion) */
+  PCCD_JOINT_PRISMATIC = 3
+} pccd_joint_type;
+
+/* Creates an empty chain. PCCD_EINVAL when out is NULL. Release with pccd_chain_free
+ * (NULL: nothing). */
+PCCD_API int pccd_chain_new(pccd_chain **out);
+PCCD_API void pccd_chain_free(pccd_chain *c);
+
+/* Appends a link whose joint (a pccd_joint_type) hangs it from link `parent` (an earlier
+ * link, or -1 for the world frame), with the joint origin xyz, rpy and the joint axis
+ * (any nonzero length; ignored and may be NULL for a fixed joint). *index (when not
+ * NULL) receives the new link's index (links are numbered 0, 1, ... in order).
+ * PCCD_EINVAL: c, xyz or rpy NULL, axis NULL for a moving joint, parent out of range
+ * ("parent: 5 is not -1 (the world) or an earlier link (0..2)"), an unknown joint type,
+ * a non-finite double ("axis[1]", "xyz[0]", "rpy[2]"), a zero axis ("axis: the direction
+ * is the zero vector"). On error the chain is unchanged. */
+PCCD_API int pccd_chain_add_link(pccd_chain *c, long parent, int joint, const double axis[3],
+                                 const double xyz[3], const double rpy[3], size_t *index);
+
+/* The number of links in *n. PCCD_EINVAL when c or n is NULL. */
+PCCD_API int pccd_chain_size(const pccd_chain *c, size_t *n);
+
+/* The world motion of every link over the segment q0 -> q1 (t = 0: q0, t = 1: q1):
+ * motions[k] receives a new pccd_motion for link k (release each with
+ * pccd_motion_free). q0[k], q1[k]: the value of link k's joint (radians or length
+ * units; ignored for fixed joints); n must equal the number of links.
+ * PCCD_EINVAL: a NULL pointer, n not the number of links ("n: 3 joint values given, the
+ * chain has 4 links"), a non-finite value ("q0[2]"), a revolute segment of 2 pi or more
+ * ("q1[2]: the revolute segment from 0 to 7 turns by 2 pi or more; split it ...").
+ * On error every motions[k] is NULL. */
+PCCD_API int pccd_chain_segment_motions(const pccd_chain *c, const double *q0, const double *q1,
+                                        size_t n, pccd_motion **motions);
+
+/* The joint values at the rational time t in [0, 1] of the same segment, in doubles
+ * (outputs, never decisions): a revolute joint's angle theta(t) = q0[k] + twice the angle
+ * swept by its half-angle quaternion (c(t), s(t) |axis|) since t = 0, a prismatic joint's
+ * displacement, 0 for a fixed joint. values[k] for link k. Errors as
+ * pccd_chain_segment_motions, and PCCD_EINVAL for t unparsable or outside [0, 1] ("t"). */
+PCCD_API int pccd_chain_joint_values_s(const pccd_chain *c, const double *q0, const double *q1,
+                                       size_t n, const char *t, double *values);
 
 /* ---- Bodies ---- */
 
@@ -552,6 +636,14 @@ PCCD_API void pccd_scene_free(pccd_scene *s);
 PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_motion *motion,
                             size_t *index);
 PCCD_API int pccd_scene_body_count(const pccd_scene *s, size_t *count);
+
+/* Whether pccd_scene_solve checks the body pair (i, j) (either order): check = 1 (the
+ * default for every pair) or 0 (skip it: e.g. adjacent links of a robot, or any pair
+ * allowed to touch). A skipped pair is left out before the broad phase, whichever phase
+ * runs, and never appears in a report; the bodies' motions are still validated. Pairs
+ * keep their setting when bodies are added. PCCD_EINVAL: s NULL, i or j not a body index
+ * ("j: 4 out of range (3 bodies)"), i == j, check not 0 or 1. */
+PCCD_API int pccd_scene_set_pair_check(pccd_scene *s, size_t i, size_t j, int check);
 
 typedef struct pccd_scene_options {
   size_t struct_size;     /* set by pccd_scene_options_init */

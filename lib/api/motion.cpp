@@ -1,6 +1,7 @@
 // pccd_motion_*: exact rigid motions (lib/motion). Validates and converts the C inputs,
 // calls lib/motion, maps errors; no algorithm here. Every setter builds its new value
 // completely before assigning it, so a failed call leaves the motion unchanged.
+#include <algorithm>
 #include <array>
 #include <string>
 #include <vector>
@@ -122,9 +123,9 @@ PCCD_API int pccd_motion_set_translation_s(pccd_motion *m, size_t axis,
 static void require_rotation_settable(const pccd_motion *m) {
   if (m->m.has_body_offset())
     throw pccd::api::State_error(
-        "m: a body-side pose with a nonzero offset was composed into this motion, so its "
-        "rotation can no longer be set component by component (set the rotation first, "
-        "then compose)");
+        "m: a body-side pose with a nonzero offset, or a motion with a turning outer factor, "
+        "was composed into this motion, so its rotation can no longer be set component by "
+        "component (set the rotation first, then compose)");
 }
 
 PCCD_API int pccd_motion_set_rotation_d(pccd_motion *m, size_t component, const double *coeffs,
@@ -246,6 +247,27 @@ PCCD_API int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *co
     pccd::motion::Rigid_motion next = m->m;
     if (side == PCCD_POSE_BODY) next.compose_body(q, p); else next.compose_world(q, p);
     pccd::api::edit(m) = std::move(next);
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_motion_compose(pccd_motion **out, const pccd_motion *outer,
+                                 const pccd_motion *inner) {
+  return guard(__func__, [&] {
+    require(out, "out");
+    *out = nullptr;
+    require(outer, "outer");
+    require(inner, "inner");
+    pccd::motion::Rigid_motion m = pccd::motion::compose_motions(outer->m, inner->m);
+    // The same limit as the setters, on every polynomial of the result.
+    int deg = 0;
+    for (const Poly_q &c : m.r) deg = std::max(deg, c.degree());
+    for (int i = 0; i < 3; ++i) deg = std::max(deg, std::max(m.o[i].degree(), m.b[i].degree()));
+    if (deg > PCCD_MAX_TRAJ_DEGREE)
+      throw Limit_error("outer, inner: the composite motion has a polynomial of degree " +
+                        std::to_string(deg) + ", above the limit of " +
+                        std::to_string(PCCD_MAX_TRAJ_DEGREE));
+    *out = new pccd_motion{std::move(m)};
     return PCCD_OK;
   });
 }

@@ -5,6 +5,7 @@
 #pragma once
 #include <memory>
 #include <mutex>
+#include <utility>
 
 #include "api/limits.h"
 #include "narrow/moving_body.h"
@@ -12,6 +13,7 @@
 struct pccd_motion {
   pccd_motion() = default;
   pccd_motion(const pccd_motion &o) : m(o.m) {}  // the copy derives its own data
+  explicit pccd_motion(pccd::motion::Rigid_motion mm) : m(std::move(mm)) {}
 
   pccd::motion::Rigid_motion m;  // starts as the identity (stationary) motion; change it
                                  // only through pccd::api::edit (which drops the data)

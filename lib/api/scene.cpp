@@ -1,5 +1,7 @@
 // pccd_scene_*: scenes of bodies on motions, solved into a pccd_report.
+#include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "api/body_handle.h"
@@ -39,6 +41,23 @@ PCCD_API int pccd_scene_body_count(const pccd_scene *s, size_t *count) {
     require(s, "s");
     require(count, "count");
     *count = s->bodies.size();
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_scene_set_pair_check(pccd_scene *s, size_t i, size_t j, int check) {
+  return guard(__func__, [&] {
+    require(s, "s");
+    const size_t n = s->bodies.size();
+    for (auto [x, name] : {std::make_pair(i, "i"), std::make_pair(j, "j")})
+      if (x >= n)
+        throw Input_error(std::string(name) + ": " + std::to_string(x) + " out of range (" +
+                          std::to_string(n) + " bodies)");
+    if (i == j) throw Input_error("j: " + std::to_string(j) + " equals i (a body is not paired with itself)");
+    if (check != 0 && check != 1)
+      throw Input_error("check: " + std::to_string(check) + " is not 0 (skip) or 1 (check)");
+    const std::pair<size_t, size_t> key{std::min(i, j), std::max(i, j)};
+    if (check) s->skipped.erase(key); else s->skipped.insert(key);
     return PCCD_OK;
   });
 }
@@ -90,7 +109,7 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
     for (size_t k = 0; k < s->biggest.size(); ++k)
       limits.check(s->biggest[k], pccd::api::place("bodies", {k}) + ".");
     const pccd::api::Call_budget budget(limits.work);
-    rep->r = pccd::scene::solve_scene(s->bodies, so);
+    rep->r = pccd::scene::solve_scene(s->bodies, so, s->skipped);
     rep->solved = true;
     return PCCD_OK;
   });

@@ -11,6 +11,7 @@
 struct pccd_scene {
   std::vector<pccd::scene::Scene_body> bodies;  // shared bodies, copied motions
   std::vector<pccd::api::Biggest_number> biggest;  // of body k and its motion: "vertices[..]"
+  pccd::scene::Pair_set skipped;                // pairs (i, j), i < j, not checked
 };
 
 struct pccd_index {

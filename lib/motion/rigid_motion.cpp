@@ -22,6 +22,9 @@ V3 constant(const Vec3_q &p) {
   return {{Poly_q::constant(p[0]), Poly_q::constant(p[1]), Poly_q::constant(p[2])}};
 }
 
+// The constant coefficient of p (0 for the zero polynomial).
+Rational coeff0(const Poly_q &p) { return p.c.empty() ? Rational(0) : p.c[0]; }
+
 Rational norm2(const Quat_q &q) { return q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]; }
 
 // Input_error "<where>: ..." (where names the quaternion argument, as the C API does).
@@ -153,6 +156,35 @@ void Rigid_motion::compose_world(const Quat_q &q1, const Vec3_q &p1) {
   const Rational inv = 1 / norm2(q1);
   o = add(scale(inv, mat_vec(R1n, o)), constant(p1));
   r = quat_mul(quat_constant(q1), r);
+}
+
+Rigid_motion compose_motions(const Rigid_motion &outer, const Rigid_motion &inner) {
+  for (const auto &f : {std::make_pair(&outer, "outer"), std::make_pair(&inner, "inner")}) {
+    Vanishing v = f.first->vanishing();
+    if (v.vanishes) throw Input_error(std::string(f.second) + ": " + describe_vanishing(v));
+  }
+  return compose_valid(outer, inner);
+}
+
+Rigid_motion compose_valid(const Rigid_motion &outer, const Rigid_motion &inner) {
+  Rigid_motion m;
+  m.r = quat_mul(outer.r, inner.r);
+  const Mat3_poly Rn_o = rotation_numerator(outer.r);
+  const Poly_q W_i = inner.denominator();
+  bool constant_outer = true;
+  for (const Poly_q &c : outer.r) constant_outer = constant_outer && c.degree() < 1;
+  if (constant_outer) {
+    // r_o = q: O = Rn(q) (b_i + W_i o_i) + W_i (b_o + n_q o_o), W = n_q W_i, so
+    // o = Rn(q) o_i / n_q + o_o and b = Rn(q) b_i + W_i b_o.
+    const Rational inv = 1 / norm2(Quat_q{{coeff0(outer.r[0]), coeff0(outer.r[1]),
+                                           coeff0(outer.r[2]), coeff0(outer.r[3])}});
+    m.o = add(scale(inv, mat_vec(Rn_o, inner.o)), outer.o);
+    m.b = add(mat_vec(Rn_o, inner.b), scale(W_i, outer.b));
+  } else {
+    m.o = outer.o;
+    m.b = add(mat_vec(Rn_o, inner.offset_numerator()), scale(W_i, outer.b));
+  }
+  return m;
 }
 
 }  // namespace pccd::motion

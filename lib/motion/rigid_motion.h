@@ -12,15 +12,32 @@
 // parts so that the polynomial translation o keeps its meaning (the path of the body
 // origin when b = 0) while r is edited component by component, and so that o never
 // has to be multiplied by W before a point trajectory is asked for. b is zero unless a
-// body-side pose with a nonzero offset was composed in; it is always a combination of
-// entries of Rn(r), so deg b <= deg W.
+// body-side pose with a nonzero offset or another motion was composed in. The invariant
+// is only that r, o and b are polynomials (W > 0 on [0, 1] once validated): after
+// constant poses deg b <= deg W still holds (b is then a combination of entries of
+// Rn(r)), but a composition of motions puts the inner motion's translation into b, so
+// deg b may exceed deg W (e.g. deg b = deg O_inner + 2 deg r_outer). Every consumer
+// reads the homogeneous pair (O, W) (point_trajectory, narrow::prepare_body, the boxes,
+// bvh and range broad phases), whatever the degrees; only set_rotation needs b = 0.
 //
 // Composition with constant poses (q a nonzero rational quaternion, R_q = R(q), n_q = |q|^2):
 //   body side  x'(t) = M(R_q0 p + p0):   r' = r q0,  b' = n_q0 (Rn(r) p0 + b),  o' = o
 //     because Rn(r) R_q0 = Rn(r q0) / n_q0 and W(r q0) = W(r) n_q0;
 //   world side x'(t) = R_q1 M(p) + p1:   r' = q1 r,  b' = Rn(q1) b,  o' = R_q1 o + p1
 //     because Rn(q1) Rn(r) = Rn(q1 r) and W(q1 r) = n_q1 W(r).
-// Degrees never grow: deg r' = deg r, deg o' = deg o, deg b' <= deg W.
+// Degrees never grow: deg r' = deg r, deg o' = deg o, deg b' <= max(deg b, deg W).
+//
+// Composition of two motions (compose_motions), x(t) = M_outer(M_inner(p)) at the same t:
+//   M_inner(p) = (Rn_i p + O_i) / W_i, so
+//   M_outer(M_inner(p)) = (Rn_o (Rn_i p + O_i) / W_i + O_o) / W_o
+//                       = (Rn(r_o r_i) p + Rn_o O_i + W_i O_o) / (W_o W_i)
+//   because Rn(r_o) Rn(r_i) = Rn(r_o r_i) and W(r_o r_i) = W_o W_i. Hence
+//   r = r_o r_i,  W = W_o W_i,  O = Rn(r_o) O_i + W_i O_o,
+// kept as o = o_o and b = Rn(r_o) O_i + W_i b_o (then b + W o = O). When r_o is a
+// constant q, o = R(q) o_i + o_o and b = Rn(q) b_i + W_i b_o instead (the same O; the
+// translation stays polynomial and b stays zero when both b are zero). r(t) = 0 iff
+// r_o(t) = 0 or r_i(t) = 0 (|r_o r_i| = |r_o| |r_i|), so the composite is valid iff
+// both factors are; compose_motions checks each and names it.
 #pragma once
 #include <array>
 #include <string>
@@ -79,6 +96,13 @@ struct Rigid_motion {
   void compose_body(const Quat_q &q0, const Vec3_q &p0);
   void compose_world(const Quat_q &q1, const Vec3_q &p1);
 };
+
+// outer o inner (formulas above): x(t) = outer(inner(p, t), t). Input_error
+// "outer: ..." / "inner: ..." when that factor's r vanishes on [0, 1] (checked first:
+// outer, then inner).
+Rigid_motion compose_motions(const Rigid_motion &outer, const Rigid_motion &inner);
+// The same without the vanishing checks, for factors known to be valid (motion/chain.h).
+Rigid_motion compose_valid(const Rigid_motion &outer, const Rigid_motion &inner);
 
 // "t = 1/2" or "an irrational time t with lo < t < hi" (for messages).
 std::string describe_vanishing(const Vanishing &v);

@@ -54,7 +54,8 @@ Moving_body prepare_body(const Scene_body &b) {
   return narrow::prepare_body(b.body, narrow::identity_motion());
 }
 
-Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt) {
+Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt,
+                         const Pair_set &skipped) {
   if (bodies.size() < 2) throw arith::Input_error("bodies: a scene needs at least 2 bodies");
   std::vector<Moving_body> mb;
   mb.reserve(bodies.size());
@@ -67,7 +68,8 @@ Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_opti
   }
   std::vector<std::pair<size_t, size_t>> pairs;
   for (size_t i = 0; i < mb.size(); ++i)
-    for (size_t j = i + 1; j < mb.size(); ++j) pairs.push_back({i, j});
+    for (size_t j = i + 1; j < mb.size(); ++j)
+      if (!skipped.count({i, j})) pairs.push_back({i, j});
   std::vector<const Moving_body *> ptr;
   for (const Moving_body &b : mb) ptr.push_back(&b);
   return solve_prepared(ptr, pairs, opt, -1);

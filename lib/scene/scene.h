@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <set>
+#include <utility>
 #include <vector>
 
 #include "scene/pair_search.h"
@@ -53,8 +55,15 @@ struct Scene_report {
   Search_stats stats;
 };
 
-// Input_error naming "bodies[k].motion" when a motion's quaternion vanishes on [0, 1].
-Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt);
+// Body pairs (i, j), i < j, that are not checked (a robot's adjacent links, pairs a
+// caller allows to touch): left out of the pair list before any broad phase runs, so
+// every phase honours them and they never appear in a report.
+using Pair_set = std::set<std::pair<size_t, size_t>>;
+
+// Input_error naming "bodies[k].motion" when a motion's quaternion vanishes on [0, 1]
+// (every body's motion is validated, also of bodies whose pairs are all skipped).
+Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt,
+                         const Pair_set &skipped = {});
 
 // The report of the body pairs (i, j), i < j, of bodies already on their (validated)
 // motions: solve_scene's work after validation, also behind the on-line index

@@ -246,6 +246,57 @@ static void error_paths(void)
     POS(m, "0", "0", "0", "1/2", "0 0 0");
   }
   pccd_motion_free(m);
+
+  g_case = "compose";
+  {
+    static const char *const ez[3] = {"0", "0", "1"}, *const two[3] = {"2", "0", "0"};
+    const double half[2] = {-0.5, 1};
+    pccd_motion *outer = NULL, *inner = NULL, *bad_r = NULL, *out = NULL;
+    OK(pccd_motion_new(&outer));
+    OK(pccd_motion_new(&inner));
+    OK(pccd_motion_new(&bad_r));
+    /* outer: r = 1 + t k (about the z axis through 0, tan(theta/2) = t); inner: the
+     * translation 0 -> (2, 0, 0). At t = 1 the origin is at (2, 0, 0), turned by 90
+     * degrees: (0, 2, 0). At t = 1/2: (1, 0, 0) turned by theta with tan(theta/2) = 1/2,
+     * cos = (1 - 1/4) / (1 + 1/4) = 3/5, sin = 1 / (5/4) = 4/5: (3/5, 4/5, 0). */
+    OK(pccd_motion_set_axis_rotation_s(outer, ez, zero3, "0", "1"));
+    OK(pccd_motion_set_linear_translation_s(inner, zero3, two));
+    OK(pccd_motion_compose(&out, outer, inner));
+    POS(out, "0", "0", "0", "1", "0 2 0");
+    POS(out, "0", "0", "0", "1/2", "3/5 4/5 0");
+    OK(pccd_motion_validate(out));
+    /* The rotation turns the translated origin, so it cannot be set any more. */
+    FAILS(pccd_motion_set_rotation_d(out, 0, half, 1), PCCD_ESTATE, "composed");
+    pccd_motion_free(out);
+    out = NULL;
+    /* The other order: turn, then translate: (2, 0, 0) at t = 1 for the origin. */
+    OK(pccd_motion_compose(&out, inner, outer));
+    POS(out, "0", "0", "0", "1", "2 0 0");
+    POS(out, "1", "0", "0", "1", "2 1 0");
+    pccd_motion_free(out);
+    out = outer; /* must be reset to NULL on error */
+    FAILS(pccd_motion_compose(NULL, outer, inner), PCCD_EINVAL, "pccd_motion_compose: out: is NULL");
+    FAILS(pccd_motion_compose(&out, NULL, inner), PCCD_EINVAL, "pccd_motion_compose: outer: is NULL");
+    CHECK(out == NULL);
+    FAILS(pccd_motion_compose(&out, outer, NULL), PCCD_EINVAL, "pccd_motion_compose: inner: is NULL");
+    /* r(t) = t - 1/2 vanishes at t = 1/2: named as the factor it is. */
+    OK(pccd_motion_set_rotation_d(bad_r, 0, half, 2));
+    FAILS(pccd_motion_compose(&out, bad_r, inner), PCCD_EINVAL, "pccd_motion_compose: outer: the rotation quaternion");
+    FAILS(pccd_motion_compose(&out, outer, bad_r), PCCD_EINVAL, "inner: the rotation quaternion r(t) = w + x i + y j + z k vanishes at t = 1/2");
+    CHECK(out == NULL);
+    /* Degrees add: r of degree 40 twice gives 80 > PCCD_MAX_TRAJ_DEGREE. */
+    {
+      double w[41] = {0};
+      w[0] = 1;
+      w[40] = 1; /* 1 + t^40 > 0 */
+      OK(pccd_motion_set_rotation_d(bad_r, 0, w, 41));
+      FAILS(pccd_motion_compose(&out, bad_r, bad_r), PCCD_ELIMIT, "outer, inner: the composite motion has a polynomial of degree 80");
+      CHECK(out == NULL);
+    }
+    pccd_motion_free(outer);
+    pccd_motion_free(inner);
+    pccd_motion_free(bad_r);
+  }
 }
 
 int main(void)

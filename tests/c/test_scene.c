@@ -82,6 +82,20 @@ static void two_cubes(unsigned threads, int broad)
     CHECK(pccd_report_time(rep, PCCD_WHOLE, PCCD_WHOLE, 0, small, sizeof small, &needed) == PCCD_ERANGE &&
           needed == 4);
   }
+  /* The only pair in contact, skipped (given in either order): no contact at all; the
+   * other pairs are still checked (none touches); checked again: the same answer. */
+  OK(pccd_scene_set_pair_check(s, 1, 0, 0));
+  OK(pccd_scene_solve(s, NULL, &opt, rep));
+  OK(pccd_report_collides(rep, &collides));
+  CHECK(collides == 0);
+  OK(pccd_report_pair_count(rep, &count));
+  CHECK(count == 0);
+  OK(pccd_scene_set_pair_check(s, 0, 2, 0));
+  OK(pccd_scene_set_pair_check(s, 0, 1, 1));
+  OK(pccd_scene_solve(s, NULL, &opt, rep));
+  OK(pccd_report_collides(rep, &collides));
+  CHECK(collides == 1);
+  CHECK(time_is(rep, PCCD_WHOLE, PCCD_WHOLE, 2, "2/3"));
   pccd_report_free(rep);
   pccd_scene_free(s);
 }
@@ -126,6 +140,11 @@ static void errors(void)
   FAILS(pccd_scene_solve(s, NULL, NULL, NULL), PCCD_EINVAL, "pccd_scene_solve: rep: is NULL");
   FAILS(pccd_scene_options_init(NULL), PCCD_EINVAL, "pccd_scene_options_init: opt: is NULL");
   FAILS(pccd_report_stats(rep, NULL), PCCD_ESTATE, "pccd_report_stats: rep: holds no answer");
+  FAILS(pccd_scene_set_pair_check(NULL, 0, 1, 0), PCCD_EINVAL, "pccd_scene_set_pair_check: s: is NULL");
+  FAILS(pccd_scene_set_pair_check(s, 0, 2, 0), PCCD_EINVAL, "pccd_scene_set_pair_check: j: 2 out of range (2 bodies)");
+  FAILS(pccd_scene_set_pair_check(s, 5, 1, 0), PCCD_EINVAL, "i: 5 out of range (2 bodies)");
+  FAILS(pccd_scene_set_pair_check(s, 1, 1, 0), PCCD_EINVAL, "j: 1 equals i");
+  FAILS(pccd_scene_set_pair_check(s, 0, 1, 2), PCCD_EINVAL, "check: 2 is not 0 (skip) or 1 (check)");
   pccd_scene_free(NULL);
   pccd_report_free(NULL);
   pccd_report_free(rep);

@@ -37,11 +37,12 @@ from ._scene import Body, Contact, PairResult, SceneResult  # noqa: E402
 from ._scene import check_scene as check  # noqa: E402
 from ._index import Index  # noqa: E402
 from ._limits import Cancel, Limits  # noqa: E402
+from ._chain import Chain  # noqa: E402
 
 __all__ = ["__version__", "KINDS", "solve", "solve_linear", "collides_linear", "solve_linear_many",
            "LinearBatch", "Result", "Answers", "answers",
-           "ContactTime", "Feature", "Motion", "Mesh", "Spheres", "Body", "check", "load_scene", "Index",
-           "Limits", "Cancel",
+           "ContactTime", "Feature", "Motion", "Chain", "Mesh", "Spheres", "Body", "check", "load_scene",
+           "Index", "Limits", "Cancel",
            "SceneResult", "PairResult", "Contact", "Error", "InputError",
            "LimitError", "InternalError"]
 

@@ -156,9 +156,19 @@ class Motion:
         recipe = ("screw", (va, vc, _text(n0), _text(n1), _text(adv)))
         return cls._built(recipe, lib.pccd_motion_set_screw_s, a, c, n0, n1, adv)
 
-    def compose(self, quat, offset, side="body"):
-        """A new motion: this one composed with the constant pose (R(quat), offset).
+    def compose(self, quat, offset=None, side="body"):
+        """A new motion. compose(inner), inner a Motion: self o inner, the point p at
+        self(inner(p, t), t) (pccd_motion_compose; degrees add). compose(quat, offset,
+        side): this one composed with the constant pose (R(quat), offset);
         side="body": x'(t) = M(R p + offset); side="world": x'(t) = R M(p) + offset."""
+        if isinstance(quat, Motion):
+            if offset is not None or side != "body":
+                raise InputError("offset, side: composing with a Motion takes no pose "
+                                 "arguments")
+            return _composed(self, quat)
+        if offset is None:
+            raise InputError("offset: missing (compose takes a Motion, or a quaternion "
+                             "and an offset)")
         if not isinstance(side, str) or side not in _SIDES:
             raise InputError(f'side: {show(side)} is not "body" or "world"')
         vq, vo = _vector(quat, "quat", 4), _vector(offset, "offset")
@@ -167,6 +177,12 @@ class Motion:
         handle = handles.new("motion", self._handle, via="copy")
         check(lib.pccd_motion_compose_pose_s(handle, _SIDES[side], q, o))
         return Motion._wrap(handle, ("compose", (self._recipe, vq, vo, side)))
+
+    def then(self, outer):
+        """A new motion: outer o self, the point p at outer(self(p, t), t)."""
+        if not isinstance(outer, Motion):
+            raise InputError(f"outer: expected a Motion, got {show(outer)}")
+        return _composed(outer, self)
 
     def validate(self):
         """Returns self when r(t) vanishes nowhere on [0, 1]; else InputError with the
@@ -188,12 +204,25 @@ class Motion:
         return tuple(fraction_from_text(x) for x in ffi.string(buf).decode().split(" "))
 
 
+def _composed(outer, inner):
+    """outer o inner (both Motions), through pccd_motion_compose."""
+    if not isinstance(inner, Motion):
+        raise InputError(f"inner: expected a Motion, got {show(inner)}")
+    handle = handles.new("motion", outer._handle, inner._handle, via="compose")
+    return Motion._wrap(handle, ("compose_motions", (outer._recipe, inner._recipe)))
+
+
 def _from_recipe(recipe):
     """The Motion of a recipe (see Motion.__reduce__): the same constructors, called with
     the exact number texts they recorded."""
     name, args = recipe
     if name == "__init__":
         return Motion(*args)
+    if name == "chain":
+        from ._chain import motion_from_recipe
+        return motion_from_recipe(*args)
+    if name == "compose_motions":
+        return _from_recipe(args[0]).compose(_from_recipe(args[1]))
     if name == "compose":
         parent, quat, offset, side = args
         return _from_recipe(parent).compose(quat, offset, side)

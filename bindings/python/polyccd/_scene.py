@@ -20,7 +20,7 @@ from ._motion import Motion
 from ._numbers import fraction_from_text, show
 from ._pccd import ffi, lib
 from ._results import ContactTime
-from ._solve import _config
+from ._solve import _config, _items
 
 FEATURES = ("vertex", "edge", "triangle", "sphere")
 BROAD_PHASES = {"auto": lib.PCCD_BROAD_AUTO, "boxes": lib.PCCD_BROAD_BOXES,
@@ -221,29 +221,51 @@ def _motion_handle(motion):
     return motion._handle if motion is not None else ffi.NULL
 
 
+def _pair_index(x, names, place):
+    """A body index from an int or a body name."""
+    if isinstance(x, str):
+        if names.count(x) != 1:
+            raise InputError(f"{place}: {x!r} is not the name of exactly one body")
+        return names.index(x)
+    if isinstance(x, bool) or not isinstance(x, int):
+        raise InputError(f"{place}: expected a body index or name, got {show(x)}")
+    if not 0 <= x < len(names):
+        raise InputError(f"{place}: {x} out of range ({len(names)} bodies)")
+    return x
+
+
 def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-                broad_phase="auto", want_exact=True, limits=None, min_distance=None):
+                broad_phase="auto", want_exact=True, limits=None, min_distance=None,
+                skip_pairs=()):
     """Every body pair in contact and the scene's first contact (API.md, Scenes).
     limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
-    min_distance: delta >= 0: contacts are times when bodies are within delta."""
+    min_distance: delta >= 0: contacts are times when bodies are within delta.
+    skip_pairs: body pairs (i, j) (indices or names) not to check."""
     bodies = _bodies_list(bodies)
     if len(bodies) < 2:
         raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
                                limits, min_distance)
     rep = _scratch.report
-    if len(bodies) == 2:  # one call, no scene (pccd_pair_solve: the same answers)
+    if len(bodies) == 2 and not skip_pairs:  # one call, no scene (pccd_pair_solve: the same)
         a, b = bodies
         ma, mb = a.motion, b.motion
         rc = _run(cfg, _pair_solve, a.shape._handle, _NULL if ma is None else ma._handle,
                   b.shape._handle, _NULL if mb is None else mb._handle, cfg, opt, rep)
         if rc:
             check(rc)
-    else:
-        scene = handles.new("scene")
-        for b in bodies:
-            check(lib.pccd_scene_add(scene, b.shape._handle, _motion_handle(b.motion), ffi.NULL))
-        check(_run(cfg, lib.pccd_scene_solve, scene, cfg, opt, rep))
+        return _read(rep, bodies)
+    scene = handles.new("scene")
+    for b in bodies:
+        check(lib.pccd_scene_add(scene, b.shape._handle, _motion_handle(b.motion), ffi.NULL))
+    names = _names(bodies)
+    for k, pair in enumerate(_items(skip_pairs, "skip_pairs", "a list of body pairs")):
+        items = _items(pair, f"skip_pairs[{k}]", "a pair (i, j)")
+        if len(items) != 2:
+            raise InputError(f"skip_pairs[{k}]: expected a pair (i, j), got {show(pair)}")
+        i, j = (_pair_index(x, names, f"skip_pairs[{k}][{a}]") for a, x in enumerate(items))
+        check(lib.pccd_scene_set_pair_check(scene, i, j, 0))
+    check(_run(cfg, lib.pccd_scene_solve, scene, cfg, opt, rep))
     return _read(rep, bodies)
 
 

@@ -1,0 +1,106 @@
+"""Chain: a kinematic chain (tree) of links, a thin wrapper of pccd_chain.
+
+No geometry here: the C library turns joint origins (xyz, roll-pitch-yaw) and joint
+values into exact rigid motions (include/polyccd.h, "Kinematic chains"). A Chain only
+grows (add_link); the motions it gives are ordinary Motions (they pickle as the chain's
+links and the segment's joint values, rebuilt by the C library).
+"""
+
+import numpy as np
+
+from . import _handles as handles
+from ._errors import InputError, check
+from ._motion import Motion
+from ._numbers import show
+from ._pccd import ffi, lib
+
+JOINTS = {"fixed": lib.PCCD_JOINT_FIXED, "revolute": lib.PCCD_JOINT_REVOLUTE,
+          "continuous": lib.PCCD_JOINT_CONTINUOUS, "prismatic": lib.PCCD_JOINT_PRISMATIC}
+
+
+def _doubles(value, place, size):
+    """A float64 array of `size` numbers (floats are taken as their exact value)."""
+    try:
+        a = np.ascontiguousarray(value, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise InputError(f"{place}: expected {size} numbers, got {show(value)}") from None
+    if a.shape != (size,):
+        raise InputError(f"{place}: expected {size} numbers, got shape {a.shape}")
+    return a
+
+
+class Chain:
+    """Links joined by fixed / revolute / continuous / prismatic joints (URDF's
+    conventions); see bindings/python/API.md, "Kinematic chains"."""
+
+    __slots__ = ("_handle", "_links")
+
+    def __init__(self):
+        self._handle = handles.new("chain")
+        self._links = []
+
+    def add_link(self, parent=-1, joint="fixed", axis=None, xyz=(0, 0, 0), rpy=(0, 0, 0)):
+        """Appends a link hung from `parent` (an earlier link's index, or -1: the world)
+        by a joint of type `joint` with origin (xyz, rpy) and axis; returns its index."""
+        if not isinstance(joint, str) or joint not in JOINTS:
+            raise InputError(f"joint: {show(joint)} is not one of {', '.join(JOINTS)}")
+        if isinstance(parent, bool) or not isinstance(parent, (int, np.integer)):
+            raise InputError(f"parent: expected a link index, got {show(parent)}")
+        a = ffi.NULL if axis is None else _doubles(axis, "axis", 3)
+        p, r = _doubles(xyz, "xyz", 3), _doubles(rpy, "rpy", 3)
+        index = ffi.new("size_t *")
+        check(lib.pccd_chain_add_link(
+            self._handle, int(parent), JOINTS[joint],
+            a if a is ffi.NULL else ffi.from_buffer("double[]", a),
+            ffi.from_buffer("double[]", p), ffi.from_buffer("double[]", r), index))
+        self._links.append((int(parent), joint, None if axis is None else tuple(map(float, a)),
+                            tuple(map(float, p)), tuple(map(float, r))))
+        return index[0]
+
+    def __len__(self):
+        return len(self._links)
+
+    def _segment(self, q0, q1):
+        n = len(self._links)
+        return _doubles(q0, "q0", n), _doubles(q1, "q1", n)
+
+    def motions(self, q0, q1):
+        """The world Motion of every link over the segment q0 -> q1 (q[k]: link k's joint
+        value, ignored for fixed joints)."""
+        a0, a1 = self._segment(q0, q1)
+        n = len(self._links)
+        out = ffi.new("pccd_motion *[]", max(n, 1))
+        check(lib.pccd_chain_segment_motions(self._handle, ffi.from_buffer("double[]", a0),
+                                             ffi.from_buffer("double[]", a1), n, out))
+        links, t0, t1 = tuple(self._links), tuple(map(float, a0)), tuple(map(float, a1))
+        return [Motion._wrap(ffi.gc(out[k], lib.pccd_motion_free), ("chain", (links, t0, t1, k)))
+                for k in range(n)]
+
+    def joint_values(self, q0, q1, t):
+        """The joint values (float64 array, by link) at time t in [0, 1] of the segment:
+        outputs, computed from the exact motion (fixed joints: 0)."""
+        from ._motion import _number
+        a0, a1 = self._segment(q0, q1)
+        n = len(self._links)
+        values = np.zeros(n, dtype=np.float64)
+        check(lib.pccd_chain_joint_values_s(self._handle, ffi.from_buffer("double[]", a0),
+                                            ffi.from_buffer("double[]", a1), n, _number(t, "t"),
+                                            ffi.from_buffer("double[]", values)))
+        return values
+
+    def __reduce__(self):
+        return _chain_from_links, (tuple(self._links),)
+
+
+def _chain_from_links(links):
+    c = Chain()
+    for parent, joint, axis, xyz, rpy in links:
+        c.add_link(parent, joint, axis, xyz, rpy)
+    return c
+
+
+def motion_from_recipe(links, q0, q1, k):
+    """The Motion of a "chain" recipe (Motion pickling)."""
+    return _chain_from_links(links).motions(q0, q1)[k]
+
+

@@ -1,0 +1,397 @@
+"""Robots from URDF: a kinematic chain (polyccd.Chain, C) with each link's collision
+geometry as polyccd bodies, checked exactly over joint-space segments.
+
+Reading only: the URDF is parsed by yourdfpy (links, joints, mimic joints, mesh file
+names), meshes by trimesh; both are imported when a URDF is loaded, never by
+`import polyccd`. The exact origins (xyz, rpy) are read from the URDF's own text (yourdfpy
+keeps only a 4x4 float matrix). Every kinematic computation is the C library's
+(pccd_chain_*, pccd_motion_*, pccd_scene_*). See bindings/python/API.md, "Robots".
+
+Policies (stated once, checked here or by the C library):
+  - joints: fixed, revolute, continuous (a revolute joint without limits), prismatic;
+    floating and planar joints are rejected (compose a base motion onto the robot with
+    Robot.motions(..., base=Motion) instead). A segment of a revolute or continuous joint
+    must turn by less than 2 pi (split it). Limits are not checked.
+  - mimic joints follow their leader at the segment's ends (value = multiplier * leader +
+    offset, in doubles); in between a prismatic mimic follows exactly (both linear), a
+    revolute one interpolates its own half-angle tangent.
+  - geometry (collision by default): meshes as their triangles (vertices times the
+    URDF scale in doubles, exactly equal vertices merged), boxes as 12 triangles,
+    spheres as balls; a cylinder as the prism over a 16-gon circumscribing its circle (a
+    stand-in that contains it: polyccd has no cylinder primitive).
+  - each geometry with a nonzero origin is one more chain link under its URDF link, on
+    a fixed joint (named "<link>#<i>"), so the origin rotation is exact as well.
+"""
+import os
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass
+from typing import Optional
+
+import numpy as np
+
+from ._body import Mesh, Spheres
+from ._chain import Chain
+from ._errors import InputError
+
+SUPPORTED = ("fixed", "revolute", "continuous", "prismatic")
+BOX_TRIANGLES = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
+                 [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
+
+
+def _floats(text, place, n=3):
+    try:
+        values = [float(x) for x in (text or "").split()]
+    except ValueError:
+        raise InputError(f"{place}: {text!r} is not {n} numbers") from None
+    if len(values) != n:
+        raise InputError(f"{place}: {text!r} is not {n} numbers")
+    return values
+
+
+def _origin(element, place):
+    """(xyz, rpy) of an element's <origin> child (URDF defaults: zeros)."""
+    o = element.find("origin") if element is not None else None
+    if o is None:
+        return [0.0] * 3, [0.0] * 3
+    return (_floats(o.get("xyz", "0 0 0"), place + ".origin.xyz"),
+            _floats(o.get("rpy", "0 0 0"), place + ".origin.rpy"))
+
+
+def _box_mesh(size):
+    h = [float(s) / 2 for s in size]  # halving a double is exact
+    v = [[h[0] * (1 if i & 1 else -1), h[1] * (1 if i & 2 else -1), h[2] * (1 if i & 4 else -1)]
+         for i in range(8)]
+    return Mesh(v, BOX_TRIANGLES)
+
+
+def _cylinder_mesh(radius, length, sides=16):
+    # The 16-gon with inradius >= radius (its vertices at radius / cos(pi / 16), enlarged
+    # by 1e-12 relative so that the rounding of the doubles cannot cut into the circle).
+    R = radius / np.cos(np.pi / sides) * (1 + 1e-12)
+    a = 2 * np.pi * (np.arange(sides) + 0.5) / sides
+    ring = [[R * np.cos(x), R * np.sin(x)] for x in a]
+    h = length / 2
+    v = [[x, y, -h] for x, y in ring] + [[x, y, h] for x, y in ring]
+    t = []
+    for i in range(sides):
+        j = (i + 1) % sides
+        t += [[i, j, sides + j], [i, sides + j, sides + i]]
+    for i in range(1, sides - 1):
+        t += [[0, i + 1, i], [sides, sides + i, sides + i + 1]]
+    return Mesh(v, t)
+
+
+def _mesh_file(filename, scale, place):
+    import trimesh
+    if not os.path.isfile(filename):
+        raise InputError(f"{place}: mesh file {filename!r} not found")
+    try:
+        m = trimesh.load(filename, force="mesh", process=False)
+    except Exception as e:  # trimesh raises many kinds
+        raise InputError(f"{place}: mesh file {filename!r} could not be read ({e})") from None
+    vertices = np.asarray(m.vertices, dtype=np.float64)
+    faces = np.asarray(m.faces, dtype=np.int64)
+    if len(faces) == 0:
+        raise InputError(f"{place}: mesh file {filename!r} has no triangles")
+    if scale is not None:
+        vertices = vertices * np.asarray(scale, dtype=np.float64)
+    vertices, inverse = np.unique(vertices, axis=0, return_inverse=True)
+    return Mesh(vertices, inverse.reshape(-1)[faces])
+
+
+class Robot:
+    """A robot read from URDF (load_urdf). Attributes: name; links (URDF link names, in
+    chain order); joints (the actuated joints' names: the order of q); chain (the
+    polyccd.Chain, one link per URDF link plus one per offset geometry); shapes: list of
+    (link name, geometry index, chain index, Mesh | Spheres) (a list: replace the
+    geometry at will); tree: {URDF link: (parent link, joint type)} (root: None);
+    joint_types: {joint: type}; mimic_joints: {joint: (leader, multiplier, offset)};
+    limits: {actuated joint: (lower, upper) or None}."""
+
+    def __init__(self, name, links, joints, chain, shapes, joint_link, mimic, limits, tree):
+        self.name, self.links, self.joints = name, links, joints
+        self.tree = tree                # URDF link -> (parent link, joint type); root: None
+        self.chain, self.shapes = chain, shapes
+        self._joint_link = joint_link   # actuated joint name -> chain index of its child link
+        self._mimic = mimic             # chain index -> (leader name, multiplier, offset)
+        self.limits = limits            # joint name -> (lower, upper) or None
+        self.link_index = {n: i for i, n in enumerate(links)}  # URDF link -> chain index
+
+    def chain_values(self, q):
+        """The chain's joint values (by chain link) of the actuated joint values q."""
+        q = np.asarray(q, dtype=np.float64)
+        if q.shape != (len(self.joints),):
+            raise InputError(f"q: expected {len(self.joints)} joint values "
+                             f"({', '.join(self.joints)}), got shape {q.shape}")
+        out = np.zeros(len(self.chain), dtype=np.float64)
+        for j, name in enumerate(self.joints):
+            out[self._joint_link[name]] = q[j]
+        for k, (leader, mult, off) in self._mimic.items():
+            out[k] = mult * q[self.joints.index(leader)] + off
+        return out
+
+    def motions(self, q0, q1):
+        """The exact world Motion of every chain link over the segment q0 -> q1."""
+        try:
+            return self.chain.motions(self.chain_values(q0), self.chain_values(q1))
+        except InputError as e:
+            raise InputError(self._joint_place(str(e))) from None
+
+    def link_motions(self, q0, q1):
+        """{URDF link name: Motion} over the segment q0 -> q1."""
+        m = self.motions(q0, q1)
+        return {n: m[i] for i, n in enumerate(self.links)}
+
+    def joint_values(self, q0, q1, t):
+        """{actuated joint name: value at time t} of the segment (floats; outputs)."""
+        v = self.chain.joint_values(self.chain_values(q0), self.chain_values(q1), t)
+        return {name: float(v[self._joint_link[name]]) for name in self.joints}
+
+    def _joint_place(self, message):
+        """A chain error "q1[k]: ..." with k the chain link, as "q1[j] (joint name): ..."."""
+        head, sep, rest = message.partition(": ")
+        for name, k in self._joint_link.items():
+            for q in ("q0", "q1"):
+                if head == f"{q}[{k}]":
+                    return f"{q}[{self.joints.index(name)}] ({name}){sep}{rest}"
+        return message
+
+    def adjacent_pairs(self):
+        """The default allowed link pairs: URDF links joined by a path of joints with at
+        most one moving joint (fixed joints merge links into one rigid group; a group and
+        the group it hangs from by one moving joint are adjacent)."""
+        def group(link):
+            while self.tree[link] is not None and self.tree[link][1] == "fixed":
+                link = self.tree[link][0]
+            return link
+        up = {}
+        for link, pj in self.tree.items():
+            if pj is not None and pj[1] != "fixed":
+                up[link] = group(pj[0])  # a group root hangs from this group
+        urdf_links = list(self.tree)
+        out = set()
+        for i, a in enumerate(urdf_links):
+            for b in urdf_links[i + 1:]:
+                ga, gb = group(a), group(b)
+                if ga == gb or up.get(ga) == gb or up.get(gb) == ga:
+                    out.add(frozenset((a, b)))
+        return out
+
+    def bodies(self, q0, q1):
+        """The robot's geometry as polyccd Bodies on their exact motions over q0 -> q1,
+        named "<link>" (or "<link>[i]" for a link with several geometries), with the URDF
+        link of each."""
+        m = self.motions(q0, q1)
+        count = {}
+        for link, _, _, _ in self.shapes:
+            count[link] = count.get(link, 0) + 1
+        from ._scene import Body
+        return ([Body(shape, m[k], name=link if count[link] == 1 else f"{link}[{i}]")
+                 for link, i, k, shape in self.shapes],
+                [link for link, _, _, _ in self.shapes])
+
+    def check(self, q0, q1, obstacles=(), *, self_collision=True, allowed=None,
+              time_tolerance="1e-12", all_contacts=False, threads=1, broad_phase="auto"):
+        """The exact first contact over the segment q0 -> q1 of the robot with the
+        obstacles (polyccd.Body, stationary or moving) and, when self_collision, of its
+        links with each other except the allowed pairs (an iterable of link-name pairs;
+        None: adjacent_pairs()) and a link's own geometries. One polyccd scene with those
+        pairs skipped (pccd_scene_set_pair_check); obstacle pairs are not checked.
+        Returns a RobotResult (first contact, contacts by link name and feature, joint
+        values at the ends of the time enclosure)."""
+        from ._scene import Body, check_scene
+        obstacles = list(obstacles)
+        for i, o in enumerate(obstacles):
+            if not isinstance(o, Body):
+                raise InputError(f"obstacles[{i}]: expected a polyccd.Body, got {type(o).__name__}")
+        robot_bodies, owner = self.bodies(q0, q1)
+        if allowed is None:
+            allowed = self.adjacent_pairs()
+        allowed_set = set()
+        for k, pair in enumerate(allowed):
+            pair = tuple(pair)
+            if len(pair) != 2 or any(x not in self.tree for x in pair):
+                raise InputError(f"allowed[{k}]: {pair!r} is not a pair of link names")
+            allowed_set.add(frozenset(pair))
+        n = len(robot_bodies)
+        skip = []
+        for i in range(n):
+            for j in range(i + 1, n):
+                if (not self_collision or owner[i] == owner[j]
+                        or frozenset((owner[i], owner[j])) in allowed_set):
+                    skip.append((i, j))
+        for i in range(len(obstacles)):
+            for j in range(i + 1, len(obstacles)):
+                skip.append((n + i, n + j))
+        bodies = robot_bodies + [Body(o.shape, o.motion, name=o.name if o.name is not None
+                                      else f"obstacle{i}") for i, o in enumerate(obstacles)]
+        if len(bodies) < 2:
+            raise InputError("obstacles: nothing to check (one body, no obstacle)")
+        r = check_scene(bodies, time_tolerance=time_tolerance, all_contacts=all_contacts,
+                        threads=threads, broad_phase=broad_phase, skip_pairs=skip)
+        return RobotResult.of(r, self, q0, q1)
+
+    def check_path(self, waypoints, obstacles=(), **options):
+        """Checks the segments waypoints[0] -> waypoints[1] -> ... in order and stops at
+        the first that collides: a PathResult (segment index and its RobotResult, or
+        segment None when no segment collides). Options as check()."""
+        w = [np.asarray(q, dtype=np.float64) for q in waypoints]
+        if len(w) < 2:
+            raise InputError(f"waypoints: a path needs at least 2 waypoints, got {len(w)}")
+        for s in range(len(w) - 1):
+            try:
+                r = self.check(w[s], w[s + 1], obstacles, **options)
+            except InputError as e:
+                raise InputError(f"waypoints[{s}] -> waypoints[{s + 1}]: {e}") from None
+            if r.collides:
+                return PathResult(s, r)
+        return PathResult(None, None)
+
+
+@dataclass(frozen=True)
+class RobotContact:
+    """Two touching features: (body name, feature kind, index) each, the pair's time."""
+    a: tuple
+    b: tuple
+    first_contact: object
+
+
+@dataclass(frozen=True)
+class RobotResult:
+    collides: bool
+    first_contact: object          # ContactTime or None
+    contacts: tuple                # RobotContact of the pairs that may touch first
+    joint_values: Optional[tuple]  # ({joint: value} at first_contact.lo, at .hi)
+    scene: object                  # the SceneResult
+
+    @staticmethod
+    def of(r, robot, q0, q1):
+        contacts = tuple(RobotContact((p.names[0],) + tuple(c.a), (p.names[1],) + tuple(c.b),
+                                      c.first_contact) for p in r.first for c in p.contacts)
+        values = None
+        if r.collides:
+            values = (robot.joint_values(q0, q1, r.first_contact.lo),
+                      robot.joint_values(q0, q1, r.first_contact.hi))
+        return RobotResult(r.collides, r.first_contact, contacts, values, r)
+
+
+@dataclass(frozen=True)
+class PathResult:
+    segment: Optional[int]   # the first colliding segment (waypoints[s] -> [s + 1]), or None
+    result: Optional[RobotResult]
+
+def load_urdf(path, *, geometry="collision"):
+    """A Robot from the URDF file at path; geometry: "collision" (default) or "visual".
+    Mesh file names ("package://...", relative) are resolved by yourdfpy's default
+    handler (relative to the URDF file and its parent folders). InputError for a
+    missing or unreadable file, an unsupported joint type, a zero axis, a bad number."""
+    import yourdfpy
+    if geometry not in ("collision", "visual"):
+        raise InputError(f'geometry: {geometry!r} is not "collision" or "visual"')
+    if not os.path.isfile(path):
+        raise InputError(f"path: URDF file {str(path)!r} not found")
+    try:
+        urdf = yourdfpy.URDF.load(str(path), load_meshes=False, build_scene_graph=False,
+                                  load_collision_meshes=False)
+        xml = ET.parse(str(path)).getroot()
+    except Exception as e:
+        raise InputError(f"path: {str(path)!r} is not a readable URDF ({e})") from None
+    robot = urdf.robot
+    joints_xml = {j.get("name"): j for j in xml.findall("joint")}
+    links_xml = {link.get("name"): link for link in xml.findall("link")}
+    for j in robot.joints:
+        if j.type not in SUPPORTED:
+            raise InputError(f"joints.{j.name}: type {j.type!r} is not supported (polyccd "
+                             f"chains take {', '.join(SUPPORTED)} joints; put a floating "
+                             f"base on the robot's motions with Motion.then)")
+    children = {}
+    for j in robot.joints:
+        children.setdefault(j.parent, []).append(j)
+    child_links = {j.child for j in robot.joints}
+    roots = [link.name for link in robot.links if link.name not in child_links]
+    if len(roots) != 1:
+        raise InputError(f"path: the URDF has {len(roots)} root links ({', '.join(roots)}), "
+                         f"not one")
+
+    chain, names, joint_link, mimic, limits = Chain(), [], {}, {}, {}
+    geometry_at = []  # (URDF link, geometry index, chain index, xml element, yourdfpy geometry)
+
+    def add(parent, joint, axis, xyz, rpy, place):
+        try:
+            return chain.add_link(parent, joint, axis, xyz, rpy)
+        except InputError as e:
+            raise InputError(f"{place}.{e}") from None
+
+    order = [(roots[0], None, -1)]
+    while order:
+        link_name, j, parent = order.pop(0)
+        if j is None:
+            k = add(-1, "fixed", None, [0, 0, 0], [0, 0, 0], f"links.{link_name}")
+        else:
+            xyz, rpy = _origin(joints_xml[j.name], f"joints.{j.name}")
+            axis = None
+            if j.type != "fixed":
+                a = joints_xml[j.name].find("axis")
+                axis = _floats(a.get("xyz") if a is not None else "1 0 0", f"joints.{j.name}.axis")
+            k = add(parent, j.type, axis, xyz, rpy, f"joints.{j.name}")
+            if j.type != "fixed":
+                if j.mimic is not None:
+                    mimic[k] = (j.mimic.joint, float(j.mimic.multiplier if j.mimic.multiplier is not None else 1),
+                                float(j.mimic.offset or 0))
+                else:
+                    joint_link[j.name] = k
+                    lim = j.limit
+                    limits[j.name] = (None if lim is None or j.type == "continuous"
+                                      else (lim.lower, lim.upper))
+        names.append(link_name)
+        items = links_xml[link_name].findall(geometry)
+        for i, g in enumerate(items):
+            geometry_at.append((link_name, i, k, g))
+        for child in children.get(link_name, []):
+            order.append((child.child, child, k))
+    actuated = [j.name for j in robot.joints if j.name in joint_link]
+    for k, (leader, _, _) in mimic.items():
+        if leader not in joint_link:
+            raise InputError(f"joints: a mimic joint follows {leader!r}, which is not an "
+                             f"actuated joint")
+
+    shapes = []
+    for link_name, i, k, g in geometry_at:
+        place = f"links.{link_name}.{geometry}[{i}]"
+        xyz, rpy = _origin(g, place)
+        if any(xyz) or any(rpy):
+            k = add(k, "fixed", None, xyz, rpy, place)
+            names.append(f"{link_name}#{i}")
+        shape = _geometry(g.find("geometry"), urdf, place)
+        shapes.append((link_name, i, k, shape))
+    tree = {j.child: (j.parent, j.type) for j in robot.joints}
+    tree[roots[0]] = None
+    out = Robot(robot.name, names, actuated, chain, shapes, joint_link, mimic, limits, tree)
+    out.joint_types = {j.name: j.type for j in robot.joints}
+    out.mimic_joints = {j.name: (j.mimic.joint, float(j.mimic.multiplier if j.mimic.multiplier is not None else 1),
+                                 float(j.mimic.offset or 0)) for j in robot.joints if j.mimic is not None}
+    return out
+
+
+def _geometry(g, urdf, place):
+    """The Mesh or Spheres of a URDF <geometry> element."""
+    if g is None or len(g) == 0:
+        raise InputError(f"{place}.geometry: missing")
+    e = g[0]
+    if e.tag == "box":
+        return _box_mesh(_floats(e.get("size"), place + ".geometry.box.size"))
+    if e.tag == "sphere":
+        r = _floats(e.get("radius"), place + ".geometry.sphere.radius", 1)[0]
+        return Spheres([[0, 0, 0]], [r])
+    if e.tag == "cylinder":
+        r = _floats(e.get("radius"), place + ".geometry.cylinder.radius", 1)[0]
+        h = _floats(e.get("length"), place + ".geometry.cylinder.length", 1)[0]
+        return _cylinder_mesh(r, h)
+    if e.tag == "mesh":
+        name = e.get("filename")
+        if not name:
+            raise InputError(f"{place}.geometry.mesh: no filename")
+        scale = e.get("scale")
+        scale = _floats(scale, place + ".geometry.mesh.scale") if scale else None
+        return _mesh_file(urdf._filename_handler(name), scale, place + ".geometry.mesh")
+    raise InputError(f"{place}.geometry: unknown shape <{e.tag}>")

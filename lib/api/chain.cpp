@@ -1,0 +1,95 @@
+// pccd_chain_*: kinematic chains (lib/motion/chain.h). Validates and converts the C
+// inputs, calls lib/motion, maps errors; no algorithm here.
+#include <string>
+#include <vector>
+
+#include "api/guard.h"
+#include "api/motion_handle.h"
+#include "motion/chain.h"
+
+using pccd::api::guard;
+using pccd::api::place;
+using pccd::api::require;
+using pccd::arith::Input_error;
+
+struct pccd_chain {
+  pccd::motion::Chain c;
+};
+
+namespace {
+
+// The joint value arrays of a segment: both non-NULL with n == the number of links.
+void check_segment(const pccd_chain *c, const double *q0, const double *q1, size_t n) {
+  require(c, "c");
+  if (n != c->c.size())
+    throw Input_error("n: " + std::to_string(n) + " joint values given, the chain has " +
+                      std::to_string(c->c.size()) + " links");
+  if (n > 0) {
+    require(q0, "q0");
+    require(q1, "q1");
+  }
+}
+
+}  // namespace
+
+extern "C" {
+
+PCCD_API int pccd_chain_new(pccd_chain **out) { return pccd::api::new_handle(__func__, out); }
+
+PCCD_API void pccd_chain_free(pccd_chain *c) { delete c; }
+
+PCCD_API int pccd_chain_add_link(pccd_chain *c, long parent, int joint, const double axis[3],
+                                 const double xyz[3], const double rpy[3], size_t *index) {
+  return guard(__func__, [&] {
+    require(c, "c");
+    require(xyz, "xyz");
+    require(rpy, "rpy");
+    pccd::motion::Chain next = c->c;  // unchanged on error
+    const size_t k = next.add_link(parent, joint, axis, xyz, rpy);
+    c->c = std::move(next);
+    if (index) *index = k;
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_chain_size(const pccd_chain *c, size_t *n) {
+  return guard(__func__, [&] {
+    require(c, "c");
+    require(n, "n");
+    *n = c->c.size();
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_chain_segment_motions(const pccd_chain *c, const double *q0, const double *q1,
+                                        size_t n, pccd_motion **motions) {
+  return guard(__func__, [&] {
+    check_segment(c, q0, q1, n);
+    if (n > 0) require(motions, "motions");
+    for (size_t k = 0; k < n; ++k) motions[k] = nullptr;
+    std::vector<pccd::motion::Rigid_motion> m = c->c.segment_motions(q0, q1);
+    std::vector<pccd_motion *> made;
+    try {
+      for (auto &x : m) made.push_back(new pccd_motion{std::move(x)});
+    } catch (...) {
+      for (pccd_motion *p : made) delete p;
+      throw;
+    }
+    for (size_t k = 0; k < n; ++k) motions[k] = made[k];
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_chain_joint_values_s(const pccd_chain *c, const double *q0, const double *q1,
+                                       size_t n, const char *t, double *values) {
+  return guard(__func__, [&] {
+    check_segment(c, q0, q1, n);
+    require(t, "t");
+    if (n > 0) require(values, "values");
+    const std::vector<double> v = c->c.joint_values(q0, q1, pccd::arith::parse_rational(t, "t"));
+    for (size_t k = 0; k < n; ++k) values[k] = v[k];
+    return PCCD_OK;
+  });
+}
+
+}  // extern "C"

@@ -1,0 +1,156 @@
+#include "motion/chain.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace pccd::motion {
+
+using arith::Input_error;
+using arith::Rational;
+
+namespace {
+
+// pi and 2 pi rounded to nearest: 3.141592653589793116 < pi and 6.283185307179586232 <
+// 2 pi, so "|d| >= kTwo_pi" rejects every segment of a full turn or more (and the few
+// doubles within 2.5e-16 below it).
+const double kPi = 3.141592653589793;
+const double kTwo_pi = 6.283185307179586;
+
+std::string text(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
+std::string where(const char *name, size_t k) { return std::string(name) + "[" + std::to_string(k) + "]"; }
+
+Rational exact(double x, const std::string &place) { return arith::rational_from_double(x, place); }
+
+Poly_q line(const Rational &a, const Rational &b) { return Poly_q(std::vector<Rational>{a, b - a}); }
+
+// The endpoints (c, s) = (cos(theta / 2), sin(theta / 2) / |a|) of a revolute joint, and
+// the scaled translation e = d / |a| of a prismatic one (chain.h).
+struct Ends {
+  Rational c0, s0, c1, s1;  // revolute
+  Rational e0, e1;          // prismatic
+};
+
+Ends joint_ends(const Chain_link &L, size_t k, double q0, double q1) {
+  const Rational a = exact(q0, where("q0", k)), b = exact(q1, where("q1", k));
+  Ends e;
+  if (L.joint == Joint_type::prismatic) {
+    e.e0 = exact(q0 / L.axis_norm, where("q0", k));
+    e.e1 = exact(q1 / L.axis_norm, where("q1", k));
+    return e;
+  }
+  e.c0 = exact(std::cos(q0 / 2), "c0");
+  e.s0 = exact(std::sin(q0 / 2) / L.axis_norm, "s0");
+  e.c1 = exact(std::cos(q1 / 2), "c1");
+  e.s1 = exact(std::sin(q1 / 2) / L.axis_norm, "s1");
+  const Rational d = b - a;
+  const int sd = sgn(d);
+  const Rational ad = sd < 0 ? Rational(-d) : d;
+  if (!(ad < Rational(kTwo_pi)))
+    throw Input_error(where("q1", k) + ": the revolute segment from " + text(q0) + " to " + text(q1) +
+                      " turns by 2 pi or more; split it into shorter segments");
+  // The sign of sin of the swept half-angle is that of c0 s1 - s0 c1 (|a| > 0).
+  const Rational cross = e.c0 * e.s1 - e.s0 * e.c1;
+  if (Rational(kPi) < ad && sgn(cross) != sd)
+    throw Input_error(where("q1", k) + ": the revolute segment from " + text(q0) + " to " + text(q1) +
+                      " is so close to a full turn that its rounded half-angle endpoints "
+                      "would be interpolated the other way round; split it");
+  const Rational dot = e.c0 * e.c1 + e.s0 * e.s1 * L.axis[0] * L.axis[0] +
+                       e.s0 * e.s1 * L.axis[1] * L.axis[1] + e.s0 * e.s1 * L.axis[2] * L.axis[2];
+  if (sgn(cross) == 0 && sgn(dot) < 0)
+    throw arith::Internal_error("antipodal joint quaternions passed the segment check");
+  return e;
+}
+
+}  // namespace
+
+size_t Chain::add_link(long parent, int joint, const double *axis, const double xyz[3],
+                       const double rpy[3]) {
+  Chain_link L;
+  if (parent < -1 || parent >= static_cast<long>(links_.size()))
+    throw Input_error("parent: " + std::to_string(parent) + " is not -1 (the world) or an earlier link (0.." +
+                      std::to_string(static_cast<long>(links_.size()) - 1) + ")");
+  L.parent = parent;
+  if (joint < 0 || joint > 3)
+    throw Input_error("joint: " + std::to_string(joint) + " is not a pccd_joint_type (0..3)");
+  L.joint = static_cast<Joint_type>(joint);
+  if (L.joint != Joint_type::fixed) {
+    if (!axis) throw Input_error("axis: is NULL");
+    for (int i = 0; i < 3; ++i) L.axis[i] = exact(axis[i], where("axis", i));
+    const Rational n2 = L.axis[0] * L.axis[0] + L.axis[1] * L.axis[1] + L.axis[2] * L.axis[2];
+    if (sgn(n2) == 0) throw Input_error("axis: the direction is the zero vector");
+    L.axis_norm = n2 == Rational(1) ? 1.0 : std::sqrt(arith::nearest_double(n2));
+  }
+  double h[3][2];  // cos, sin of the half angles of roll, pitch, yaw
+  for (int i = 0; i < 3; ++i) {
+    L.origin_p[i] = exact(xyz[i], where("xyz", i));
+    exact(rpy[i], where("rpy", i));  // checks finiteness
+    h[i][0] = std::cos(rpy[i] / 2);
+    h[i][1] = std::sin(rpy[i] / 2);
+  }
+  // q = qz(yaw) qy(pitch) qx(roll), qx = (cr, sr, 0, 0), qy = (cp, 0, sp, 0), qz = (cy, 0, 0, sy).
+  const double cr = h[0][0], sr = h[0][1], cp = h[1][0], sp = h[1][1], cy = h[2][0], sy = h[2][1];
+  const double q[4] = {cy * cp * cr + sy * sp * sr, cy * cp * sr - sy * sp * cr,
+                       cy * sp * cr + sy * cp * sr, sy * cp * cr - cy * sp * sr};
+  for (int i = 0; i < 4; ++i) L.origin_q[i] = exact(q[i], "rpy");
+  if (sgn(L.origin_q[0]) == 0 && sgn(L.origin_q[1]) == 0 && sgn(L.origin_q[2]) == 0 &&
+      sgn(L.origin_q[3]) == 0)
+    throw arith::Internal_error("the roll-pitch-yaw quaternion rounded to zero");
+  links_.push_back(L);
+  return links_.size() - 1;
+}
+
+Rigid_motion Chain::joint_motion(size_t k, double q0, double q1) const {
+  const Chain_link &L = links_[k];
+  Rigid_motion m;
+  if (L.joint != Joint_type::fixed) {
+    const Ends e = joint_ends(L, k, q0, q1);
+    if (L.joint == Joint_type::prismatic) {
+      const Poly_q f = line(e.e0, e.e1);
+      for (int i = 0; i < 3; ++i) m.o[i] = Poly_q::constant(L.axis[i]) * f;
+    } else {
+      m.r[0] = line(e.c0, e.c1);
+      const Poly_q s = line(e.s0, e.s1);
+      for (int i = 0; i < 3; ++i) m.r[1 + i] = Poly_q::constant(L.axis[i]) * s;
+    }
+  }
+  m.compose_world(L.origin_q, L.origin_p);
+  return m;
+}
+
+std::vector<Rigid_motion> Chain::segment_motions(const double *q0, const double *q1) const {
+  std::vector<Rigid_motion> out;
+  out.reserve(links_.size());
+  for (size_t k = 0; k < links_.size(); ++k) {
+    Rigid_motion j = joint_motion(k, q0[k], q1[k]);
+    // Every factor is valid by construction (a joint quaternion never vanishes, above),
+    // so the composition needs no vanishing check.
+    out.push_back(links_[k].parent < 0 ? std::move(j) : compose_valid(out[links_[k].parent], j));
+  }
+  return out;
+}
+
+std::vector<double> Chain::joint_values(const double *q0, const double *q1, const Rational &t) const {
+  if (sgn(t) < 0 || t > 1) throw Input_error("t: " + arith::to_string(t) + " is outside [0, 1]");
+  std::vector<double> v(links_.size(), 0.0);
+  for (size_t k = 0; k < links_.size(); ++k) {
+    const Chain_link &L = links_[k];
+    if (L.joint == Joint_type::fixed) continue;
+    const Ends e = joint_ends(L, k, q0[k], q1[k]);
+    if (L.joint == Joint_type::prismatic) {
+      v[k] = arith::nearest_double(line(e.e0, e.e1).eval(t)) * L.axis_norm;
+      continue;
+    }
+    const double C0 = arith::nearest_double(e.c0), S0 = arith::nearest_double(e.s0) * L.axis_norm;
+    const double C = arith::nearest_double(line(e.c0, e.c1).eval(t));
+    const double S = arith::nearest_double(line(e.s0, e.s1).eval(t)) * L.axis_norm;
+    v[k] = q0[k] + 2 * std::atan2(C0 * S - S0 * C, C0 * C + S0 * S);
+  }
+  return v;
+}
+
+}  // namespace pccd::motion
