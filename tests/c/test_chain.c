@@ -11,19 +11,8 @@
 
 #include "check.h"
 
-static int position_is(const pccd_motion *m, const char *p0, const char *p1, const char *p2,
-                       const char *t, const char *want)
-{
-  const char *p[3];
-  char buf[4096];
-  p[0] = p0;
-  p[1] = p1;
-  p[2] = p2;
-  if (pccd_motion_position_s(m, p, t, buf, sizeof buf, NULL) != PCCD_OK) return 0;
-  if (strcmp(buf, want) == 0) return 1;
-  printf("     position at t = %s: got \"%s\", want \"%s\"\n", t, buf, want);
-  return 0;
-}
+#include "motion_check.h"
+
 
 /* Link 0: prismatic along (0, 0, 2) (|axis| = 2 exactly, so q moves by q along z), origin
  *         (1, 0, 0), q 0 -> 1: its origin is at (1, 0, t).

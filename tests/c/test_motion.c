@@ -20,6 +20,8 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "motion_check.h"
+
 static int g_pass, g_fail, g_mode = FE_TONEAREST;
 static const char *g_case = "";
 
@@ -41,20 +43,6 @@ static int check_(int ok, const char *expr, int line)
 #define FAILS(call, rc, word) \
   CHECK((call) == (rc) && strstr(pccd_last_error(), (word)) != NULL && fegetround() == g_mode)
 
-/* The position of p = (p0, p1, p2) at t equals `want` ("x y z"). */
-static int position_is(const pccd_motion *m, const char *p0, const char *p1, const char *p2,
-                       const char *t, const char *want)
-{
-  const char *p[3];
-  char buf[512];
-  p[0] = p0;
-  p[1] = p1;
-  p[2] = p2;
-  if (pccd_motion_position_s(m, p, t, buf, sizeof buf, NULL) != PCCD_OK) return 0;
-  if (strcmp(buf, want) == 0) return 1;
-  printf("     position at t = %s: got \"%s\", want \"%s\"\n", t, buf, want);
-  return 0;
-}
 #define POS(m, p0, p1, p2, t, want) CHECK(position_is((m), (p0), (p1), (p2), (t), (want)))
 
 static void known_answers(void)
