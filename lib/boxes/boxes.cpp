@@ -8,6 +8,8 @@
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/box_intersection_d.h>
 
+#include "util/work_budget.h"
+
 #include <cmath>
 #include <limits>
 
@@ -248,7 +250,11 @@ void box_pairs(const std::vector<Box> &a, const std::vector<Box> &b,
   std::vector<CBox> ca = convert(a), cb = convert(b);
   // Closed boxes: touching boxes are reported (CGAL::Box_intersection_d::CLOSED).
   CGAL::box_intersection_d(ca.begin(), ca.end(), cb.begin(), cb.end(),
-                           [&](const CBox &x, const CBox &y) { out.emplace_back(x.info(), y.info()); },
+                           [&](const CBox &x, const CBox &y) {
+                             out.emplace_back(x.info(), y.info());
+                             // a step per 4,096 pairs: millions can meet (util/work_budget.h)
+                             if (out.size() % 4096 == 0) util::work_step();
+                           },
                            std::ptrdiff_t(10), CGAL::Box_intersection_d::CLOSED,
                            CGAL::Box_intersection_d::BIPARTITE);
 }

@@ -134,6 +134,7 @@ class Bvh_source final : public narrow::Candidate_source {
       const size_t chunks = (front.size() + kChunk - 1) / kChunk;
       std::vector<Step_out> out(chunks);
       auto run_chunk = [&](size_t c) {
+        util::work_step();  // one chunk of node pairs (util/work_budget.h)
         const size_t b = c * kChunk, e = std::min(front.size(), b + kChunk);
         step(pose, final, thresh, front.data() + b, e - b, out[c]);
       };
@@ -179,6 +180,7 @@ class Bvh_source final : public narrow::Candidate_source {
     const size_t chunks = (leaves.size() + kChunk - 1) / kChunk;
     std::vector<std::vector<Prim_pair>> out(chunks);
     auto run_chunk = [&](size_t c) {
+      util::work_step();  // one chunk of leaf pairs
       const size_t e = std::min(leaves.size(), (c + 1) * kChunk);
       for (size_t i = c * kChunk; i < e; ++i)
         elements(leaves[i], [&](uint32_t ea, uint32_t eb) { features(pose, ea, eb, out[c]); });

@@ -180,6 +180,7 @@ std::vector<Prim_pair> collect(size_t n, Thread_pool &pool, F fn) {
   const size_t chunks = (n + kChunk - 1) / kChunk;
   std::vector<std::vector<Prim_pair>> parts(chunks);
   pool.parallel_for(chunks, [&](size_t c) {
+    util::work_step();  // one chunk of query primitives (util/work_budget.h)
     std::vector<uint32_t> ids;
     for (size_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) fn(i, parts[c], ids);
   });
