@@ -151,9 +151,12 @@ def test_a_long_check_does_not_hold_the_gil():
 
 
 CHILD = r"""
-import sys, time
+import signal, sys, time
 from fractions import Fraction as F
 import polyccd as P
+# As in an interactive Python: a child of a background job (CI) inherits SIGINT ignored,
+# and Python then installs no handler of its own (polyccd leaves an ignored SIGINT alone).
+signal.signal(signal.SIGINT, signal.default_int_handler)
 n = 2000  # 4,000,000 touching pairs with all contacts: minutes (tests/test_limits.py, rows)
 rows = lambda x0: P.Spheres([[x0 + F(k, 2), 0, 0] for k in range(n)], [F(n, 4) + 1] * n)
 bodies = [P.Body(rows(0)), P.Body(rows(F(1, 4)), P.Motion.linear([0, n, 0], [0, -n, 0]))]
