@@ -12,8 +12,8 @@ import pytest
 
 from polyccd.apps import _demo_robot as D
 
-pytestmark = pytest.mark.skipif(bool(D.missing_packages()),
-                                reason="yourdfpy or example-robot-data is not installed")
+needs_robot = pytest.mark.skipif(bool(D.missing_packages()),
+                                 reason="yourdfpy or example-robot-data is not installed")
 
 
 @pytest.fixture(scope="module")
@@ -21,6 +21,7 @@ def demo():
     return D.robot_demo()
 
 
+@needs_robot
 def test_the_segment_collides_between_two_samples(demo):
     r = demo.result
     assert r.collides
@@ -31,12 +32,14 @@ def test_the_segment_collides_between_two_samples(demo):
     assert set(r.joint_values[0]) == set(demo.robot.joints)
 
 
+@needs_robot
 def test_the_ten_sampled_poses_are_free_and_the_pose_between_is_not(demo):
     assert [s.t for s in demo.samples] == [Fraction(k, 9) for k in range(10)]
     assert [s.collides for s in demo.samples] == [False] * 10, demo.samples
     assert demo.between.collides
 
 
+@needs_robot
 def test_the_first_contact_time_against_static_poses(demo):
     # Free a little before the enclosure, colliding a little after (the segment's joint
     # values rounded to doubles, each pose decided exactly): the contact lies in between.
@@ -48,6 +51,7 @@ def test_the_first_contact_time_against_static_poses(demo):
         assert D.pose_collides(robot, q, [demo.plate]) is expected, (t, q.tolist())
 
 
+@needs_robot
 def test_run_robot_demo_prints_and_draws(tmp_path):
     lines = []
     demo, png, ok = D.run_robot_demo(tmp_path, out=lines.append)
@@ -55,3 +59,12 @@ def test_run_robot_demo_prints_and_draws(tmp_path):
     assert ok and png is not None and png.stat().st_size > 10000
     assert "MISSES the contact" in text and "first contact: t in [" in text
     assert "joint values at the first contact" in text
+
+
+def test_without_the_packages_the_demo_says_so_and_skips(monkeypatch, tmp_path):
+    monkeypatch.setattr(D, "missing_packages", lambda: ["yourdfpy", "example-robot-data"])
+    lines = []
+    assert D.run_robot_demo(tmp_path, out=lines.append) == (None, None, True)
+    assert D.robot_demo() is None
+    assert "robot demo skipped: yourdfpy, example-robot-data not installed" in "\n".join(lines)
+    assert not list(tmp_path.iterdir())

@@ -6,7 +6,8 @@ obstacles (boxes and 2 mm plates), each checked by
   polyccd   Robot.check(q0, q1, obstacles, self_collision=False): the exact first contact
             of the links' exact motions over the segment (polyccd.robot);
   discrete  python-fcl collision at a planner's resolution: poses t = k / m, k = 0..m,
-            m = ceil(largest joint change / RESOLUTION) (default 0.05 rad), stopping at
+            m = ceil(largest joint change / RESOLUTION) (0.05 rad, typical of planners;
+            also 0.1 and 0.2 rad by default: --resolution), stopping at
             the first colliding pose as a planner does; fcl.BVHModel (OBBRSS) of the SAME
             triangles polyccd gets (robot meshes and obstacle boxes), one
             DynamicAABBTree manager per side; link poses by Pinocchio's float FK.
@@ -192,7 +193,9 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--n", type=int, default=1000, help="segments (default 1000)")
     ap.add_argument("--seed", type=int, default=20261124)
-    ap.add_argument("--resolution", type=float, default=0.05, help="rad per pose (default 0.05)")
+    ap.add_argument("--resolution", type=float, nargs="+", default=[0.05, 0.1, 0.2],
+                    help="rad per pose of the discrete checks (default 0.05 0.1 0.2; 0.05 is "
+                    "a typical planner resolution)")
     ap.add_argument("--span", type=float, default=1.0, help="largest change per joint (rad)")
     ap.add_argument("--boxes", type=int, default=3)
     ap.add_argument("--plates", type=int, default=3)
@@ -223,7 +226,7 @@ def main(argv=None):
     print(f"bench_robot: Panda ({len(robot.shapes)} collision meshes, "
           f"{sum(len(s.triangles) for *_, s in robot.shapes)} triangles), "
           f"{args.boxes} boxes + {args.plates} plates (2 mm), {args.n} segments "
-          f"(seed {args.seed}, span {args.span} rad), discrete every {args.resolution} rad")
+          f"(seed {args.seed}, span {args.span} rad), discrete every {' / '.join(map(str, args.resolution))} rad")
     for name, lo, hi in boxes:
         print(f"  {name}: [{', '.join(f'{x:.4f}' for x in lo)}] - [{', '.join(f'{x:.4f}' for x in hi)}]")
     print(f"path agreement of the discrete side: joint values {dq:.1e} rad, "
@@ -232,57 +235,67 @@ def main(argv=None):
     def valid(q):
         return not robot.check(q, q, obstacles, self_collision=False).collides
 
-    rows, misses, bad, early = [], [], [], []
+    res = args.resolution
+    exact_times, exact_hits = [], 0
+    runs = {r: {"times": [], "hits": 0, "poses": [], "misses": [], "bad": [], "early": []}
+            for r in res}
     start_all, rejected = time.perf_counter(), 0
-    while len(rows) < args.n:
+    while len(exact_times) < args.n:
         q0 = np.array([rng.uniform(lo, hi) for lo, hi in lims])
         q1 = np.array([min(hi, max(lo, x + rng.uniform(-args.span, args.span)))
                        for x, (lo, hi) in zip(q0, lims)])
         if not (valid(q0) and valid(q1)):
             rejected += 1
             continue
-        s = len(rows)
+        s = len(exact_times)
         t0 = time.perf_counter()
         exact = robot.check(q0, q1, obstacles, self_collision=False)
-        t1 = time.perf_counter()
-        sample, poses = discrete.check(q0, q1, args.resolution)
-        t2 = time.perf_counter()
-        rows.append((t1 - t0, t2 - t1, exact.collides, sample is not None, poses))
-        if exact.collides and sample is None:
-            c = exact.contacts[0]
-            misses.append(f"segment {s}: {c.a[0]} {c.a[1]} - {c.b[0]} {c.b[1]} at t ~ "
-                          f"{exact.first_contact.approx:.6f}")
-        if sample is not None and not exact.collides:
-            bad.append((s, q0.tolist(), q1.tolist(), sample))
-        if sample is not None and exact.collides and sample < exact.first_contact.lo:
-            early.append((s, q0.tolist(), q1.tolist(), sample, exact.first_contact))
+        exact_times.append(time.perf_counter() - t0)
+        exact_hits += exact.collides
+        for r, run in runs.items():
+            t0 = time.perf_counter()
+            sample, poses = discrete.check(q0, q1, r)
+            run["times"].append(time.perf_counter() - t0)
+            run["poses"].append(poses)
+            run["hits"] += sample is not None
+            if exact.collides and sample is None:
+                c = exact.contacts[0]
+                run["misses"].append(f"segment {s}: {c.a[0]} {c.a[1]} - {c.b[0]} {c.b[1]} "
+                                     f"at t ~ {exact.first_contact.approx:.6f}")
+            if sample is not None and not exact.collides:
+                run["bad"].append(f"segment {s}: q0 = {q0.tolist()}, q1 = {q1.tolist()}, "
+                                  f"discrete collides at t = {sample}")
+            if sample is not None and exact.collides and sample < exact.first_contact.lo:
+                run["early"].append(f"segment {s}: q0 = {q0.tolist()}, q1 = {q1.tolist()}, "
+                                    f"sample t = {sample}, polyccd {exact.first_contact}")
         if (s + 1) % 100 == 0:
             print(f"  {s + 1} segments, {time.perf_counter() - start_all:.0f} s", flush=True)
 
     def ms(values):
-        return (f"{1e3 * statistics.mean(values):10.2f} {1e3 * statistics.median(values):10.2f} "
-                f"{1e3 * max(values):10.2f}")
-    n = len(rows)
+        return (f"{1e3 * statistics.mean(values):9.2f} {1e3 * statistics.median(values):9.2f} "
+                f"{1e3 * max(values):9.2f}")
+    n = len(exact_times)
     print(f"segment ends drawn and rejected (an end in collision): {rejected}; "
-          f"wall time {time.perf_counter() - start_all:.0f} s")
-    print(f"\n{'method':<34} {'mean ms':>10} {'median ms':>10} {'max ms':>10} {'colliding':>10}")
-    print(f"{'polyccd Robot.check (exact)':<34} {ms([r[0] for r in rows])} "
-          f"{sum(r[2] for r in rows):>10}")
-    print(f"{f'FCL discrete @ {args.resolution} rad':<34} {ms([r[1] for r in rows])} "
-          f"{sum(r[3] for r in rows):>10}")
-    print(f"poses per segment (discrete, up to the first collision): mean "
-          f"{statistics.mean(r[4] for r in rows):.1f}, max {max(r[4] for r in rows)}")
-    print(f"MISSES of the discrete check (polyccd: contact, discrete: free): {len(misses)} "
-          f"of {n} segments ({100 * len(misses) / n:.1f} %); "
-          f"{len(misses)} of {sum(r[2] for r in rows)} colliding segments")
-    for text in misses[:5]:
-        print(f"  missed: {text}")
-    print(f"discrete collisions polyccd does not report: {len(bad)}")
-    for s, q0, q1, t in bad:
-        print(f"  !!! DISCREPANCY segment {s}: q0 = {q0}, q1 = {q1}, discrete collides at t = {t}")
-    print(f"discrete first collisions before polyccd's first contact: {len(early)}")
-    for s, q0, q1, t, c in early:
-        print(f"  !!! EARLIER segment {s}: q0 = {q0}, q1 = {q1}, sample t = {t}, polyccd {c}")
+          f"wall time {time.perf_counter() - start_all:.0f} s\n")
+    print(f"{'method':<28} {'mean ms':>9} {'median':>9} {'max ms':>9} {'poses':>6} "
+          f"{'colliding':>9} {'MISSES':>7} {'unreported':>10} {'earlier':>7}")
+    print(f"{'polyccd Robot.check exact':<28} {ms(exact_times)} {'-':>6} {exact_hits:>9} "
+          f"{'-':>7} {'-':>10} {'-':>7}")
+    for r, run in runs.items():
+        print(f"{f'FCL discrete @ {r} rad':<28} {ms(run['times'])} "
+              f"{statistics.mean(run['poses']):6.1f} {run['hits']:>9} {len(run['misses']):>7} "
+              f"{len(run['bad']):>10} {len(run['early']):>7}")
+    print(f"poses: mean poses checked per segment (up to the first colliding one); MISSES: "
+          f"polyccd finds a contact, the discrete check none (of {exact_hits} colliding "
+          f"segments); unreported: discrete collisions polyccd does not report; earlier: "
+          f"a discrete collision before polyccd's first contact (both must be 0)")
+    for r, run in runs.items():
+        for text in run["misses"][:3]:
+            print(f"  missed at {r} rad: {text}")
+        for text in run["bad"]:
+            print(f"  !!! DISCREPANCY at {r} rad, not reported by polyccd: {text}")
+        for text in run["early"]:
+            print(f"  !!! DISCREPANCY at {r} rad, earlier than polyccd: {text}")
     return 0
 
 
