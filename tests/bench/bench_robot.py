@@ -35,7 +35,6 @@ make test. `make bench` runs it; alone: .venv/bin/python tests/bench/bench_robot
 """
 import argparse
 import math
-import os
 import random
 import statistics
 import sys
@@ -94,8 +93,9 @@ class Discrete:
         for link in links.findall("link"):
             for i, c in enumerate(link.findall("collision")):
                 o = c.find("origin")
-                xyz = [float(x) for x in (o.get("xyz", "0 0 0") if o is not None else "0 0 0").split()]
-                rpy = [float(x) for x in (o.get("rpy", "0 0 0") if o is not None else "0 0 0").split()]
+                get = o.get if o is not None else (lambda key, default: default)
+                xyz = [float(x) for x in get("xyz", "0 0 0").split()]
+                rpy = [float(x) for x in get("rpy", "0 0 0").split()]
                 origins[(link.get("name"), i)] = (rpy_matrix(rpy), np.array(xyz))
         self.shapes = []  # (frame id, offset R, offset p, CollisionObject)
         for link, i, k, shape in robot.shapes:
@@ -226,9 +226,11 @@ def main(argv=None):
     print(f"bench_robot: Panda ({len(robot.shapes)} collision meshes, "
           f"{sum(len(s.triangles) for *_, s in robot.shapes)} triangles), "
           f"{args.boxes} boxes + {args.plates} plates (2 mm), {args.n} segments "
-          f"(seed {args.seed}, span {args.span} rad), discrete every {' / '.join(map(str, args.resolution))} rad")
+          f"(seed {args.seed}, span {args.span} rad), discrete every "
+          f"{' / '.join(map(str, args.resolution))} rad")
     for name, lo, hi in boxes:
-        print(f"  {name}: [{', '.join(f'{x:.4f}' for x in lo)}] - [{', '.join(f'{x:.4f}' for x in hi)}]")
+        print(f"  {name}: [{', '.join(f'{x:.4f}' for x in lo)}] - "
+              f"[{', '.join(f'{x:.4f}' for x in hi)}]")
     print(f"path agreement of the discrete side: joint values {dq:.1e} rad, "
           f"link points {dx:.1e} m (Pinocchio vs polyccd's exact motions)")
 

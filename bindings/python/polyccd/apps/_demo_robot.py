@@ -177,9 +177,9 @@ def run_robot_demo(out_dir="build/demo", *, out=print):
         bodies.append(demo.plate)
         geometry = {len(bodies) - 1: {"vertices": demo.plate_vertices,
                                       "triangles": BOX_TRIANGLES}}
+        title = f"Panda vs a 2 mm plate: first contact, {time_text(r.first_contact)}"
         png = render_scene(bodies, r.first_contact, r.scene, Path(out_dir) / "scene_robot.png",
-                           title=f"Panda vs a 2 mm plate: first contact, {time_text(r.first_contact)}",
-                           geometry=geometry)
+                           title=title, geometry=geometry)
         out(f"picture: {png}")
     out("OK" if ok else "MISMATCH: expected a contact that all 10 sampled poses miss")
     return demo, png, ok
