@@ -183,6 +183,7 @@ bench: all $(BUILD)/bench_linear $(BUILD)/bench_min_distance
 	$(VPY) tests/bench/bench_bvh.py
 	$(VPY) tests/bench/bench_online.py
 	$(VPY) tests/bench/bench_distributed.py
+	$(VPY) tests/bench/bench_robot.py
 
 demo: all
 	$(VENV)/bin/polyccd demo

@@ -284,9 +284,12 @@ def cmd_queries(args):
 
 def cmd_demo(args):
     from ._demo_bodies import run_demo_scenes  # needs trimesh, gemmi, matplotlib
-    print(f"polyccd {__version__} demo: two real scenes, checked exactly\n")
+    print(f"polyccd {__version__} demo: real scenes and a robot arm, checked exactly\n")
     results = run_demo_scenes(args.out, threads=args.threads)
     status = OK if all(r[0].collides for r in results.values()) else FAILED
+    from ._demo_robot import run_robot_demo  # skips itself without yourdfpy / robot data
+    print()
+    status = max(status, OK if run_robot_demo(args.out)[2] else FAILED)
     print(f"\nexact answers for degenerate moving primitives\n")
     status = max(status, OK if run_cases(print) else FAILED)
     folder = query_dir()
@@ -402,7 +405,8 @@ def parser():
     _cluster_flags(c)
     c.set_defaults(run=cmd_queries)
     c = sub.add_parser("demo", help="two real scenes (CGAL pinions, darunavir in HIV protease) "
-                       "with PNGs, illustrative primitive answers, the benchmark summary")
+                       "and a Panda arm past a thin plate with PNGs, illustrative primitive "
+                       "answers, the benchmark summary")
     c.add_argument("--out", default="build/demo", help="folder of the PNGs (default build/demo)")
     c.add_argument("--threads", type=int, default=2, help="worker threads (default 2)")
     c.set_defaults(run=cmd_demo)
