@@ -11,19 +11,8 @@
 using pccd::api::guard;
 using pccd::api::require;
 
+using pccd::api::biggest_of;
 using pccd::api::scene_body;
-
-namespace {
-
-// The largest number of a body and its motion ("vertices[1][2]", "motion.rotation[0][1]").
-pccd::api::Biggest_number biggest_of(const pccd_body *body, const pccd_motion *motion) {
-  pccd::api::Biggest_number big;
-  big.see(body->biggest, "");
-  if (motion) big.see(*pccd::api::motion_biggest(motion), "motion.");
-  return big;
-}
-
-}  // namespace
 
 extern "C" {
 

@@ -18,21 +18,7 @@ size_t number_bits(const Rational &x) {
   return mpz_sizeinbase(x.get_num_mpz_t(), 2) + mpz_sizeinbase(x.get_den_mpz_t(), 2);
 }
 
-size_t number_bits(double x) {
-  if (x == 0) return 2;
-  int e = 0;
-  double m = std::frexp(std::fabs(x), &e);  // |x| = m 2^e, m in [1/2, 1)
-  // The odd integer mantissa M and the power k with |x| = M 2^k.
-  long long M = static_cast<long long>(std::ldexp(m, 53));
-  int k = e - 53;
-  while ((M & 1) == 0) {
-    M >>= 1;
-    ++k;
-  }
-  size_t mbits = 0;
-  for (long long v = M; v; v >>= 1) ++mbits;
-  return k >= 0 ? mbits + static_cast<size_t>(k) + 1 : mbits + static_cast<size_t>(-k) + 1;
-}
+size_t number_bits(double x) { return number_bits(Rational(x)); }  // exact: mpq_set_d
 
 Biggest_number biggest_in(const motion::Mesh_body &b) {
   Biggest_number out;

@@ -102,19 +102,15 @@ constexpr size_t kChunk = 256;  // queries per parallel task
 
 // The input limit for the doubles of a linear query: only a limit below the size of
 // the largest double (1,127 bits) can be exceeded, so the default costs nothing.
-void check_double_bits(const Call_limits &l, const double *p0, const double *p1, size_t n,
+void check_double_bits(const Call_limits &l, const double *p, size_t n, const char *name,
                        const size_t *query) {
   if (l.max_number_bits == 0 || l.max_number_bits >= 1127) return;
-  for (int end = 0; end < 2; ++end)
-    for (size_t i = 0; i < 3 * n; ++i) {
-      const double x = (end ? p1 : p0)[i];
-      Biggest_number b;
-      b.bits = number_bits(x);
-      const std::string name = end ? "p_t1" : "p_t0";
-      b.place = query ? place(name == "p_t1" ? "t1" : "t0", {*query, i / 3, i % 3})
-                      : place(name, {i / 3, i % 3});
-      l.check(b);
-    }
+  for (size_t i = 0; i < 3 * n; ++i) {
+    Biggest_number b;
+    b.bits = number_bits(p[i]);
+    b.place = query ? place(name, {*query, i / 3, i % 3}) : place(name, {i / 3, i % 3});
+    l.check(b);
+  }
 }
 
 }  // namespace
@@ -136,7 +132,8 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
     pccd::api::check_finite(p_t0, n, "p_t0", nullptr);
     pccd::api::check_finite(p_t1, n, "p_t1", nullptr);
     const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
-    pccd::api::check_double_bits(limits, p_t0, p_t1, n, nullptr);
+    pccd::api::check_double_bits(limits, p_t0, n, "p_t0", nullptr);
+    pccd::api::check_double_bits(limits, p_t1, n, "p_t1", nullptr);
     const bool delta = pccd::api::has_min_distance(cfg);  // the fast paths assume delta = 0
     if (delta || !pccd::api::filtered(k, p_t0, p_t1, res->r)) {
       const pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
@@ -187,7 +184,8 @@ PCCD_API int pccd_solve_linear_batch_d(pccd_kind kind, size_t n, const double *t
     for (size_t q = 0; q < n; ++q) {
       pccd::api::check_finite(t0 + 3 * np * q, np, "t0", &q);
       pccd::api::check_finite(t1 + 3 * np * q, np, "t1", &q);
-      pccd::api::check_double_bits(limits, t0 + 3 * np * q, t1 + 3 * np * q, np, &q);
+      pccd::api::check_double_bits(limits, t0 + 3 * np * q, np, "t0", &q);
+      pccd::api::check_double_bits(limits, t1 + 3 * np * q, np, "t1", &q);
     }
     const pccd::api::Call_budget budget(limits.work);
     const size_t chunks = (n + pccd::api::kChunk - 1) / pccd::api::kChunk;

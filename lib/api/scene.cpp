@@ -25,9 +25,7 @@ PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_mot
   return guard(__func__, [&] {
     require(s, "s");
     require(body, "body");
-    pccd::api::Biggest_number big;  // for config.max_number_bits, found once
-    big.see(body->biggest, "");
-    if (motion) big.see(*pccd::api::motion_biggest(motion), "motion.");
+    pccd::api::Biggest_number big = pccd::api::biggest_of(body, motion);
     s->biggest.reserve(s->bodies.size() + 1);
     s->bodies.push_back(pccd::api::scene_body(body, motion));
     s->biggest.push_back(std::move(big));
@@ -83,12 +81,9 @@ PCCD_API int pccd_pair_solve(const pccd_body *a, const pccd_motion *ma, const pc
     rep->solved = false;
     const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
     const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
-    if (limits.max_number_bits) {
-      // named as the scene's two bodies, as the solve names a motion's error
-      limits.check(a->biggest, "bodies[0].");
-      if (ma) limits.check(*pccd::api::motion_biggest(ma), "bodies[0].motion.");
-      limits.check(b->biggest, "bodies[1].");
-      if (mb) limits.check(*pccd::api::motion_biggest(mb), "bodies[1].motion.");
+    if (limits.max_number_bits) {  // named as the scene's two bodies, as the solve names
+      limits.check(pccd::api::biggest_of(a, ma), "bodies[0].");  // a motion's error
+      limits.check(pccd::api::biggest_of(b, mb), "bodies[1].");
     }
     const pccd::api::Call_budget budget(limits.work);
     std::vector<pccd::scene::Scene_body> bodies{pccd::api::scene_body(a, ma), pccd::api::scene_body(b, mb)};
@@ -118,6 +113,13 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
 }  // extern "C"
 
 namespace pccd::api {
+
+Biggest_number biggest_of(const pccd_body *body, const pccd_motion *motion) {
+  Biggest_number big;
+  big.see(body->biggest, "");
+  if (motion) big.see(*motion_biggest(motion), "motion.");
+  return big;
+}
 
 scene::Scene_body scene_body(const pccd_body *body, const pccd_motion *motion) {
   scene::Scene_body b;

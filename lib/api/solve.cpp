@@ -19,14 +19,28 @@ namespace pccd::api {
 
 namespace {
 
-// The tolerance text of this thread's last call and its value: callers pass the same
-// config call after call, so its text is parsed once, not per query.
-struct Tolerance_cache {
+// A number text of the config and its value, as last parsed on this thread: callers
+// pass the same config call after call, so each text is parsed once, not per query.
+struct Number_cache {
   std::string text;
   Rational value;
   bool valid = false;
 };
-thread_local Tolerance_cache tl_tolerance, tl_min_distance;
+thread_local Number_cache tl_tolerance, tl_min_distance;
+
+// The value of `text` (the config field `field`), parsed and checked by `check` (which
+// throws Input_error) only when it differs from the cached text.
+template <class Check>
+const Rational &cached_number(Number_cache &c, const char *text, const char *field, Check check) {
+  if (c.valid && std::strcmp(text, c.text.c_str()) == 0) return c.value;
+  c.valid = false;
+  Rational x = arith::parse_rational(text, field);
+  check(x);
+  c.text = text;
+  c.value = std::move(x);
+  c.valid = true;
+  return c.value;
+}
 
 // Validates cfg (NULL: defaults); the parsed tolerance when cfg has one, else nullptr.
 const Rational *checked_tolerance(const pccd_config *cfg) {
@@ -36,17 +50,12 @@ const Rational *checked_tolerance(const pccd_config *cfg) {
     throw Input_error("config.struct_size: " + std::to_string(cfg->struct_size) + " is not " +
                       std::to_string(sizeof(pccd_config)) + " (initialise with pccd_config_init)");
   if (!cfg->time_tolerance) return nullptr;
-  Tolerance_cache &c = tl_tolerance;
-  if (c.valid && std::strcmp(cfg->time_tolerance, c.text.c_str()) == 0) return &c.value;
-  c.valid = false;
-  Rational tol = arith::parse_rational(cfg->time_tolerance, "config.time_tolerance");
-  if (sgn(tol) <= 0)
-    throw Input_error(std::string("config.time_tolerance: \"") + cfg->time_tolerance +
-                      "\" must be greater than 0");
-  c.text = cfg->time_tolerance;
-  c.value = std::move(tol);
-  c.valid = true;
-  return &c.value;
+  return &cached_number(tl_tolerance, cfg->time_tolerance, "config.time_tolerance",
+                        [&](const Rational &tol) {
+                          if (sgn(tol) <= 0)
+                            throw Input_error(std::string("config.time_tolerance: \"") +
+                                              cfg->time_tolerance + "\" must be greater than 0");
+                        });
 }
 
 }  // namespace
@@ -63,20 +72,13 @@ pred::Solve_options read_config(const pccd_config *cfg) {
   if (!cfg) return o;
   o.want_time = cfg->want_time != 0;
   o.want_exact = cfg->want_exact != 0;
-  if (has_min_distance(cfg)) {
-    Tolerance_cache &c = tl_min_distance;
-    if (!(c.valid && std::strcmp(cfg->min_distance, c.text.c_str()) == 0)) {
-      c.valid = false;
-      Rational d = arith::parse_rational(cfg->min_distance, "config.min_distance");
-      if (sgn(d) < 0)
-        throw Input_error(std::string("config.min_distance: \"") + cfg->min_distance +
-                          "\" must be >= 0");
-      c.text = cfg->min_distance;
-      c.value = std::move(d);
-      c.valid = true;
-    }
-    o.delta = c.value;
-  }
+  if (has_min_distance(cfg))
+    o.delta = cached_number(tl_min_distance, cfg->min_distance, "config.min_distance",
+                            [&](const Rational &d) {
+                              if (sgn(d) < 0)
+                                throw Input_error(std::string("config.min_distance: \"") +
+                                                  cfg->min_distance + "\" must be >= 0");
+                            });
   return o;
 }
 

@@ -61,13 +61,11 @@ class Isolated_root {
 
   // sign f(t); throws arith::Uncertain when an interval cannot tell.
   int sign_at(const NT &t) const {
-    if constexpr (std::is_same<NT, Rational>::value) return sign_at_dyadic(t);
+    if constexpr (std::is_same<NT, Rational>::value) return poly::sign_at(f_, t);
     else return arith::sign(f_.eval(t));
   }
 
  private:
-  int sign_at_dyadic(const Rational &t) const { return poly::sign_at(f_, t); }
-
   Poly<NT> f_;
   int sign_lo_ = 0;
 };

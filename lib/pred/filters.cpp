@@ -30,23 +30,18 @@ bool bounds_separate(const Query_data<Interval> &q) {
     }
     init[side] = true;
   }
-  if (q.kind == SPHERE_SPHERE || q.kind == SPHERE_TRIANGLE) {
-    // Radii scale with D (query_systems.h): grow by r * max D.
-    const double dmax = q.scale.c.empty() ? 1.0 : poly::range_on_unit(q.scale).hi;
-    for (int side = 0; side < 2; ++side) {
-      if (q.kind == SPHERE_TRIANGLE && side == 1) break;
-      const double grow = (q.radius[side] * Interval(dmax)).hi;
-      for (int a = 0; a < 3; ++a)
-        box[side][a] = {arith::round_down(box[side][a].lo - grow),
-                        arith::round_up(box[side][a].hi + grow)};
-    }
-  }
-  if (q.has_delta) {  // within delta: grow one side by delta * max D
-    const double dmax = q.scale.c.empty() ? 1.0 : poly::range_on_unit(q.scale).hi;
-    const double grow = (q.delta * Interval(dmax)).hi;
+  // Radii and delta scale with D (query_systems.h): a side grows by r * max D (max D
+  // found only for the kinds that grow: not on the path of the point kinds).
+  double dmax = -1;
+  auto grow = [&](int side, const Interval &r) {
+    if (dmax < 0) dmax = q.scale.c.empty() ? 1.0 : poly::range_on_unit(q.scale).hi;
+    const double g = (r * Interval(dmax)).hi;
     for (int a = 0; a < 3; ++a)
-      box[0][a] = {arith::round_down(box[0][a].lo - grow), arith::round_up(box[0][a].hi + grow)};
-  }
+      box[side][a] = {arith::round_down(box[side][a].lo - g), arith::round_up(box[side][a].hi + g)};
+  };
+  if (q.kind == SPHERE_SPHERE || q.kind == SPHERE_TRIANGLE) grow(0, q.radius[0]);
+  if (q.kind == SPHERE_SPHERE) grow(1, q.radius[1]);
+  if (q.has_delta) grow(0, q.delta);  // within delta
   for (int a = 0; a < 3; ++a)
     if (box[0][a].hi < box[1][a].lo || box[1][a].hi < box[0][a].lo) return true;
   return false;

@@ -26,10 +26,9 @@ void Work_budget::stop(std::uint64_t done) {
   // The first limit reached names the stop; later steps (other threads) repeat it.
   int w = which_.load(std::memory_order_relaxed);
   if (w < 0) {
-    int mine = Limit_reached::CANCEL;
-    if (limits_.cancel && limits_.cancel->is_set()) mine = Limit_reached::CANCEL;
-    else if (limits_.max_steps && done > limits_.max_steps) mine = Limit_reached::STEPS;
-    else mine = Limit_reached::SECONDS;
+    const int mine = limits_.cancel && limits_.cancel->is_set()            ? Limit_reached::CANCEL
+                     : limits_.max_steps && done > limits_.max_steps ? Limit_reached::STEPS
+                                                                     : Limit_reached::SECONDS;
     which_.compare_exchange_strong(w, mine);
     w = which_.load();
     spent_.store(true, std::memory_order_relaxed);
