@@ -126,7 +126,9 @@ PCCD_API int pccd_kind_points(pccd_kind kind, size_t *count);
  * while calls that were given it run; they then end with PCCD_ELIMIT
  * ("config.cancel: the call was cancelled ..."). pccd_cancel_set is a lock-free atomic
  * store: safe from any thread and from a signal handler. A set flag stays set (calls
- * started with it end at once) until pccd_cancel_reset. */
+ * started with it end at once) until pccd_cancel_reset. pccd_cancel_set(NULL) returns
+ * PCCD_EINVAL WITHOUT writing pccd_last_error (the one exception to the rule: writing
+ * the message allocates, which a signal handler must not). */
 typedef struct pccd_cancel pccd_cancel;
 PCCD_API int pccd_cancel_new(pccd_cancel **out);
 PCCD_API void pccd_cancel_free(pccd_cancel *c);
