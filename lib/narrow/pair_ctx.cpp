@@ -123,6 +123,11 @@ pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p) const {
     if constexpr (std::is_same_v<NT, Rational>) q.scale = c.D;
     else q.scale = c.Di;
   }
+  if constexpr (std::is_same_v<NT, Rational>) {
+    // Each side's points carry the other side's W (pred::Query_data::positive_factors).
+    for (const Moving_body *m : {&A_, &B_})
+      if (m->mo->W.degree() >= 1) q.positive_factors.push_back(m->mo->W);
+  }
   return q;
 }
 

@@ -71,4 +71,44 @@ arith::Integer scaled_value(const Poly<Rational> &F, const Rational &t) {
   return v;
 }
 
+namespace {
+
+// f / w with integer coefficients when w divides f (w primitive), else false. Long
+// division in integers: each quotient coefficient must be an integer.
+bool exact_integer_quotient(std::vector<arith::Integer> f, const std::vector<arith::Integer> &w,
+                            std::vector<arith::Integer> *q) {
+  const size_t dw = w.size() - 1;
+  if (f.size() < w.size()) return false;
+  q->assign(f.size() - dw, arith::Integer(0));
+  for (size_t k = f.size(); k-- > dw;) {
+    if (sgn(f[k]) == 0) continue;
+    if (!mpz_divisible_p(f[k].get_mpz_t(), w[dw].get_mpz_t())) return false;
+    arith::Integer c;
+    mpz_divexact(c.get_mpz_t(), f[k].get_mpz_t(), w[dw].get_mpz_t());
+    for (size_t i = 0; i <= dw; ++i) f[k - dw + i] -= c * w[i];
+    (*q)[k - dw] = std::move(c);
+  }
+  for (size_t i = 0; i < dw; ++i)
+    if (sgn(f[i]) != 0) return false;
+  return true;
+}
+
+std::vector<arith::Integer> integer_coefficients(const Poly<Rational> &p) {
+  std::vector<arith::Integer> out;
+  for (const Rational &x : primitive_positive(p).c) out.push_back(x.get_num());
+  return out;
+}
+
+}  // namespace
+
+Poly<Rational> divide_out_positive(const Poly<Rational> &f, const Poly<Rational> &w) {
+  if (f.c.empty() || w.degree() < 1) return f.c.empty() ? f : primitive_positive(f);
+  std::vector<arith::Integer> F = integer_coefficients(f), q;
+  const std::vector<arith::Integer> W = integer_coefficients(w);
+  while (exact_integer_quotient(F, W, &q)) F = std::move(q);
+  std::vector<Rational> out(F.size());
+  for (size_t i = 0; i < F.size(); ++i) out[i] = Rational(F[i]);
+  return primitive_positive(Poly<Rational>(std::move(out)));
+}
+
 }  // namespace pccd::poly

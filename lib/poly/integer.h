@@ -18,6 +18,16 @@ Poly<Rational> primitive_monic_sign(const Poly<Rational> &p);
 // multiplying by lc(b) (positive) at each step, then made primitive.
 Poly<Rational> prem_positive(Poly<Rational> a, const Poly<Rational> &b);
 
+// f divided by w as many times as w divides it exactly, times a positive constant (the
+// result is primitive with integer coefficients; f itself when w does not divide it).
+// For w > 0 on [0, 1] (a motion's denominator W = |r|^2) the result has the roots and
+// signs of f on [0, 1], at a lower degree: the narrow phase multiplies a static side by
+// the moving side's W, so its systems carry powers of W (pred/solve.cpp). A division
+// that fails stops at the first leading coefficient lc(w) does not divide (Gauss: a
+// divisor w with integer coefficients, primitive, leaves an integer quotient), so a
+// trial costs little when w is not a factor.
+Poly<Rational> divide_out_positive(const Poly<Rational> &f, const Poly<Rational> &w);
+
 // The value of F (integer coefficients, degree n >= 0) at t = p / q (q > 0) scaled to an
 // integer: q^n F(t) = sum c_i p^i q^(n - i), by Horner on the homogenized polynomial.
 // GMP never reduces a fraction on the way (the rational Horner scheme canonicalizes

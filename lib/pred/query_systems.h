@@ -20,6 +20,12 @@ namespace pccd::pred {
 // VERTEX_FACE, EDGE_EDGE, VERTEX_EDGE, VERTEX_VERTEX: a contact is then a time when the
 // closed primitives are within distance delta (delta_systems.h). Scaled by D like radii.
 // (Ball kinds take delta into their radii instead.)
+//
+// `positive_factors`: exact polynomials > 0 on [0, 1] that may divide the systems'
+// polynomials (a body query's motion denominators W_A, W_B: the side that does not
+// move is multiplied by the other's W, so a static face's normal carries W^2). The
+// exact stage divides them out (poly::divide_out_positive), keeping roots and signs on
+// [0, 1]; only a hint: empty changes no answer, only the cost.
 template <class NT>
 struct Query_data {
   int kind = 0;
@@ -28,6 +34,7 @@ struct Query_data {
   Poly<NT> scale;
   bool has_delta = false;
   NT delta = arith::from_int<NT>(0);
+  std::vector<Poly<arith::Rational>> positive_factors;
 };
 
 // r^2 D^2 as a polynomial.
