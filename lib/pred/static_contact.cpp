@@ -6,16 +6,23 @@ using arith::sign;
 
 namespace {
 
+bool certainly_nonzero(const arith::Rational &x) { return sgn(x) != 0; }
+bool certainly_nonzero(const arith::Interval &x) { return x.lo > 0 || x.hi < 0; }
+
+// v = 0. One component certainly nonzero settles it before any sign is asked of the
+// others: the filter then decides "distinct" even when another component's interval
+// straddles zero (equal coordinates, e.g. an axis-aligned edge, scaled by an inexact
+// D(0) in a body query), which would throw Uncertain and send the test to rationals.
 template <class NT>
-bool equal(const Vec3<NT> &a, const Vec3<NT> &b) {
+bool is_zero_vec(const Vec3<NT> &v) {
   for (int i = 0; i < 3; ++i)
-    if (sign(a[i] - b[i]) != 0) return false;
-  return true;
+    if (certainly_nonzero(v[i])) return false;
+  return sign(v[0]) == 0 && sign(v[1]) == 0 && sign(v[2]) == 0;
 }
 
 template <class NT>
-bool is_zero_vec(const Vec3<NT> &v) {
-  return sign(v[0]) == 0 && sign(v[1]) == 0 && sign(v[2]) == 0;
+bool equal(const Vec3<NT> &a, const Vec3<NT> &b) {
+  return is_zero_vec(sub(a, b));
 }
 
 // p in the open segment (a, b).
