@@ -70,7 +70,8 @@ PCCD_API int pccd_chain_segment_motions(const pccd_chain *c, const double *q0, c
     std::vector<pccd::motion::Rigid_motion> m = c->c.segment_motions(q0, q1);
     std::vector<pccd_motion *> made;
     try {
-      for (auto &x : m) made.push_back(new pccd_motion{std::move(x)});
+      // Valid by construction (Chain::segment_motions): their data skips the vanishing test.
+      for (auto &x : m) made.push_back(new pccd_motion(std::move(x), true));
     } catch (...) {
       for (pccd_motion *p : made) delete p;
       throw;

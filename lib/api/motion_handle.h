@@ -12,11 +12,16 @@
 
 struct pccd_motion {
   pccd_motion() = default;
-  pccd_motion(const pccd_motion &o) : m(o.m) {}  // the copy derives its own data
-  explicit pccd_motion(pccd::motion::Rigid_motion mm) : m(std::move(mm)) {}
+  pccd_motion(const pccd_motion &o) : m(o.m), known_valid(o.known_valid) {}  // the copy
+                                                                            // derives its own data
+  explicit pccd_motion(pccd::motion::Rigid_motion mm, bool valid = false)
+      : m(std::move(mm)), known_valid(valid) {}
 
   pccd::motion::Rigid_motion m;  // starts as the identity (stationary) motion; change it
                                  // only through pccd::api::edit (which drops the data)
+  bool known_valid = false;      // m is valid by construction (a kinematic chain's link
+                                 // motion: motion/chain.h), so its derivation skips the
+                                 // exact vanishing test; dropped by edit
   mutable std::mutex mu;
   mutable std::shared_ptr<const pccd::narrow::Motion_data> data;  // of m; null: not yet
   mutable std::shared_ptr<const pccd::api::Biggest_number> biggest;  // of m; null: not yet
@@ -29,6 +34,7 @@ inline motion::Rigid_motion &edit(pccd_motion *m) {
   std::lock_guard<std::mutex> lock(m->mu);
   m->data.reset();
   m->biggest.reset();
+  m->known_valid = false;
   return m->m;
 }
 
@@ -48,7 +54,7 @@ inline std::shared_ptr<const narrow::Motion_data> motion_data(const pccd_motion 
   std::lock_guard<std::mutex> lock(m->mu);
   if (!m->data) {
     try {
-      m->data = narrow::prepare_motion(m->m);
+      m->data = narrow::prepare_motion(m->m, m->known_valid);
     } catch (const arith::Input_error &) {
       return nullptr;
     }

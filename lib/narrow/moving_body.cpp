@@ -32,8 +32,8 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-std::shared_ptr<const Motion_data> prepare_motion(const motion::Rigid_motion &m) {
-  m.validate();
+std::shared_ptr<const Motion_data> prepare_motion(const motion::Rigid_motion &m, bool known_valid) {
+  if (!known_valid) m.validate();
   auto d = std::make_shared<Motion_data>();
   d->motion = m;
   d->Rn = motion::rotation_numerator(m.r);
