@@ -85,6 +85,11 @@ Poly<NT> operator*(const Poly<NT> &a, const Poly<NT> &b) {
     for (size_t j = 0; j < b.c.size(); ++j) r[i + j] = r[i + j] + a.c[i] * b.c[j];
   return Poly<NT>(std::move(r));
 }
+// Exact products in integers (rational_product.cpp): the generic loop above reduces a
+// fraction at every product and sum, and those gcds dominated the motion layer's work.
+template <>
+Poly<Rational> operator*(const Poly<Rational> &a, const Poly<Rational> &b);
+
 template <class NT>
 Poly<NT> operator*(const NT &s, const Poly<NT> &a) {
   std::vector<NT> r(a.c.size());
