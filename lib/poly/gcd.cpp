@@ -3,7 +3,9 @@
 #include "poly/integer.h"
 #include "util/work_budget.h"
 
+#include <cstdint>
 #include <utility>
+#include <vector>
 
 namespace pccd::poly {
 
@@ -13,6 +15,50 @@ static Poly<Rational> monic(Poly<Rational> p) {
   for (Rational &x : p.c) x /= lc;
   return p;
 }
+
+namespace {
+
+// Arithmetic modulo the Mersenne prime 2^61 - 1 (products in 128 bits).
+constexpr uint64_t kP = (uint64_t(1) << 61) - 1;
+uint64_t mul_mod(uint64_t a, uint64_t b) { return uint64_t((unsigned __int128)a * b % kP); }
+uint64_t pow_mod(uint64_t a, uint64_t e) {
+  uint64_t r = 1;
+  for (; e; e >>= 1, a = mul_mod(a, a))
+    if (e & 1) r = mul_mod(r, a);
+  return r;
+}
+
+// Coefficients of an integer polynomial modulo kP, trimmed.
+std::vector<uint64_t> reduce(const Poly<Rational> &p) {
+  std::vector<uint64_t> out;
+  for (const Rational &x : p.c) out.push_back(mpz_fdiv_ui(x.get_num_mpz_t(), kP));
+  while (!out.empty() && out.back() == 0) out.pop_back();
+  return out;
+}
+
+// True when the integer polynomials a and b (a of degree >= 1) certainly have a constant
+// gcd: kP does not divide lc(a), and a mod kP, b mod kP have a constant gcd. Then
+// deg gcd(a, b) = 0, because with a = g a' the prime does not divide lc(g) either, so
+// g mod kP keeps its degree and divides both reductions. False means "not shown" (the
+// remainder sequence decides), never "not coprime".
+bool coprime_mod_p(const Poly<Rational> &a, const Poly<Rational> &b) {
+  std::vector<uint64_t> x = reduce(a), y = reduce(b);
+  if (x.size() != a.c.size() || y.empty()) return false;
+  if (x.size() < y.size()) std::swap(x, y);
+  while (y.size() > 1) {  // Euclid while y has degree >= 1
+    const uint64_t inv = pow_mod(y.back(), kP - 2);
+    while (x.size() >= y.size()) {
+      const uint64_t q = mul_mod(x.back(), inv);
+      const size_t shift = x.size() - y.size();
+      for (size_t i = 0; i < y.size(); ++i) x[shift + i] = (x[shift + i] + kP - mul_mod(q, y[i])) % kP;
+      while (!x.empty() && x.back() == 0) x.pop_back();
+    }
+    std::swap(x, y);
+  }
+  return y.size() == 1;  // a nonzero constant remainder: coprime modulo kP
+}
+
+}  // namespace
 
 // The primitive remainder sequence: every polynomial is kept a primitive integer
 // polynomial with a positive leading coefficient (poly/integer.h), so the remainders
@@ -26,6 +72,9 @@ Poly<Rational> gcd(Poly<Rational> a, Poly<Rational> b) {
   a = primitive_monic_sign(a);
   b = primitive_monic_sign(b);
   if (a.degree() < b.degree()) std::swap(a, b);
+  // Coprime polynomials (most pairs the feature systems ask about) are recognized
+  // modulo one prime at a negligible cost; the sequence below is for the rest.
+  if (a.degree() < 1 || b.degree() < 1 || coprime_mod_p(a, b)) return Poly<Rational>::constant(Rational(1));
   while (!b.c.empty()) {
     util::work_step();  // a remainder of long numbers can take long (util/work_budget.h)
     Poly<Rational> r = prem_positive(std::move(a), b);  // primitive, c * (a mod b)

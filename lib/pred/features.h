@@ -19,6 +19,7 @@
 #include "motion/trajectory.h"
 #include "poly/bernstein.h"
 #include "poly/gcd.h"
+#include "poly/integer.h"
 #include "poly/system.h"
 
 namespace pccd::pred {
@@ -49,6 +50,9 @@ struct Feature_set {
   std::vector<System<NT>> systems;  // those not excluded; System::tag -> features
   // When set, only these features get a system (the others are listed, not built).
   const std::vector<Feature> *only = nullptr;
+  // Polynomials > 0 on [0, 1] that may divide the query's polynomials
+  // (Query_data::positive_factors); exact common zeros divide them out first.
+  const std::vector<Poly<arith::Rational>> *positive = nullptr;
   bool wants(const Feature &f) const {
     if (!only) return true;
     for (const Feature &g : *only)
@@ -61,15 +65,26 @@ struct Feature_set {
 // identically zero. Exact: their gcd. Intervals: no certified gcd exists; when one
 // polynomial certainly has no root on [0, 1] the set is empty (returns false), and
 // otherwise the sum of squares (same real zeros) is used.
+//
+// Exact, with positive factors (Feature_set::positive): each polynomial is divided by them
+// first. The common zeros on [0, 1] are the same, and a cross product of a moving point
+// with a static edge (which carries the moving side's W) then has a constant gcd, which
+// poly::gcd recognizes modulo a prime instead of running the remainder sequence.
 inline bool common_zeros(const std::vector<Poly<arith::Rational>> &ps, Poly<arith::Rational> &f,
-                         bool &all_zero) {
+                         bool &all_zero,
+                         const std::vector<Poly<arith::Rational>> *positive = nullptr) {
   f = Poly<arith::Rational>();
-  for (const auto &p : ps) f = poly::gcd(f, p);
+  for (Poly<arith::Rational> p : ps) {
+    if (positive)
+      for (const auto &w : *positive) p = poly::divide_out_positive(p, w);
+    f = poly::gcd(f, p);
+    if (f.degree() == 0) return false;  // a nonzero constant gcd: no common zero at all
+  }
   all_zero = f.c.empty();
   return all_zero || f.degree() >= 1;  // a nonzero constant gcd: no common zero at all
 }
 inline bool common_zeros(const std::vector<Poly<arith::Interval>> &ps, Poly<arith::Interval> &f,
-                         bool &all_zero) {
+                         bool &all_zero, const std::vector<Poly<arith::Rational>> * = nullptr) {
   const arith::Interval zero(0.0), one(1.0);
   for (const auto &p : ps)
     if (poly::certainly_no_root(p, zero, one)) return false;
@@ -104,7 +119,7 @@ void add_vertex_vertex(Feature_set<NT> &set, const Point_traj<NT> &a, const Poin
   auto d = a - b;
   Poly<NT> f;
   bool all_zero = false;
-  if (!common_zeros(std::vector<Poly<NT>>{d[0], d[1], d[2]}, f, all_zero))
+  if (!common_zeros(std::vector<Poly<NT>>{d[0], d[1], d[2]}, f, all_zero, set.positive))
     return skip_feature(set, feat);
   add_system(set, feat, all_zero ? K::zero_f : K::roots, f, {});
 }
@@ -120,7 +135,7 @@ void add_vertex_edge(Feature_set<NT> &set, const Point_traj<NT> &v, const Point_
   auto u = motion::cross(e, v - e0);
   Poly<NT> f;
   bool all_zero = false;
-  if (!common_zeros(std::vector<Poly<NT>>{u[0], u[1], u[2]}, f, all_zero))
+  if (!common_zeros(std::vector<Poly<NT>>{u[0], u[1], u[2]}, f, all_zero, set.positive))
     return skip_feature(set, feat);
   add_system(set, feat, all_zero ? K::zero_f : K::roots, f,
              {motion::dot(v - e0, e), motion::dot(e1 - v, e)});

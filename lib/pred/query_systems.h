@@ -51,6 +51,7 @@ Feature_set<NT> build_systems(const Query_data<NT> &q, const std::vector<Feature
   using K = typename System<NT>::Kind;
   Feature_set<NT> s;
   s.only = only;
+  if (!q.positive_factors.empty()) s.positive = &q.positive_factors;
   const auto &p = q.p;
   if (q.has_delta) {
     add_delta_systems(s, q.kind, p, radius_squared(q.delta, q.scale));
