@@ -108,7 +108,7 @@ def test_errors():
         P.solve("vertex-vertex", pts, min_distance="-1/2")
     with pytest.raises(P.InputError, match="config.min_distance: .*not a number"):
         P.solve("vertex-vertex", pts, min_distance="abc")
-    # scenes and indexes refuse it in C (tests/c/test_limits.c, min_distance).
+    # the range broad phase refuses it (tests/c/test_limits.c, min_distance; below).
 
 
 def corpus_cases():
