@@ -184,9 +184,12 @@ typedef struct pccd_config {
                                  when the closed primitives are within distance delta
                                  (the first time the distance drops to delta or below;
                                  at t = 0 when it starts there); balls grow by delta.
-                                 Every query and body kind; scenes and indexes then
-                                 search brute force over the feature pairs (broad
-                                 phase AUTO or BRUTE; any other: PCCD_EINVAL). Copied. */
+                                 Every query and body kind. Scenes, pair solves and
+                                 indexes take the broad phases AUTO (then BVH, index
+                                 queries too), BVH, BOXES (one body's swept boxes
+                                 grown by delta, rounded outward to a double) and
+                                 BRUTE; RANGE (its linearized contact conditions have
+                                 no delta): PCCD_EINVAL. Copied. */
 } pccd_config;
 
 /* Fills *cfg with the defaults. PCCD_EINVAL when cfg is NULL. */
@@ -723,7 +726,8 @@ PCCD_API void pccd_index_free(pccd_index *ix);
  * writes the answer to rep as a two-body scene: body 0 is the indexed body, body 1 the
  * query (so pccd_report_contact's feature_i is a feature of the indexed body). cfg and
  * opt may be NULL (defaults); opt as for pccd_scene_solve: PCCD_BROAD_AUTO and
- * PCCD_BROAD_RANGE search the index's trees, PCCD_BROAD_BVH (the two bodies'
+ * PCCD_BROAD_RANGE search the index's trees (with config.min_distance > 0 AUTO is
+ * PCCD_BROAD_BVH and RANGE is PCCD_EINVAL), PCCD_BROAD_BVH (the two bodies'
  * hierarchies), PCCD_BROAD_BOXES and PCCD_BROAD_BRUTE solve the pair like a scene (same
  * answers; for comparison). The index is only read:
  * several threads may query one index at once, each with its own report.

@@ -245,6 +245,42 @@ def test_synthetic_arm_path(tmp_path):
     assert robot.check_path(waypoints[:3], [post]).segment is None
 
 
+def test_synthetic_arm_min_distance(tmp_path):
+    """Robot.check and check_path pass min_distance through: every broad phase equals
+    brute force at delta > 0 (the box phases grow one body's boxes by delta), and a post
+    the arm's tip passes 0.12 away from (tip at x = 1.88 when the arm points along +x,
+    post from x = 2) is met within 1/5, not within 1/10."""
+    robot = load_urdf(write(tmp_path, ARM % ("revolute", "0 0 1")))
+    rng = random.Random(SEED + 1)
+    decided = 0
+    for case in range(4):
+        q0 = [rng.uniform(-3, 3), rng.uniform(-3, 3)]
+        q1 = [x + rng.uniform(-2.5, 2.5) for x in q0]
+        c = [rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5)]
+        obstacle = P.Body(box([c[0], c[1], 0], [c[0] + 0.1, c[1] + 0.1, 0.5]), name="post")
+        delta = F(1, 10)  # (1/4 puts base and lower within delta at t = 0: slow brute force)
+        brute = robot.check(q0, q1, [obstacle], min_distance=delta, time_tolerance="1e-9",
+                            broad_phase="brute")
+        for phase in ("auto", "bvh", "boxes"):
+            got = robot.check(q0, q1, [obstacle], min_distance=delta, time_tolerance="1e-9",
+                              broad_phase=phase)
+            assert summary(got.scene) == summary(brute.scene), (case, q0, q1, c, phase)
+        plain = robot.check(q0, q1, [obstacle], time_tolerance="1e-9")
+        decided += brute.collides and (not plain.collides or
+                                       plain.first_contact.lo > brute.first_contact.hi)
+    assert decided > 0
+    post = P.Body(box([2, -0.05, 0], [2.1, 0.05, 0.5]), name="post")
+    waypoints = [[-math.pi / 2, 0], [-math.pi + 0.1, 0], [-math.pi / 2, 0], [0.3, 0]]
+    path = dict(self_collision=False, time_tolerance="1e-9")
+    assert robot.check_path(waypoints, [post], **path).segment is None
+    assert robot.check_path(waypoints, [post], min_distance="1/10", **path).segment is None
+    r = robot.check_path(waypoints, [post], min_distance="1/5", **path)
+    assert r.segment == 2 and {c.b[0] for c in r.result.contacts} == {"post"}
+    brute = robot.check(waypoints[2], waypoints[3], [post], min_distance="1/5",
+                        broad_phase="brute", **path)
+    assert summary(r.result.scene) == summary(brute.scene)
+
+
 # ---------------------------------------------------------------- errors
 
 def test_bad_urdfs(tmp_path):

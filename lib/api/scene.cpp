@@ -148,13 +148,12 @@ scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene
   so.threads = opt->threads;
   so.all_contacts = opt->all_contacts == 1;
   so.broad_phase = static_cast<scene::Broad_phase>(opt->broad_phase);  // constants.cpp
-  // With a minimum distance only brute force lists every pair within delta so far
-  // (scene/broad_phase.h); auto takes it.
-  if (sgn(so.solve.delta) > 0 && so.broad_phase != scene::Broad_phase::automatic &&
-      so.broad_phase != scene::Broad_phase::brute)
+  // With a minimum distance the range phase has no delta (its linearized contact
+  // conditions would need the distance systems; scene/broad_phase.h); auto takes bvh.
+  if (sgn(so.solve.delta) > 0 && so.broad_phase == scene::Broad_phase::range)
     throw Input_error("opt.broad_phase: " + std::to_string(opt->broad_phase) +
-                      " does not take config.min_distance > 0 yet; use PCCD_BROAD_AUTO or "
-                      "PCCD_BROAD_BRUTE (brute force over the feature pairs)");
+                      " (PCCD_BROAD_RANGE) does not take config.min_distance > 0; use "
+                      "PCCD_BROAD_AUTO, PCCD_BROAD_BVH, PCCD_BROAD_BOXES or PCCD_BROAD_BRUTE");
   return so;
 }
 

@@ -19,16 +19,19 @@ constexpr double kLeaf_pairs = 64;   // |active A| * |active B| at most: interse
 
 // Boxes of one side's points, cached per piece by a stamp (meshes: each vertex is
 // shared by several triangles and edges; a ball's box is used once per piece, so sphere
-// sets keep no cache and allocate nothing per query).
+// sets keep no cache and allocate nothing per query). Side A's point boxes are grown by
+// the minimum separation's reach (boxes.h, reach_of; 0 without one), and so are its
+// edge, triangle and ball boxes, which are hulls of them or grow them further.
 struct Side {
   const Moving_body *b = nullptr;
+  double reach = 0;
   std::vector<Box> vbox;
   std::vector<uint32_t> vstamp, vlisted, elisted;
   uint32_t stamp = 0;
 
   // The caches are allocated on first use: a source built but not run (an on-line
   // query answered by the static test) must not pay for the stored body's size.
-  explicit Side(const Moving_body &body) : b(&body) {}
+  Side(const Moving_body &body, double r) : b(&body), reach(r) {}
 
   void allocate() {
     if (!b->is_mesh() || !vstamp.empty()) return;
@@ -39,14 +42,15 @@ struct Side {
   }
 
   Box point(const Pose_piece &pose, uint32_t k) {
-    if (!b->is_mesh()) return point_box(pose, b->data->pts[k], b->data->pt_err);
+    if (!b->is_mesh()) return grown(point_box(pose, b->data->pts[k], b->data->pt_err));
     allocate();
     if (vstamp[k] != stamp) {
-      vbox[k] = point_box(pose, b->data->pts[k], b->data->pt_err);
+      vbox[k] = grown(point_box(pose, b->data->pts[k], b->data->pt_err));
       vstamp[k] = stamp;
     }
     return vbox[k];
   }
+  Box grown(const Box &x) const { return reach > 0 ? grow(x, reach) : x; }
   // Box of element e: triangle (mesh) or ball.
   Box element(const Pose_piece &pose, uint32_t e) {
     if (b->is_mesh()) {
@@ -82,16 +86,23 @@ struct Side {
 
 class Box_source final : public narrow::Candidate_source {
  public:
-  explicit Box_source(const Pair_ctx &ctx) : ctx_(ctx), side_{Side(ctx.side(0)), Side(ctx.side(1))} {}
+  Box_source(const Pair_ctx &ctx, double reach)
+      : ctx_(ctx), side_{Side(ctx.side(0), reach), Side(ctx.side(1), 0.0)} {}
 
-  // The triangle pairs whose boxes meet at t = 0.
+  // The triangle pairs whose boxes meet at t = 0. The static test asks for triangles
+  // sharing a point (candidate_source.h), whatever the minimum separation: boxes are
+  // not grown here (pairs within delta at t = 0 are run()'s, solved with delta).
   std::vector<Prim_pair> static_candidates(util::Thread_pool &) override {
     std::vector<Box> boxes[2];
+    const double reach = side_[0].reach;
+    side_[0].reach = 0;
     for (int s = 0; s < 2; ++s) {
       const Pose_piece pose = enclose_pose(*side_[s].b, 0.0, 0.0);
       ++side_[s].stamp;
       for (uint32_t e = 0; e < side_[s].n_elements(); ++e) boxes[s].push_back(side_[s].element(pose, e));
     }
+    side_[0].reach = reach;
+    ++side_[0].stamp;  // no ungrown box stays cached
     std::vector<std::pair<uint32_t, uint32_t>> pairs;
     box_pairs(boxes[0], boxes[1], pairs);
     std::vector<Prim_pair> cand;
@@ -107,7 +118,7 @@ class Box_source final : public narrow::Candidate_source {
       all[s].resize(side_[s].n_elements());
       for (size_t e = 0; e < all[s].size(); ++e) all[s][e] = static_cast<uint32_t>(e);
     }
-    delta_ = std::min(ctx_.side(0).data->feature, ctx_.side(1).data->feature);
+    feature_ = std::min(ctx_.side(0).data->feature, ctx_.side(1).data->feature);
     piece(0.0, 1.0, 0, all[0], all[1], HUGE_VAL);
   }
 
@@ -116,7 +127,7 @@ class Box_source final : public narrow::Candidate_source {
   Side side_[2];
   Candidate_sink *sink_ = nullptr;
   Search_stats *stats_ = nullptr;
-  double delta_ = 0;
+  double feature_ = 0;  // the bodies' typical feature size (leaf test)
 
   // Keeps the elements of `act` (side s) whose box meets `other`; returns their hull.
   Box filter(int s, const Pose_piece &pose, std::vector<uint32_t> &act, const Box &other) {
@@ -147,7 +158,7 @@ class Box_source final : public narrow::Candidate_source {
     hullA = filter(0, pose[0], actA, hullB);
     if (actA.empty()) return;
     const double spread = std::max(pose[0].spread, pose[1].spread);
-    const bool leaf = depth >= kMax_depth || spread <= delta_ ||
+    const bool leaf = depth >= kMax_depth || spread <= feature_ ||
                       double(actA.size()) * double(actB.size()) <= kLeaf_pairs ||
                       spread_stalled(depth, spread, parent_spread);
     if (leaf) return sink_->piece(a, b, intersect(pose, actA, actB));
@@ -198,8 +209,8 @@ class Box_source final : public narrow::Candidate_source {
 
 }  // namespace
 
-std::unique_ptr<narrow::Candidate_source> box_source(const Pair_ctx &ctx) {
-  return std::make_unique<Box_source>(ctx);
+std::unique_ptr<narrow::Candidate_source> box_source(const Pair_ctx &ctx, double reach) {
+  return std::make_unique<Box_source>(ctx, reach);
 }
 
 }  // namespace pccd::boxes

@@ -9,6 +9,12 @@
 // candidates. A pair whose boxes never meet on any piece has no contact. Pieces are
 // visited depth first, earlier half first, so in time order; a piece whose start the
 // sink prunes is skipped.
+//
+// Minimum separation: reach (boxes.h, reach_of: a double >= delta, 0 without one) grows
+// side A's boxes (its points, edges, triangles, balls and their hulls), so every feature
+// pair within delta at some t of a piece has meeting boxes there (the coverage argument
+// of reach_of), and the rest of the argument above is unchanged. The body box of B
+// that filters A's elements is compared with A's grown boxes too.
 #pragma once
 #include <memory>
 
@@ -16,6 +22,6 @@
 
 namespace pccd::boxes {
 
-std::unique_ptr<narrow::Candidate_source> box_source(const narrow::Pair_ctx &ctx);
+std::unique_ptr<narrow::Candidate_source> box_source(const narrow::Pair_ctx &ctx, double reach = 0);
 
 }  // namespace pccd::boxes

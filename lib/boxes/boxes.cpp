@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 
+#include "arith/convert.h"
 #include "poly/bernstein.h"
 
 namespace pccd::boxes {
@@ -61,6 +62,11 @@ Box grow(const Box &a, double r) {
     g.hi[i] = a.hi[i] + r + s;
   }
   return g;
+}
+
+double reach_of(const arith::Rational &delta) {
+  if (sgn(delta) <= 0) return 0.0;
+  return arith::enclose(delta).hi;  // exact comparison with delta: arith/convert.h
 }
 
 Box empty_box() {

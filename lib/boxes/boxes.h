@@ -42,8 +42,18 @@ inline Box hull(const Box &a, const Box &b) {
   }
   return h;
 }
-Box grow(const Box &a, double r);  // r >= 0, outward-safe
+Box grow(const Box &a, double r);  // r >= 0 (+inf allowed), outward-safe
 Box empty_box();                    // hull identity
+
+// Minimum separation (pred::Solve_options::delta, pccd_config.min_distance): the growth
+// of one side's boxes, a double >= delta (delta itself when it is a double, else the
+// double just above it; +inf beyond DBL_MAX, which makes every box pair meet), 0 for
+// delta = 0. Coverage: if two closed features are within Euclidean distance delta at t,
+// they hold points x, y with |x - y|_2 <= delta, so |x_i - y_i| <= delta on each axis
+// (L_inf <= L_2): the box of x's feature grown by reach >= delta on every side meets
+// the box of y's feature. Growing one side suffices (broad phases grow side A's
+// boxes: box_source.h, bvh_source.h, and the driver's per-pair bounds).
+double reach_of(const arith::Rational &delta);
 
 // The motion of one body over a time piece, in midpoint-radius form, about a pivot q
 // (a body-frame point, doubles): x(t) = R(t) (p - q) + o_q(t), o_q(t) = o(t) + R(t) q,

@@ -36,18 +36,20 @@ struct Step_out {
 
 class Bvh_source final : public narrow::Candidate_source {
  public:
-  explicit Bvh_source(const Pair_ctx &ctx)
-      : ctx_(ctx), H_{&hierarchy(*ctx.side(0).data), &hierarchy(*ctx.side(1).data)} {}
+  Bvh_source(const Pair_ctx &ctx, double reach)
+      : ctx_(ctx), H_{&hierarchy(*ctx.side(0).data), &hierarchy(*ctx.side(1).data)}, reach_(reach) {}
 
   // The triangle pairs whose boxes meet at t = 0. None when the root boxes miss over
   // all of [0, 1] (they hold the bodies at t = 0 too): a far-apart pair costs the two
-  // enclosures of the whole piece, which run() reuses, and one box test.
+  // enclosures of the whole piece, which run() reuses, and one box test. The static
+  // test asks for triangles sharing a point whatever the minimum separation, so its
+  // boxes are not grown (pairs within delta at t = 0 are run()'s, solved with delta).
   std::vector<Prim_pair> static_candidates(util::Thread_pool &pool) override {
-    if (!roots_meet(whole())) return {};
+    if (!roots_meet(whole(), 0.0)) return {};
     const Pose_piece pose[2] = {boxes::enclose_pose(ctx_.side(0), 0.0, 0.0),
                                 boxes::enclose_pose(ctx_.side(1), 0.0, 0.0)};
     std::vector<Node_pair> leaves, wait;
-    traverse(pose, true, 0.0, {{0, 0}}, leaves, wait, pool);
+    traverse(pose, true, 0.0, 0.0, {{0, 0}}, leaves, wait, pool);
     std::vector<Prim_pair> cand;
     for (const Node_pair &p : leaves) elements(p, [&](uint32_t ea, uint32_t eb) {
       cand.push_back({narrow::TT, ea, eb});
@@ -59,7 +61,7 @@ class Bvh_source final : public narrow::Candidate_source {
     sink_ = &sink;
     stats_ = &stats;
     pool_ = &pool;
-    delta_ = std::min(ctx_.side(0).data->feature, ctx_.side(1).data->feature);
+    feature_ = std::min(ctx_.side(0).data->feature, ctx_.side(1).data->feature);
     piece(0.0, 1.0, 0, {{0, 0}}, HUGE_VAL);
   }
 
@@ -69,7 +71,12 @@ class Bvh_source final : public narrow::Candidate_source {
   Candidate_sink *sink_ = nullptr;
   Search_stats *stats_ = nullptr;
   util::Thread_pool *pool_ = nullptr;
-  double delta_ = 0;
+  // Side A's node, triangle, vertex and edge boxes grow by reach_ (boxes.h, reach_of:
+  // a double >= the minimum separation delta, 0 without one) in run(), so every
+  // feature pair within delta at t keeps meeting boxes, with its ancestors', on every
+  // piece holding t (bvh_source.h, "Coverage").
+  const double reach_;
+  double feature_ = 0;  // the bodies' typical feature size (final-piece test)
   bool have_whole_ = false;
   Pose_piece whole_[2];  // the motions' enclosures over [0, 1], computed once
 
@@ -81,13 +88,15 @@ class Bvh_source final : public narrow::Candidate_source {
     return whole_;
   }
 
-  bool roots_meet(const Pose_piece pose[2]) const {
-    return boxes::boxes_meet(node_box(0, pose[0], 0), node_box(1, pose[1], 0));
+  bool roots_meet(const Pose_piece pose[2], double reach) const {
+    return boxes::boxes_meet(node_box(0, pose[0], 0, reach), node_box(1, pose[1], 0, 0.0));
   }
 
-  Box node_box(int s, const Pose_piece &pose, uint32_t k) const {
+  // The world box of node k of side s over the piece, grown by reach.
+  Box node_box(int s, const Pose_piece &pose, uint32_t k, double reach) const {
     const Node &n = H_[s]->nodes[k];
-    return boxes::frame_box(pose, n.c, n.h);
+    const Box b = boxes::frame_box(pose, n.c, n.h);
+    return reach > 0 ? boxes::grow(b, reach) : b;
   }
 
   // Calls f(ea, eb) for each element pair of the leaf pair p.
@@ -99,12 +108,13 @@ class Bvh_source final : public narrow::Candidate_source {
   }
 
   // One level on pairs p[0 .. n): final pieces split every pair down to leaves; other
-  // pieces only split nodes larger than thresh (the motion's spread).
-  void step(const Pose_piece pose[2], bool final, double thresh, const Node_pair *p, size_t n,
-            Step_out &out) const {
+  // pieces only split nodes larger than thresh (the motion's spread). Side A's boxes
+  // grow by reach.
+  void step(const Pose_piece pose[2], bool final, double thresh, double reach, const Node_pair *p,
+            size_t n, Step_out &out) const {
     for (size_t i = 0; i < n; ++i) {
       const uint32_t x = p[i].x, y = p[i].y;
-      if (!boxes::boxes_meet(node_box(0, pose[0], x), node_box(1, pose[1], y))) continue;
+      if (!boxes::boxes_meet(node_box(0, pose[0], x, reach), node_box(1, pose[1], y, 0.0))) continue;
       const Node &nx = H_[0]->nodes[x], &ny = H_[1]->nodes[y];
       if (nx.leaf() && ny.leaf()) {
         out.leaves.push_back(p[i]);
@@ -127,7 +137,8 @@ class Bvh_source final : public narrow::Candidate_source {
   }
 
   // The traversal of a front on one piece, level by level (bvh_source.h, "Threads").
-  void traverse(const Pose_piece pose[2], bool final, double thresh, std::vector<Node_pair> front,
+  void traverse(const Pose_piece pose[2], bool final, double thresh, double reach,
+                std::vector<Node_pair> front,
                 std::vector<Node_pair> &leaves, std::vector<Node_pair> &wait,
                 util::Thread_pool &pool) const {
     while (!front.empty()) {
@@ -136,7 +147,7 @@ class Bvh_source final : public narrow::Candidate_source {
       auto run_chunk = [&](size_t c) {
         util::work_step();  // one chunk of node pairs (util/work_budget.h)
         const size_t b = c * kChunk, e = std::min(front.size(), b + kChunk);
-        step(pose, final, thresh, front.data() + b, e - b, out[c]);
+        step(pose, final, thresh, reach, front.data() + b, e - b, out[c]);
       };
       if (chunks == 1) run_chunk(0);
       else pool.parallel_for(chunks, run_chunk);
@@ -157,13 +168,13 @@ class Bvh_source final : public narrow::Candidate_source {
     for (int s = 0; s < 2; ++s)
       pose[s] = depth == 0 ? whole()[s] : boxes::enclose_pose(ctx_.side(s), a, b);
     const double spread = std::max(pose[0].spread, pose[1].spread);
-    bool final = depth >= kMax_depth || spread <= delta_ || boxes::spread_stalled(depth, spread, parent_spread);
+    bool final = depth >= kMax_depth || spread <= feature_ || boxes::spread_stalled(depth, spread, parent_spread);
     if (!final && front.size() <= kLeaf_pairs) {
       final = true;
       for (const Node_pair &p : front) final = final && H_[0]->nodes[p.x].leaf() && H_[1]->nodes[p.y].leaf();
     }
     std::vector<Node_pair> leaves, wait;
-    traverse(pose, final, spread, std::move(front), leaves, wait, *pool_);
+    traverse(pose, final, spread, reach_, std::move(front), leaves, wait, *pool_);
     if (wait.empty() && (final || leaves.size() <= kLeaf_pairs)) {
       if (!leaves.empty()) emit(a, b, pose, leaves);
       return;
@@ -206,7 +217,10 @@ class Bvh_source final : public narrow::Candidate_source {
     Box vb[2][3], tb[2];
     for (int s = 0; s < 2; ++s) {
       const auto &t = side[s]->mesh->triangles()[tri[s]];
-      for (int k = 0; k < 3; ++k) vb[s][k] = boxes::point_box(pose[s], side[s]->data->pts[t[k]], side[s]->data->pt_err);
+      for (int k = 0; k < 3; ++k) {
+        vb[s][k] = boxes::point_box(pose[s], side[s]->data->pts[t[k]], side[s]->data->pt_err);
+        if (s == 0 && reach_ > 0) vb[s][k] = boxes::grow(vb[s][k], reach_);  // A's grow
+      }
       tb[s] = boxes::hull(boxes::hull(vb[s][0], vb[s][1]), vb[s][2]);
     }
     const auto &TA = A.mesh->triangles()[ea], &TB = B.mesh->triangles()[eb];
@@ -227,8 +241,8 @@ class Bvh_source final : public narrow::Candidate_source {
 
 }  // namespace
 
-std::unique_ptr<narrow::Candidate_source> bvh_source(const Pair_ctx &ctx) {
-  return std::make_unique<Bvh_source>(ctx);
+std::unique_ptr<narrow::Candidate_source> bvh_source(const Pair_ctx &ctx, double reach) {
+  return std::make_unique<Bvh_source>(ctx, reach);
 }
 
 }  // namespace pccd::bvh

@@ -26,6 +26,15 @@
 // piece holding t unless the sink pruned it. A far-apart pair ends with the two roots:
 // their boxes over [0, 1] miss, which also holds at t = 0, so the static candidates
 // (the triangle pairs meeting at t = 0) are none without a traversal.
+// Minimum separation delta > 0 (pccd_config.min_distance): every box of side A (node,
+// triangle, vertex, edge) is grown by reach, a double >= delta (boxes.h, reach_of), in
+// run(); a feature pair within distance delta at t has points at most delta apart on
+// every axis (L_inf <= L_2), so its grown boxes, and those of its elements and their
+// ancestors, meet on every piece holding t, and the argument above holds for "within
+// delta" in place of "touching". The static test (triangles sharing a point at t = 0)
+// keeps ungrown boxes: with delta, pairs within delta at t = 0 come from run() (the
+// driver solves them with delta from t = 0). A far-apart pair still ends with the
+// roots (grown): one box test when the bodies stay more than delta apart per axis.
 //
 // Threads: a front is processed one level at a time in chunks of a fixed size
 // (kChunk), in parallel, and the chunks' outputs are concatenated in chunk order: the
@@ -37,6 +46,8 @@
 
 namespace pccd::bvh {
 
-std::unique_ptr<narrow::Candidate_source> bvh_source(const narrow::Pair_ctx &ctx);
+// reach: the growth of side A's boxes for a minimum separation (boxes::reach_of), 0
+// without one.
+std::unique_ptr<narrow::Candidate_source> bvh_source(const narrow::Pair_ctx &ctx, double reach = 0);
 
 }  // namespace pccd::bvh

@@ -71,7 +71,7 @@ std::array<uint32_t, 3> Pair_ctx::triangle(int s, uint32_t t) const {
 }
 
 template <class NT>
-pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p) const {
+pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p, bool scaled) const {
   auto traj = [&](int s, uint32_t k) {
     if constexpr (std::is_same_v<NT, Rational>) return traj_q(s, k);
     else return traj_i(s, k);
@@ -118,7 +118,7 @@ pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p) const {
     default:
       throw arith::Internal_error("Pair_ctx::query: not a time-dependent feature pair");
   }
-  if (p.type == SS || p.type == ST || p.type == TS) {
+  if (scaled || p.type == SS || p.type == ST || p.type == TS) {
     const Common &c = init();
     if constexpr (std::is_same_v<NT, Rational>) q.scale = c.D;
     else q.scale = c.Di;
@@ -132,7 +132,12 @@ pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p) const {
 }
 
 pred::Contact_result Pair_ctx::solve(const Prim_pair &p, const pred::Solve_options &opt) const {
-  return pred::solve(query<Interval>(p), [&] { return query<Rational>(p); }, opt);
+  // With a minimum separation the point kinds need the scale D too: delta enters their
+  // systems as delta^2 D^2 (pred/query_systems.h), the trajectories being D times the
+  // positions. Without D a body whose motion has W != 1 (a rotation) was within
+  // delta / D, not delta (test_min_distance.py, test_delta_scaled_by_the_motion_denominator).
+  const bool scaled = sgn(opt.delta) > 0;
+  return pred::solve(query<Interval>(p, scaled), [&] { return query<Rational>(p, scaled); }, opt);
 }
 
 bool Pair_ctx::triangles_meet_at_zero(uint32_t a, uint32_t b) const {

@@ -81,7 +81,9 @@ class Pair_ctx {
   const Common &init() const;
   std::unique_ptr<const Common> compute() const;
 
-  template <class NT> pred::Query_data<NT> query(const Prim_pair &p) const;
+  // scaled: set the query's scale D for every kind (balls always have it; point kinds
+  // need it with a minimum separation).
+  template <class NT> pred::Query_data<NT> query(const Prim_pair &p, bool scaled) const;
   std::array<uint32_t, 3> triangle(int s, uint32_t t) const;
 };
 

@@ -14,18 +14,21 @@ enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3, bvh = 4
 // tests/bench/bench_bvh.py, tests/bench/bench_online.py). online: the pair comes from an
 // on-line index (the stored side's trees exist already and are shared by every query):
 // range; otherwise a scene's body pair: bvh (the hierarchies are built with the bodies).
-// min_distance: the solve has a minimum separation delta > 0 (pred::Solve_options), which
-// only brute force covers so far (the other sources would have to grow their bounds by
-// delta; the api refuses them explicitly).
+// min_distance: the solve has a minimum separation delta > 0 (pred::Solve_options):
+// bvh, online too. Boxes and bvh grow one side's bounds by delta (boxes/boxes.h,
+// reach_of); the range phase's linearized contact conditions have no delta (its
+// halfspaces would need the distance conditions of pred/delta_systems.h), so the api
+// refuses range with delta > 0, and an index query takes the stored body's hierarchy
+// (kept with the body like the trees, thread-safe) rather than brute force.
 inline Broad_phase resolve(Broad_phase p, bool online, bool min_distance = false) {
   if (p != Broad_phase::automatic) return p;
-  if (min_distance) return Broad_phase::brute;
-  return online ? Broad_phase::range : Broad_phase::bvh;
+  return online && !min_distance ? Broad_phase::range : Broad_phase::bvh;
 }
 
 // The source of a resolved phase. stored: the range phase's stored side (-1: the
-// larger).
+// larger). reach: boxes::reach_of of the minimum separation (0: none); range takes
+// only 0 (Internal_error otherwise: the api refuses it first).
 std::unique_ptr<narrow::Candidate_source> make_source(Broad_phase p, const narrow::Pair_ctx &ctx,
-                                                      int stored);
+                                                      int stored, double reach = 0);
 
 }  // namespace pccd::scene

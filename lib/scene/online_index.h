@@ -10,7 +10,9 @@
 // query() only reads the index, so several threads may query one index at once.
 // Answers equal those of solve_scene on the same two bodies with any broad phase;
 // opt.broad_phase chooses how candidates are found (automatic is range, which uses the
-// stored trees; boxes and brute force are there for comparison).
+// stored trees; boxes and brute force are there for comparison). With a minimum
+// separation delta > 0 automatic is bvh, the stored body's hierarchy (range has no
+// delta: broad_phase.h).
 #pragma once
 #include "scene/scene.h"
 

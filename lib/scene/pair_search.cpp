@@ -12,12 +12,15 @@
 
 namespace pccd::scene {
 
-std::unique_ptr<narrow::Candidate_source> make_source(Broad_phase p, const Pair_ctx &ctx, int stored) {
+std::unique_ptr<narrow::Candidate_source> make_source(Broad_phase p, const Pair_ctx &ctx, int stored,
+                                                      double reach) {
   switch (p) {
     case Broad_phase::brute: return narrow::brute_source(ctx);
-    case Broad_phase::range: return range::range_source(ctx, stored);
-    case Broad_phase::boxes: return boxes::box_source(ctx);
-    case Broad_phase::bvh: return bvh::bvh_source(ctx);
+    case Broad_phase::range:
+      if (reach != 0) throw arith::Internal_error("make_source: range has no minimum separation");
+      return range::range_source(ctx, stored);
+    case Broad_phase::boxes: return boxes::box_source(ctx, reach);
+    case Broad_phase::bvh: return bvh::bvh_source(ctx, reach);
     case Broad_phase::automatic: break;
   }
   throw arith::Internal_error("make_source: the broad phase is not resolved");
@@ -28,10 +31,10 @@ namespace {
 class Driver final : public narrow::Candidate_sink {
  public:
   Driver(const Pair_ctx &ctx, const Search_options &opt, Thread_pool &pool, Pair_outcome &out)
-      : ctx_(ctx), opt_(opt), pool_(pool), out_(out) {}
+      : ctx_(ctx), opt_(opt), pool_(pool), out_(out), reach_(boxes::reach_of(opt.solve.delta)) {}
 
   void run() {
-    std::unique_ptr<narrow::Candidate_source> source = make_source(opt_.phase, ctx_, opt_.stored);
+    std::unique_ptr<narrow::Candidate_source> source = make_source(opt_.phase, ctx_, opt_.stored, reach_);
     if (ctx_.side(0).is_mesh() && ctx_.side(1).is_mesh()) {
       whole(source->static_candidates(pool_));
       if (found_any_ && !opt_.all_contacts) return;
@@ -106,12 +109,15 @@ class Driver final : public narrow::Candidate_sink {
     }
     return out;
   }
-  // The first part on which the pair's two feature boxes meet (kSub: none).
+  // The first part on which the pair's two feature boxes meet (kSub: none), side A's
+  // grown by the minimum separation's reach (boxes.h, reach_of: features within delta
+  // have meeting grown boxes, so the bound stays a lower bound of their contacts).
   int first_meeting(const Prim_pair &p, const std::vector<Part> &part) const {
-    for (int k = 0; k < kSub; ++k)
-      if (boxes::boxes_meet(boxes::feature_box(ctx_.side(0), 0, p, part[k].pose[0]),
-                            boxes::feature_box(ctx_.side(1), 1, p, part[k].pose[1])))
-        return k;
+    for (int k = 0; k < kSub; ++k) {
+      boxes::Box a = boxes::feature_box(ctx_.side(0), 0, p, part[k].pose[0]);
+      if (reach_ > 0) a = boxes::grow(a, reach_);
+      if (boxes::boxes_meet(a, boxes::feature_box(ctx_.side(1), 1, p, part[k].pose[1]))) return k;
+    }
     return kSub;
   }
 
@@ -119,6 +125,7 @@ class Driver final : public narrow::Candidate_sink {
   const Search_options &opt_;
   Thread_pool &pool_;
   Pair_outcome &out_;
+  const double reach_;  // boxes::reach_of(opt_.solve.delta): 0 without a minimum separation
   // Per feature pair solved: a time c such that it has no contact in [0, c] (+inf: it
   // touches, with its result kept, or has no contact at all). A pair of a piece [a, b] is
   // solved only for contacts up to min(best, b) (much cheaper for a pair whose boxes

@@ -6,7 +6,9 @@
 //    candidates); a contact there is the first one.
 //  - The source's candidates of a piece [a, b] get the start of the first of 8 equal
 //    sub-pieces on which the two features' boxes meet (a lower bound of their contacts
-//    in [a, b]; none: no contact in [a, b], so the pair is left for a later piece). They
+//    in [a, b]; none: no contact in [a, b], so the pair is left for a later piece; with
+//    a minimum separation delta, side A's box grows by boxes::reach_of(delta), so that
+//    "contact" reads "within delta"). They
 //    are solved in order of that bound, in batches of 4, 8, ..., 64 pairs; a batch
 //    starts only with pairs whose bound is <= the best upper bound so far, and each pair
 //    is asked only for contacts up to that bound and the piece's end b

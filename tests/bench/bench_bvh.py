@@ -32,6 +32,15 @@ pivot 1 extent off, as rot above). FCL: one Sphere object per atom, a numpy pref
 swept boxes (translation: exact boxes; rotation: the chord's box grown by the sagitta),
 then continuousCollide per surviving pair (counted in FCL's time).
 
+Minimum separation (--delta D, default 1e-3; "0": not run): the mesh rows again with
+min_distance = D (exact rational text), the first time the surfaces are within D. Cases:
+far, hit and rot as above (the same motions), and near-D: the hit path stopped 2^-20 E
+before the first time within D (from polyccd's answer to hit at D; no contact at D).
+Columns: bvh with D (1 thread; boxes with D must give the same answer), bvh without D on
+the same motion (its ratio: the cost of D), and FCL-CA / FCL-naive on the same motion
+(FCL has no minimum-separation CCD: the nearest comparable figure, timed like above).
+Brute force with D (the reference of tests/test_min_distance.py) is quadratic: not run.
+
 Timing: perf_counter_ns per query, min over --repeat rounds, gc off, one process. A
 query under FAST_NS (50 us; far-apart pairs) is also timed in --repeat batches of
 about 1 ms of calls each (the mean per call of a batch), for every method alike: a
@@ -41,6 +50,7 @@ specialized bytecode (polyccd.check's 2nd-6th single calls of a far pair: 13, 10
 hierarchy) against fcl.BVHModel (mesh).
 
 Usage: python tests/bench/bench_bvh.py [--quick] [--sizes 1k,5k,...] [--repeat N] [--no-fcl]
+       [--delta D]
 """
 import argparse
 import datetime
@@ -135,8 +145,9 @@ def timed(fn, repeat):
     return best, out
 
 
-def time_poly(polyccd, bodies, threads, repeat, broad_phase="auto"):
-    ns, out = timed(lambda: polyccd.check(bodies, threads=threads, broad_phase=broad_phase), repeat)
+def time_poly(polyccd, bodies, threads, repeat, broad_phase="auto", min_distance=None):
+    ns, out = timed(lambda: polyccd.check(bodies, threads=threads, broad_phase=broad_phase,
+                                          min_distance=min_distance), repeat)
     if isinstance(out, Exception):
         raise out
     return ns, out
@@ -210,7 +221,77 @@ def mesh_rows(polyccd, fcl, label, opts, scaling):
         for m in ("t1", "t2", "boxes", "FCL-CA", "FCL-naive"):
             if m in row:
                 scaling.setdefault(("mesh " + v, m), []).append((n, row[m] / 1e6))
-    return rows, hit_x
+    drows = []
+    if opts.delta != "0":
+        drows = delta_rows(polyccd, fcl, A, mesh, E, opts, reqs if fcl else None, bvh if fcl else None)
+        for r in drows:
+            scaling.setdefault((f"mesh {r['variant']} (delta)", "bvh+delta"), []).append((2 * len(F), r["td"] / 1e6))
+    return rows, hit_x, drows
+
+
+def delta_rows(polyccd, fcl, A, mesh, E, opts, reqs, bvh):
+    """The rows of the minimum-separation table (see Minimum separation above)."""
+    D = opts.delta
+    rows = []
+    for v in ("far", "hit", "near-D", "rot"):
+        if v == "near-D":
+            m_hit = poses(E, "hit")[0]
+            r = polyccd.check([A, polyccd.Body(mesh, m_hit, name="B")], min_distance=D)
+            x0 = 1.5 * E
+            xc = Fraction(x0) - Fraction(r.first_contact.lo) * Fraction(E)  # >= x at the delta time
+            x1 = float(xc + Fraction(E) * Fraction(1, 2 ** 20))
+            while Fraction(x1) <= xc:
+                x1 = math.nextafter(x1, math.inf)
+            motion = polyccd.Motion.linear([x0, 0, 0], [x1, 0, 0])
+            start, end, mt = (np.array([x0, 0.0, 0.0]),), (np.array([x1, 0.0, 0.0]),), "CCDM_TRANS"
+        else:
+            motion, start, end, mt = poses(E, v)
+        bodies = [A, polyccd.Body(mesh, motion, name="B")]
+        row = {"variant": v}
+        gc.disable()
+        try:
+            row["td"], r = time_poly(polyccd, bodies, 1, opts.repeat, min_distance=D)
+            row["ans"], row["time"] = poly_answer(r)
+            row["stats"] = dict(r.stats)
+            row["t0"], r0 = time_poly(polyccd, bodies, 1, opts.repeat)
+            row["ans0"] = poly_answer(r0)
+            row["boxes"], rb = time_poly(polyccd, bodies, 1, 1, "boxes", min_distance=D)
+            row["same"] = poly_answer(rb)[0] == row["ans"]
+            if fcl:
+                oA = fcl.CollisionObject(bvh, fcl.Transform())
+                oB = fcl.CollisionObject(bvh, fcl.Transform(*start))
+                for name in ("FCL-CA", "FCL-naive"):
+                    req = reqs[mt][name]
+
+                    def run():
+                        res = fcl.ContinuousCollisionResult()
+                        fcl.continuousCollide(oA, fcl.Transform(), oB, fcl.Transform(*end), req, res)
+                        return res.is_collide, res.time_of_contact
+                    row[name], row[name + " ans"] = timed(run, opts.repeat)
+        finally:
+            gc.enable()
+        rows.append(row)
+    return rows
+
+
+def show_delta_rows(rows, delta):
+    def ans(a, t):
+        if not a[0]:
+            return "miss"
+        exact = a[1][2]
+        return str(exact) if exact is not None and len(str(exact)) <= 12 else f"{t:.6g}"
+    out = []
+    for r in rows:
+        fa = r.get("FCL-CA ans")
+        out.append([r["variant"], ans(r["ans"], r["time"]), ans(*r["ans0"]), fmt(r["td"]), fmt(r["t0"]),
+                    f"{r['td'] / r['t0']:.3g}", fmt(r["boxes"]), "yes" if r["same"] else "NO",
+                    fmt(r.get("FCL-CA")), fmt(r.get("FCL-naive")),
+                    "n/a" if fa is None else ("miss" if not fa[0] else f"{fa[1]:.4g}"),
+                    r["stats"].get("solved", "?"), r["stats"].get("candidates", "?")])
+    print(f"min_distance = {delta}: bvh with delta against bvh without it on the same motions")
+    BB.print_table(["case", "answer at delta", "answer at 0", "bvh+delta ms", "bvh ms", "ratio",
+                    "boxes+delta ms", "same", "FCL-CA ms", "FCL-naive ms", "CA t", "solved",
+                    "candidates"], out)
 
 
 def time_polyccd(polyccd, bodies, row, opts):
@@ -350,6 +431,7 @@ def main():
     ap.add_argument("--repeat", type=int, default=int(os.environ.get("POLYCCD_BENCH_REPEAT", "3")))
     ap.add_argument("--no-fcl", action="store_true")
     ap.add_argument("--no-molecules", action="store_true")
+    ap.add_argument("--delta", default="1e-3", help='min_distance of the delta table ("0": none)')
     opts = ap.parse_args()
     sizes = opts.sizes.split(",") if opts.sizes else (list(QUICK) if opts.quick else list(MESHES))
     import polyccd
@@ -368,9 +450,12 @@ def main():
     scaling = {}
     for label in sizes:
         if label in MESHES:
-            rows, _ = mesh_rows(polyccd, fcl, label, opts, scaling)
+            rows, _, drows = mesh_rows(polyccd, fcl, label, opts, scaling)
             show_rows(rows, True)
             print()
+            if drows:
+                show_delta_rows(drows, opts.delta)
+                print()
         if label in MOLS and not opts.no_molecules:
             show_rows(mol_rows(polyccd, fcl, label, opts, scaling), True)
             print()

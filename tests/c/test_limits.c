@@ -306,13 +306,18 @@ static void min_distance(void)
   FAILS(API(pccd_solve_linear_d(PCCD_VERTEX_VERTEX, p0, p1, &cfg, res)), PCCD_EINVAL,
         "config.min_distance: \"-1\" must be >= 0");
   cfg.min_distance = "1";
-  OK(SOLVE(s, &cfg, NULL, rep)); /* auto: brute force */
+  OK(SOLVE(s, &cfg, NULL, rep)); /* auto: bvh */
   {
     pccd_scene_options opt;
     OK(pccd_scene_options_init(&opt));
-    opt.broad_phase = PCCD_BROAD_BVH;
-    FAILS(SOLVE(s, &cfg, &opt, rep), PCCD_EINVAL, "opt.broad_phase: 4 does not take config.min_distance");
+    opt.broad_phase = PCCD_BROAD_RANGE; /* the one phase without delta */
+    FAILS(SOLVE(s, &cfg, &opt, rep), PCCD_EINVAL,
+          "opt.broad_phase: 2 (PCCD_BROAD_RANGE) does not take config.min_distance > 0");
     opt.broad_phase = PCCD_BROAD_BRUTE;
+    OK(SOLVE(s, &cfg, &opt, rep));
+    opt.broad_phase = PCCD_BROAD_BVH;
+    OK(SOLVE(s, &cfg, &opt, rep));
+    opt.broad_phase = PCCD_BROAD_BOXES;
     OK(SOLVE(s, &cfg, &opt, rep));
   }
   cfg.min_distance = "0";

@@ -191,12 +191,15 @@ class Robot:
                 [link for link, _, _, _ in self.shapes])
 
     def check(self, q0, q1, obstacles=(), *, self_collision=True, allowed=None,
-              time_tolerance="1e-12", all_contacts=False, threads=1, broad_phase="auto"):
+              time_tolerance="1e-12", all_contacts=False, threads=1, broad_phase="auto",
+              min_distance=None):
         """The exact first contact over the segment q0 -> q1 of the robot with the
         obstacles (polyccd.Body, stationary or moving) and, when self_collision, of its
         links with each other except the allowed pairs (an iterable of link-name pairs;
         None: adjacent_pairs()) and a link's own geometries. One polyccd scene with those
         pairs skipped (pccd_scene_set_pair_check); obstacle pairs are not checked.
+        min_distance: delta >= 0 (pccd_config.min_distance): a contact is the first time
+        the checked pairs come within delta (the broad phases grow their boxes by delta).
         Returns a RobotResult (first contact, contacts by link name and feature, joint
         values at the ends of the time enclosure)."""
         from ._scene import Body, check_scene
@@ -228,7 +231,8 @@ class Robot:
         if len(bodies) < 2:
             raise InputError("obstacles: nothing to check (one body, no obstacle)")
         r = check_scene(bodies, time_tolerance=time_tolerance, all_contacts=all_contacts,
-                        threads=threads, broad_phase=broad_phase, skip_pairs=skip)
+                        threads=threads, broad_phase=broad_phase, skip_pairs=skip,
+                        min_distance=min_distance)
         return RobotResult.of(r, self, q0, q1)
 
     def check_path(self, waypoints, obstacles=(), **options):
