@@ -34,21 +34,25 @@ bool quat_is_zero(const Quat_poly &q) {
 }
 
 Mat3_poly rotation_numerator(const Quat_poly &q) {
-  const Poly_q &w = q[0];
-  const Poly_q two = Poly_q::constant(Rational(2));
-  const Poly_q s = w * w - (q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);  // w^2 - |v|^2
+  // The ten distinct products q_a q_b once (the entries share them; the products of
+  // long polynomials are the whole cost), then their combinations.
+  Poly_q p[4][4];
+  for (int a = 0; a < 4; ++a)
+    for (int b = a; b < 4; ++b) p[a][b] = q[a] * q[b];
+  const Rational two(2);
+  auto twice = [&](const Poly_q &x) { return two * x; };
+  const Poly_q &ww = p[0][0], &xx = p[1][1], &yy = p[2][2], &zz = p[3][3];
   Mat3_poly m;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m[i][j] = two * q[1 + i] * q[1 + j];  // 2 v v^T
-  for (int i = 0; i < 3; ++i) m[i][i] = m[i][i] + s;
-  // 2 w [v]x, with [v]x u = v x u:  [[0, -z, y], [z, 0, -x], [-y, x, 0]].
-  const Poly_q wx = two * w * q[1], wy = two * w * q[2], wz = two * w * q[3];
-  m[0][1] = m[0][1] - wz;
-  m[0][2] = m[0][2] + wy;
-  m[1][0] = m[1][0] + wz;
-  m[1][2] = m[1][2] - wx;
-  m[2][0] = m[2][0] - wy;
-  m[2][1] = m[2][1] + wx;
+  // Rn = (w^2 - |v|^2) I + 2 v v^T + 2 w [v]x, [v]x = [[0, -z, y], [z, 0, -x], [-y, x, 0]].
+  m[0][0] = ww + xx - yy - zz;
+  m[1][1] = ww - xx + yy - zz;
+  m[2][2] = ww - xx - yy + zz;
+  m[0][1] = twice(p[1][2] - p[0][3]);
+  m[1][0] = twice(p[1][2] + p[0][3]);
+  m[0][2] = twice(p[1][3] + p[0][2]);
+  m[2][0] = twice(p[1][3] - p[0][2]);
+  m[1][2] = twice(p[2][3] - p[0][1]);
+  m[2][1] = twice(p[2][3] + p[0][1]);
   return m;
 }
 
