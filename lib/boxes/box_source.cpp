@@ -148,7 +148,10 @@ class Box_source final : public narrow::Candidate_source {
     util::work_step();  // one time piece (util/work_budget.h)
     if (sink_->pruned(a)) return;
     ++stats_->pieces;
-    Pose_piece pose[2] = {enclose_pose(ctx_.side(0), a, b), enclose_pose(ctx_.side(1), a, b)};
+    auto pose_on = [&](int s) {
+      return a == 0 && b == 1 ? whole_pose(ctx_.side(s)) : enclose_pose(ctx_.side(s), a, b);
+    };
+    Pose_piece pose[2] = {pose_on(0), pose_on(1)};
     for (int s = 0; s < 2; ++s) ++side_[s].stamp;
     Box bodyB = frame_box(pose[1], ctx_.side(1).data->box_c, ctx_.side(1).data->box_h);
     Box hullA = filter(0, pose[0], actA, bodyB);

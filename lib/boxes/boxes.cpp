@@ -142,6 +142,23 @@ void choose_pivot(const Moving_body &b, double a, double t1, double q[3]) {
 
 }  // namespace
 
+namespace {
+struct Whole_pose : narrow::Body_attachment {
+  Pose_piece pose;
+};
+}  // namespace
+
+Pose_piece whole_pose(const Moving_body &b) {
+  if (!b.derived) return enclose_pose(b, 0.0, 1.0);
+  return b.derived
+      ->attached<Whole_pose>([&] {
+        auto w = std::make_unique<Whole_pose>();
+        w->pose = enclose_pose(b, 0.0, 1.0);
+        return w;
+      })
+      .pose;
+}
+
 Pose_piece enclose_pose(const Moving_body &b, double a, double t1) {
   Pose_piece p;
   choose_pivot(b, a, t1, p.q);

@@ -73,6 +73,10 @@ struct Pose_piece {
 };
 
 Pose_piece enclose_pose(const Moving_body &b, double a, double t1);
+// enclose_pose(b, 0, 1), computed once per Moving_body (Moving_body::derived) and shared
+// by every pair the body is in: a robot link against several obstacles enclosed its
+// degree-14 pose once per pair and per candidate source.
+Pose_piece whole_pose(const Moving_body &b);
 
 // Halving a time piece no longer shrinks the boxes once the motion's spread stops
 // shrinking with the width: its floor is then the rounding slack of large coordinates or

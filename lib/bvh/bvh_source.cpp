@@ -82,7 +82,7 @@ class Bvh_source final : public narrow::Candidate_source {
 
   const Pose_piece *whole() {
     if (!have_whole_) {
-      for (int s = 0; s < 2; ++s) whole_[s] = boxes::enclose_pose(ctx_.side(s), 0.0, 1.0);
+      for (int s = 0; s < 2; ++s) whole_[s] = boxes::whole_pose(ctx_.side(s));
       have_whole_ = true;
     }
     return whole_;

@@ -59,6 +59,7 @@ Moving_body prepare_body(std::shared_ptr<const Body_data> data, std::shared_ptr<
   b.mesh = b.data->mesh;
   b.spheres = b.data->spheres;
   b.mo = std::move(mo);
+  b.derived = std::make_shared<const Attachments>();
   return b;
 }
 

@@ -25,6 +25,27 @@ struct Body_attachment {
   virtual ~Body_attachment() = default;
 };
 
+// Structures of types derived from Body_attachment, each built on first use and then
+// shared by every caller: one build per holder and type, thread-safe (a concurrent
+// caller waits for the build). make() returns a std::unique_ptr<T> or
+// std::shared_ptr<T>; if it throws, nothing is kept.
+class Attachments {
+ public:
+  template <class T, class Make>
+  const T &attached(Make &&make) const {
+    std::lock_guard<std::mutex> lock(mu_);
+    for (const auto &a : items_)
+      if (a.first == std::type_index(typeid(T))) return static_cast<const T &>(*a.second);
+    std::shared_ptr<const Body_attachment> built(make());
+    items_.emplace_back(std::type_index(typeid(T)), built);
+    return static_cast<const T &>(*built);
+  }
+
+ private:
+  mutable std::mutex mu_;
+  mutable std::vector<std::pair<std::type_index, std::shared_ptr<const Body_attachment>>> items_;
+};
+
 // Motion-independent data of a body, derived once per body (pccd_body keeps it).
 struct Body_data {
   std::shared_ptr<const motion::Mesh_body> mesh;     // exactly one of mesh / spheres
@@ -42,23 +63,15 @@ struct Body_data {
   double feature = 0;  // typical feature size (median triangle box diagonal / diameter)
   std::array<double, 3> box_c{}, box_h{};  // body-frame box of all points (+ radii)
 
-  // The attachment of type T (derived from Body_attachment), built by make() on the
-  // first call for this body and T, then shared by every caller: one build per body and
-  // type, thread-safe (a concurrent caller waits for the build). make() returns a
-  // std::unique_ptr<T> or std::shared_ptr<T>; if it throws, nothing is kept.
+  // The attachment of type T, built by make() on the first call for this body and T
+  // (Attachments).
   template <class T, class Make>
   const T &attached(Make &&make) const {
-    std::lock_guard<std::mutex> lock(attach_mu_);
-    for (const auto &a : attachments_)
-      if (a.first == std::type_index(typeid(T))) return static_cast<const T &>(*a.second);
-    std::shared_ptr<const Body_attachment> built(make());
-    attachments_.emplace_back(std::type_index(typeid(T)), built);
-    return static_cast<const T &>(*built);
+    return attachments_.attached<T>(std::forward<Make>(make));
   }
 
  private:
-  mutable std::mutex attach_mu_;
-  mutable std::vector<std::pair<std::type_index, std::shared_ptr<const Body_attachment>>> attachments_;
+  Attachments attachments_;
 };
 
 std::shared_ptr<const Body_data> make_body_data(std::shared_ptr<const motion::Mesh_body> mesh,
@@ -92,6 +105,10 @@ struct Moving_body {
   std::shared_ptr<const motion::Mesh_body> mesh;     // = data->mesh, data->spheres
   std::shared_ptr<const motion::Sphere_body> spheres;
   std::shared_ptr<const Motion_data> mo;             // never null
+  // What later layers derive from the body on this motion, once for all the pairs it
+  // is in (the broad phases' enclosure of its pose over [0, 1], boxes::whole_pose);
+  // made by prepare_body, shared by copies (same body, same motion).
+  std::shared_ptr<const Attachments> derived;
 
   bool is_mesh() const { return static_cast<bool>(mesh); }
   size_t n_points() const { return data->pts.size(); }
