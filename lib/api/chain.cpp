@@ -67,11 +67,16 @@ PCCD_API int pccd_chain_segment_motions(const pccd_chain *c, const double *q0, c
     check_segment(c, q0, q1, n);
     if (n > 0) require(motions, "motions");
     for (size_t k = 0; k < n; ++k) motions[k] = nullptr;
-    std::vector<pccd::motion::Rigid_motion> m = c->c.segment_motions(q0, q1);
+    std::vector<pccd::motion::Mat3_poly> rn;
+    std::vector<pccd::motion::Rigid_motion> m = c->c.segment_motions(q0, q1, &rn);
     std::vector<pccd_motion *> made;
     try {
-      // Valid by construction (Chain::segment_motions): their data skips the vanishing test.
-      for (auto &x : m) made.push_back(new pccd_motion(std::move(x), true));
+      // Valid by construction (Chain::segment_motions): their data skips the vanishing
+      // test, and takes the rotation numerator the composition computed.
+      for (size_t k = 0; k < m.size(); ++k) {
+        made.push_back(new pccd_motion(std::move(m[k]), true));
+        made.back()->rn = std::make_shared<const pccd::motion::Mat3_poly>(std::move(rn[k]));
+      }
     } catch (...) {
       for (pccd_motion *p : made) delete p;
       throw;

@@ -12,8 +12,8 @@
 
 struct pccd_motion {
   pccd_motion() = default;
-  pccd_motion(const pccd_motion &o) : m(o.m), known_valid(o.known_valid) {}  // the copy
-                                                                            // derives its own data
+  pccd_motion(const pccd_motion &o) : m(o.m), known_valid(o.known_valid), rn(o.rn) {}
+  // (the copy derives its own data)
   explicit pccd_motion(pccd::motion::Rigid_motion mm, bool valid = false)
       : m(std::move(mm)), known_valid(valid) {}
 
@@ -22,6 +22,8 @@ struct pccd_motion {
   bool known_valid = false;      // m is valid by construction (a kinematic chain's link
                                  // motion: motion/chain.h), so its derivation skips the
                                  // exact vanishing test; dropped by edit
+  mutable std::shared_ptr<const pccd::motion::Mat3_poly> rn;  // rotation_numerator(m.r) when its
+                                                      // maker had it; dropped by edit
   mutable std::mutex mu;
   mutable std::shared_ptr<const pccd::narrow::Motion_data> data;  // of m; null: not yet
   mutable std::shared_ptr<const pccd::api::Biggest_number> biggest;  // of m; null: not yet
@@ -35,6 +37,7 @@ inline motion::Rigid_motion &edit(pccd_motion *m) {
   m->data.reset();
   m->biggest.reset();
   m->known_valid = false;
+  m->rn.reset();
   return m->m;
 }
 
@@ -54,7 +57,8 @@ inline std::shared_ptr<const narrow::Motion_data> motion_data(const pccd_motion 
   std::lock_guard<std::mutex> lock(m->mu);
   if (!m->data) {
     try {
-      m->data = narrow::prepare_motion(m->m, m->known_valid);
+      m->data = narrow::prepare_motion(m->m, m->known_valid, m->rn.get());
+      m->rn.reset();  // in the data now
     } catch (const arith::Input_error &) {
       return nullptr;
     }

@@ -122,14 +122,21 @@ Rigid_motion Chain::joint_motion(size_t k, double q0, double q1) const {
   return m;
 }
 
-std::vector<Rigid_motion> Chain::segment_motions(const double *q0, const double *q1) const {
+std::vector<Rigid_motion> Chain::segment_motions(const double *q0, const double *q1,
+                                                std::vector<Mat3_poly> *rn) const {
   std::vector<Rigid_motion> out;
   out.reserve(links_.size());
+  std::vector<Mat3_poly> local;
+  std::vector<Mat3_poly> &R = rn ? *rn : local;
+  R.clear();
+  R.reserve(links_.size());
   for (size_t k = 0; k < links_.size(); ++k) {
     Rigid_motion j = joint_motion(k, q0[k], q1[k]);
     // Every factor is valid by construction (a joint quaternion never vanishes, above),
-    // so the composition needs no vanishing check.
-    out.push_back(links_[k].parent < 0 ? std::move(j) : compose_valid(out[links_[k].parent], j));
+    // so the composition needs no vanishing check. Links come after their parents.
+    const long p = links_[k].parent;
+    out.push_back(p < 0 ? std::move(j) : compose_valid(out[p], j, &R[p]));
+    R.push_back(rotation_numerator(out.back().r));
   }
   return out;
 }

@@ -62,7 +62,10 @@ class Chain {
   // The world motion of every link over the segment q0 -> q1 (q[k]: the value of link
   // k's joint; ignored for fixed joints). Input_error "q0[k]" / "q1[k]" for a
   // non-finite value, "q1[k]" for a revolute segment the policy above rejects.
-  std::vector<Rigid_motion> segment_motions(const double *q0, const double *q1) const;
+  // rn: when given, also rotation_numerator(r) of every link's motion (computed once
+  // per link: each serves its children's compositions and the link's own data).
+  std::vector<Rigid_motion> segment_motions(const double *q0, const double *q1,
+                                            std::vector<Mat3_poly> *rn = nullptr) const;
   // The joint values at time t in [0, 1] of the same segment (as above; fixed: 0).
   std::vector<double> joint_values(const double *q0, const double *q1, const arith::Rational &t) const;
 

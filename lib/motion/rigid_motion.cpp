@@ -166,10 +166,11 @@ Rigid_motion compose_motions(const Rigid_motion &outer, const Rigid_motion &inne
   return compose_valid(outer, inner);
 }
 
-Rigid_motion compose_valid(const Rigid_motion &outer, const Rigid_motion &inner) {
+Rigid_motion compose_valid(const Rigid_motion &outer, const Rigid_motion &inner,
+                           const Mat3_poly *Rn_outer) {
   Rigid_motion m;
   m.r = quat_mul(outer.r, inner.r);
-  const Mat3_poly Rn_o = rotation_numerator(outer.r);
+  const Mat3_poly Rn_o = Rn_outer ? *Rn_outer : rotation_numerator(outer.r);
   const Poly_q W_i = inner.denominator();
   bool constant_outer = true;
   for (const Poly_q &c : outer.r) constant_outer = constant_outer && c.degree() < 1;

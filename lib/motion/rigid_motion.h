@@ -102,7 +102,10 @@ struct Rigid_motion {
 // outer, then inner).
 Rigid_motion compose_motions(const Rigid_motion &outer, const Rigid_motion &inner);
 // The same without the vanishing checks, for factors known to be valid (motion/chain.h).
-Rigid_motion compose_valid(const Rigid_motion &outer, const Rigid_motion &inner);
+// Rn_outer: rotation_numerator(outer.r) when the caller has it (a chain reuses each
+// link's for its children and its data), else computed here.
+Rigid_motion compose_valid(const Rigid_motion &outer, const Rigid_motion &inner,
+                           const Mat3_poly *Rn_outer = nullptr);
 
 // "t = 1/2" or "an irrational time t with lo < t < hi" (for messages).
 std::string describe_vanishing(const Vanishing &v);

@@ -32,11 +32,12 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-std::shared_ptr<const Motion_data> prepare_motion(const motion::Rigid_motion &m, bool known_valid) {
+std::shared_ptr<const Motion_data> prepare_motion(const motion::Rigid_motion &m, bool known_valid,
+                                                  const motion::Mat3_poly *Rn) {
   if (!known_valid) m.validate();
   auto d = std::make_shared<Motion_data>();
   d->motion = m;
-  d->Rn = motion::rotation_numerator(m.r);
+  d->Rn = Rn ? *Rn : motion::rotation_numerator(m.r);
   d->O = m.offset_numerator();
   d->W = m.denominator();
   for (int i = 0; i < 3; ++i) {

@@ -95,8 +95,10 @@ struct Motion_data {
 // Validates the motion (Input_error when r(t) vanishes on [0, 1]) and derives its data.
 // known_valid: the caller has proven r(t) != 0 on [0, 1] (a kinematic chain's link
 // motions, motion::Chain::segment_motions), and the exact test is skipped.
+// Rn: rotation_numerator(m.r) when the caller has it.
 std::shared_ptr<const Motion_data> prepare_motion(const motion::Rigid_motion &m,
-                                                  bool known_valid = false);
+                                                  bool known_valid = false,
+                                                  const motion::Mat3_poly *Rn = nullptr);
 // The data of the stationary (identity) motion: built once per process.
 const std::shared_ptr<const Motion_data> &identity_motion();
 
