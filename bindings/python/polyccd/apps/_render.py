@@ -8,6 +8,7 @@ ball centre is moved in float with numpy. The geometry comes from the shapes' fl
 arrays (polyccd.data's LoadedMesh.vertices / .triangles, LoadedSpheres.centers /
 .radii); other shapes need them passed in `geometry`.
 """
+import textwrap
 from fractions import Fraction
 from pathlib import Path
 
@@ -485,9 +486,14 @@ def render_scene(bodies, t, contacts, path, title=None, *, geometry=None, labels
                       for b in placed)
     t_exact = _time(t)
     head = title or "polyccd scene"
-    fig.suptitle(f"{head}\ndrawn at t = {float(t_exact):.12g}   bodies: {names}   "
-                 f"touching features in red: {len(features)}", fontsize=11)
-    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.88, wspace=0.02)
+    # The body list wrapped (a robot has a dozen or more meshes), at most three lines.
+    lines = textwrap.wrap(f"bodies: {names}", width=160)
+    if len(lines) > 3:
+        lines = lines[:2] + [f"... ({len(placed)} bodies)"]
+    fig.suptitle("\n".join([head, f"drawn at t = {float(t_exact):.12g}   touching features in "
+                                   f"red: {len(features)}"] + lines), fontsize=11)
+    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.88 - 0.03 * (len(lines) - 1),
+                        wspace=0.02)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=dpi)
