@@ -293,7 +293,9 @@ Contact_result solve_at(const Query_data<Interval> &iq,
   // modular test of the first-touching systems alone proves.
   const Query_data<Rational> eq = integral(exact_points());
   if (decided && first_time_irrational(eq, out.features)) return out;
-  Feature_set<Rational> set = build_systems(eq);
+  // A decided search needs only the systems of the features touching first (the
+  // rationality test below); the exact search needs them all.
+  Feature_set<Rational> set = decided ? build_systems(eq, &out.features) : build_systems(eq);
   strip_positive(set, eq);
   if (!decided) {
     const poly::Search_state<Rational> resume = exact_state(progress, iset, set);
