@@ -8,6 +8,7 @@
 // point of C outside C_k, i.e. a contact of another, lower-dimensional feature pair,
 // which lib/pred always includes (see lib/pred/features.h).
 #pragma once
+#include <algorithm>
 #include <vector>
 
 #include "poly/isolated_root.h"
@@ -133,6 +134,23 @@ Search_result<NT> earliest_contact(const std::vector<System<NT>> &sys,
     progress->active = active;
   };
   save();
+  // t* = hi exactly: some system hits hi and none has a contact in the open (lo, hi)
+  // (at_hi: those hitting hi). An isolated system's only candidate r is in (lo, hi]: it
+  // hits hi exactly when f(hi) = 0 (r qualifies), and has a contact inside otherwise.
+  // The hits are asked first (signs at one point); the root counts of the open interval
+  // only when one system hits hi.
+  auto exact_at_hi = [&](std::vector<size_t> &at_hi) {
+    at_hi.clear();
+    for (size_t i : active)
+      if (isolated[i] ? iso[i].sign_at(hi) == 0 : sys[i].hits(hi)) at_hi.push_back(i);
+    if (at_hi.empty()) return false;
+    for (size_t i : active) {
+      const bool hit = std::find(at_hi.begin(), at_hi.end(), i) != at_hi.end();
+      if (isolated[i] ? !hit : sys[i].count_open(lo, hi) > 0) return false;
+    }
+    return true;
+  };
+  std::vector<size_t> at_hi;
   while (wider_than(lo, hi, opt.tol)) {
     util::work_step();  // one bisection step (util/work_budget.h)
     if (bounded && past(lo, opt.until)) return Search_result<NT>();  // first contact after `until`
@@ -147,29 +165,40 @@ Search_result<NT> earliest_contact(const std::vector<System<NT>> &sys,
     } else {
       hi = m;
       active = std::move(left);
+      // A contact exactly at the midpoint (a dyadic t*, e.g. 1/2) ends the search here:
+      // the remaining steps would only move lo up to hi and then find the same exact
+      // answer below (unless `until` < hi, where they return no contact: left to them).
+      // An undecided sign in intervals only skips this shortcut.
+      bool done = false;
+      if (!bounded || !past(hi, opt.until)) {
+        try {
+          done = exact_at_hi(at_hi);
+        } catch (const arith::Uncertain &) {
+          done = false;
+        }
+      }
+      if (done) {
+        save();
+        res.lo = res.hi = hi;
+        res.exact = true;
+        res.which = at_hi;
+        return res;
+      }
     }
     save();
   }
-  // t* in (lo, hi]. It is exactly hi when some system hits hi and none has a contact
-  // in the open (lo, hi). An isolated system's only candidate r is in (lo, hi]: it hits
-  // hi exactly when f(hi) = 0 (r qualifies), and has a contact inside otherwise.
+  // t* in (lo, hi], and exactly hi when exact_at_hi says so.
   res.lo = lo;
   res.hi = hi;
   res.which = active;
-  std::vector<size_t> at_hi, inside;
   try {
-    for (size_t i : active) {
-      const bool hit = isolated[i] ? iso[i].sign_at(hi) == 0 : sys[i].hits(hi);
-      if (hit) at_hi.push_back(i);
-      if (isolated[i] ? !hit : sys[i].count_open(lo, hi) > 0) inside.push_back(i);
+    if (exact_at_hi(at_hi)) {
+      res.exact = true;
+      res.lo = hi;
+      res.which = at_hi;
     }
   } catch (const arith::Uncertain &) {
-    return res;  // [lo, hi] stays a valid enclosure; exactness is left undecided
-  }
-  if (!at_hi.empty() && inside.empty()) {
-    res.exact = true;
-    res.lo = hi;
-    res.which = at_hi;
+    // [lo, hi] stays a valid enclosure; exactness is left undecided
   }
   return res;
 }
