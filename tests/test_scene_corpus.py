@@ -43,18 +43,11 @@ def read(path):
         return json.load(fh, parse_float=Decimal)
 
 
-def min_distance_of(doc):
-    """options.min_distance of a scene file (our optional extension), as the keyword."""
-    md = doc.get("options", {}).get("min_distance")
-    return {} if md is None else {"min_distance": str(md)}
-
-
 def run(path, **kw):
     doc = read(path)
     tol = exact(doc.get("options", {}).get("time_tolerance", "1e-12"))
-    bodies, options, _expect = polyccd.load_scene(str(path))
-    return doc, tol, bodies, polyccd.check(bodies, time_tolerance=tol,
-                                           min_distance=options.min_distance, **kw)
+    bodies, _options, _expect = polyccd.load_scene(str(path))
+    return doc, tol, bodies, polyccd.check(bodies, time_tolerance=tol, **kw)
 
 
 def summary(r):
@@ -135,14 +128,11 @@ def test_polyccd_meets_expectation(path):
 def test_threads_and_broad_phases_agree(path):
     _, tol, bodies, res = run(path)
     base = summary(res)
-    md = min_distance_of(read(path))
     for kw in ({"threads": 2}, {"broad_phase": "brute"}, {"threads": 2, "broad_phase": "brute"},
                {"broad_phase": "range"}, {"threads": 2, "broad_phase": "range"},
                {"broad_phase": "bvh"}, {"threads": 2, "broad_phase": "bvh"},
                {"threads": 3, "broad_phase": "bvh"}):
-        if md and kw.get("broad_phase") == "range":
-            continue  # range refuses a minimum distance (polyccd.h)
-        other = summary(polyccd.check(bodies, time_tolerance=tol, **kw, **md))
+        other = summary(polyccd.check(bodies, time_tolerance=tol, **kw))
         assert other == base, "%s differs from threads=1, boxes:\n%r\n%r" % (kw, other, base)
 
 
@@ -154,10 +144,9 @@ def test_pair_call_equals_scene_call(path):
     doc, tol, bodies, base = run(path)
     if len(bodies) != 2:
         pytest.skip("a scene of %d bodies (check() uses a pccd_scene)" % len(bodies))
-    md = min_distance_of(doc)
     for threads in (1, 2, 3):
-        got = polyccd.check(bodies, time_tolerance=tol, threads=threads, **md)
-        via = scene_call(bodies, time_tolerance=tol, threads=threads, **md)
+        got = polyccd.check(bodies, time_tolerance=tol, threads=threads)
+        via = scene_call(bodies, time_tolerance=tol, threads=threads)
         assert summary(got) == summary(via) == summary(base), threads
         assert got.stats == via.stats, threads
 
@@ -214,9 +203,6 @@ def test_every_pair_and_contact_against_the_oracle(path):
     of that pair, and every reported contact really touches at that time; for two meshes
     (t* > 0) and two sphere sets the contacts are exactly the oracle's touching set."""
     doc, tol, bodies, res = run(path)
-    if min_distance_of(doc):
-        pytest.skip("the body oracle has no minimum distance (tests/test_min_distance.py "
-                    "checks those answers against tests/oracle/oracle_distance.py)")
     ans = oracle_body.solve_scene(doc)
     assert sorted(p.bodies for p in res.pairs) == sorted(ans.pairs), (
         [p.bodies for p in res.pairs], sorted(ans.pairs))
