@@ -66,13 +66,43 @@ Point_traj<Interval> Pair_ctx::traj_i(int s, uint32_t k) const {
   return x;
 }
 
+Point_traj<Rational> Pair_ctx::own_q(int s, uint32_t k) const {
+  const Motion_data &m = *side(s).mo;
+  const motion::Point3_q &p = side(s).point(k);
+  Point_traj<Rational> x;
+  for (int i = 0; i < 3; ++i) {
+    Poly_q v = m.O[i];
+    for (int j = 0; j < 3; ++j)
+      if (sgn(p[j]) != 0) v = v + m.Rn[i][j] * Poly_q::constant(p[j]);
+    x[i] = std::move(v);
+  }
+  return x;
+}
+
+Point_traj<Interval> Pair_ctx::own_i(int s, uint32_t k) const {
+  const Motion_data &m = *side(s).mo;
+  const motion::Point3_q &p = side(s).point(k);
+  Interval q[3];
+  for (int j = 0; j < 3; ++j) q[j] = arith::enclose(p[j]);
+  Point_traj<Interval> x;
+  for (int i = 0; i < 3; ++i) {
+    Poly<Interval> v = m.O_i[i];
+    for (int j = 0; j < 3; ++j)
+      if (!q[j].is_point_zero()) v = v + m.Rn_i[i][j] * Poly<Interval>::constant(q[j]);
+    x[i] = std::move(v);
+  }
+  return x;
+}
+
 std::array<uint32_t, 3> Pair_ctx::triangle(int s, uint32_t t) const {
   return side(s).mesh->triangles()[t];
 }
 
 template <class NT>
 pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p, bool scaled) const {
+  std::vector<std::pair<int, uint32_t>> points;  // (side, index) of q.p's points
   auto traj = [&](int s, uint32_t k) {
+    points.push_back({s, k});
     if constexpr (std::is_same_v<NT, Rational>) return traj_q(s, k);
     else return traj_i(s, k);
   };
@@ -122,6 +152,15 @@ pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p, bool scaled) const {
     const Common &c = init();
     if constexpr (std::is_same_v<NT, Rational>) q.scale = c.D;
     else q.scale = c.Di;
+  }
+  // Each side's points carry the other side's W: when one W is not a constant, the
+  // systems take same-body differences from the own trajectories (pred::Query_data::own;
+  // a static obstacle's edges and normals are then constants, not multiples of W).
+  if (A_.mo->W.degree() >= 1 || B_.mo->W.degree() >= 1) {
+    for (const auto &[s, k] : points) {
+      if constexpr (std::is_same_v<NT, Rational>) q.own.push_back(own_q(s, k));
+      else q.own.push_back(own_i(s, k));
+    }
   }
   if constexpr (std::is_same_v<NT, Rational>) {
     // Each side's points carry the other side's W (pred::Query_data::positive_factors).

@@ -53,6 +53,10 @@ class Pair_ctx {
   // The scaled trajectory of point k of side s (exact, and coefficient enclosures).
   motion::Point_traj<Rational> traj_q(int s, uint32_t k) const;
   motion::Point_traj<Interval> traj_i(int s, uint32_t k) const;
+  // The same point on its side's own homogeneous motion, Rn_s p + O_s: the scaled
+  // trajectory divided by the other side's W (pred::Query_data::own).
+  motion::Point_traj<Rational> own_q(int s, uint32_t k) const;
+  motion::Point_traj<Interval> own_i(int s, uint32_t k) const;
 
   // Solves one primitive pair (not TT).
   pred::Contact_result solve(const Prim_pair &p, const pred::Solve_options &opt) const;

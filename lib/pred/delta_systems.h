@@ -53,21 +53,26 @@ void add_segments_at_delta(Feature_set<NT> &set, const Point_traj<NT> &a0, const
 
 // The systems of a VERTEX_FACE, EDGE_EDGE, VERTEX_EDGE or VERTEX_VERTEX query at
 // minimum separation delta (r2d2 = delta^2 D^2), in the order of the kind's features.
+// own: the own trajectories (query_systems.h, Query_data::own) or null; used by the
+// ball systems' same-body differences (the segment system's conditions compare s and
+// u with |n|^2, which would change by different factors: it takes the points).
 template <class NT>
 void add_delta_systems(Feature_set<NT> &s, int kind, const std::vector<Point_traj<NT>> &p,
-                       const Poly<NT> &r2d2) {
+                       const Poly<NT> &r2d2, const std::vector<Point_traj<NT>> *own = nullptr) {
+  auto o = [&](int i) { return own ? &(*own)[i] : nullptr; };
   auto ball_vertex = [&](int c, int v) {
     const Feature f{VERTEX_VERTEX, {{c, v, -1, -1}}};
     add_ball_vertex(s, p[c], p[v], r2d2, v, &f);
   };
   auto ball_edge = [&](int c, int e0, int e1) {
     const Feature f{VERTEX_EDGE, {{c, e0, e1, -1}}};
-    add_ball_edge(s, p[c], p[e0], p[e1], r2d2, e0, e1, &f);
+    add_ball_edge(s, p[c], p[e0], p[e1], r2d2, e0, e1, &f, o(e0), o(e1));
   };
   switch (kind) {
     case VERTEX_FACE: {
       const Feature f{VERTEX_FACE, {{0, 1, 2, 3}}};
-      add_ball_face(s, p[0], {{&p[1], &p[2], &p[3]}}, r2d2, &f);
+      const std::array<const Point_traj<NT> *, 3> fo{{o(1), o(2), o(3)}};
+      add_ball_face(s, p[0], {{&p[1], &p[2], &p[3]}}, r2d2, &f, own ? &fo : nullptr);
       for (int i = 0; i < 3; ++i) ball_edge(0, 1 + i, 1 + (i + 1) % 3);
       for (int i = 1; i <= 3; ++i) ball_vertex(0, i);
       break;

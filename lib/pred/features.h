@@ -124,14 +124,28 @@ void add_vertex_vertex(Feature_set<NT> &set, const Point_traj<NT> &a, const Poin
   add_system(set, feat, all_zero ? K::zero_f : K::roots, f, {});
 }
 
+// Own trajectories (Query_data::own): the points of one body may all carry one common
+// factor c(t) > 0 (a body pair's side is multiplied by the other side's W). Differences
+// of points of the same body are then taken between their own trajectories (p / c):
+// every polynomial below is homogeneous in each such difference, so it changes by a
+// positive factor (the same one for a system's f, and the same one for the two sides of
+// each inequality), and its degree drops by deg c per difference (a static obstacle's
+// face normal becomes a constant). `o...` arguments: the own trajectories of the points
+// of that feature (null: the points themselves).
+template <class NT>
+const Point_traj<NT> &own_or(const Point_traj<NT> *own, const Point_traj<NT> &p) {
+  return own ? *own : p;
+}
+
 // v inside the open segment (e0, e1): v - e0 parallel to e1 - e0, strictly between.
 template <class NT>
 void add_vertex_edge(Feature_set<NT> &set, const Point_traj<NT> &v, const Point_traj<NT> &e0,
-                     const Point_traj<NT> &e1, int iv, int i0, int i1) {
+                     const Point_traj<NT> &e1, int iv, int i0, int i1,
+                     const Point_traj<NT> *oe0 = nullptr, const Point_traj<NT> *oe1 = nullptr) {
   using K = typename System<NT>::Kind;
   Feature feat{VERTEX_EDGE, {{iv, i0, i1, -1}}};
   if (!set.wants(feat)) return skip_feature(set, feat);
-  auto e = e1 - e0;
+  auto e = own_or(oe1, e1) - own_or(oe0, e0);
   auto u = motion::cross(e, v - e0);
   Poly<NT> f;
   bool all_zero = false;
@@ -158,29 +172,34 @@ Poly<NT> edge_edge_polynomial(const Point_traj<NT> &a0, const Point_traj<NT> &a1
 // every condition fail, as it must).
 template <class NT>
 void add_vertex_face(Feature_set<NT> &set, const Point_traj<NT> &v,
-                     const std::array<const Point_traj<NT> *, 3> &fv, const std::array<int, 4> &idx) {
+                     const std::array<const Point_traj<NT> *, 3> &fv, const std::array<int, 4> &idx,
+                     const std::array<const Point_traj<NT> *, 3> *fo = nullptr) {
   using K = typename System<NT>::Kind;
   Feature feat{VERTEX_FACE, idx};
   if (!set.wants(feat)) return skip_feature(set, feat);
-  auto n = motion::cross(*fv[1] - *fv[0], *fv[2] - *fv[0]);
-  Poly<NT> f = vertex_face_polynomial(v, fv);
+  const std::array<const Point_traj<NT> *, 3> &o = fo ? *fo : fv;
+  auto n = motion::cross(*o[1] - *o[0], *o[2] - *o[0]);
+  Poly<NT> f = fo ? motion::dot(n, v - *fv[0]) : vertex_face_polynomial(v, fv);
   std::vector<Poly<NT>> g;
   for (int i = 0; i < 3; ++i)
-    g.push_back(motion::dot(n, motion::cross(*fv[(i + 1) % 3] - *fv[i], v - *fv[i])));
+    g.push_back(motion::dot(n, motion::cross(*o[(i + 1) % 3] - *o[i], v - *fv[i])));
   add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f, std::move(g));
 }
 
 // Open segments (a0, a1) and (b0, b1) cross at one point: coplanar, not parallel, b0
 // and b1 strictly on opposite sides of line a, a0 and a1 strictly on opposite sides
 // of line b (sides measured along n = (a1 - a0) x (b1 - b0)).
+// With own trajectories (o: a0, a1, b0, b1), f = ((a1 - a0) x (b0 - a0)) . (b1 - b0),
+// the same determinant as edge_edge_polynomial's (b1 - a0 = (b1 - b0) + (b0 - a0)).
 template <class NT>
 void add_edge_edge(Feature_set<NT> &set, const Point_traj<NT> &a0, const Point_traj<NT> &a1,
-                   const Point_traj<NT> &b0, const Point_traj<NT> &b1) {
+                   const Point_traj<NT> &b0, const Point_traj<NT> &b1,
+                   const std::array<const Point_traj<NT> *, 4> *o = nullptr) {
   using K = typename System<NT>::Kind;
   Feature feat{EDGE_EDGE, {{0, 1, 2, 3}}};
   if (!set.wants(feat)) return skip_feature(set, feat);
-  auto ea = a1 - a0, eb = b1 - b0;
-  Poly<NT> f = edge_edge_polynomial(a0, a1, b0, b1);
+  auto ea = o ? *(*o)[1] - *(*o)[0] : a1 - a0, eb = o ? *(*o)[3] - *(*o)[2] : b1 - b0;
+  Poly<NT> f = o ? motion::dot(motion::cross(ea, b0 - a0), eb) : edge_edge_polynomial(a0, a1, b0, b1);
   auto n = motion::cross(ea, eb);
   Poly<NT> sb0 = motion::dot(n, motion::cross(ea, b0 - a0));
   Poly<NT> sb1 = motion::dot(n, motion::cross(ea, b1 - a0));
@@ -216,11 +235,12 @@ void add_ball_vertex(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_
 template <class NT>
 void add_ball_edge(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_traj<NT> &e0,
                    const Point_traj<NT> &e1, const Poly<NT> &r2d2, int i0, int i1,
-                   const Feature *label = nullptr) {
+                   const Feature *label = nullptr, const Point_traj<NT> *oe0 = nullptr,
+                   const Point_traj<NT> *oe1 = nullptr) {
   using K = typename System<NT>::Kind;
   const Feature feat = label ? *label : Feature{SPHERE_EDGE, {{0, i0, i1, -1}}};
   if (!set.wants(feat)) return skip_feature(set, feat);
-  auto e = e1 - e0;
+  auto e = own_or(oe1, e1) - own_or(oe0, e0);
   auto u = motion::cross(e, c - e0);
   Poly<NT> f = motion::dot(u, u) - r2d2 * motion::dot(e, e);
   add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f,
@@ -230,16 +250,18 @@ void add_ball_edge(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_tr
 template <class NT>
 void add_ball_face(Feature_set<NT> &set, const Point_traj<NT> &c,
                    const std::array<const Point_traj<NT> *, 3> &fv, const Poly<NT> &r2d2,
-                   const Feature *label = nullptr) {
+                   const Feature *label = nullptr,
+                   const std::array<const Point_traj<NT> *, 3> *fo = nullptr) {
   using K = typename System<NT>::Kind;
   const Feature feat = label ? *label : Feature{SPHERE_FACE, {{0, 1, 2, 3}}};
   if (!set.wants(feat)) return skip_feature(set, feat);
-  auto n = motion::cross(*fv[1] - *fv[0], *fv[2] - *fv[0]);
+  const std::array<const Point_traj<NT> *, 3> &o = fo ? *fo : fv;
+  auto n = motion::cross(*o[1] - *o[0], *o[2] - *o[0]);
   Poly<NT> h = motion::dot(n, c - *fv[0]);
   Poly<NT> f = h * h - r2d2 * motion::dot(n, n);
   std::vector<Poly<NT>> g;
   for (int i = 0; i < 3; ++i)
-    g.push_back(motion::dot(n, motion::cross(*fv[(i + 1) % 3] - *fv[i], c - *fv[i])));
+    g.push_back(motion::dot(n, motion::cross(*o[(i + 1) % 3] - *o[i], c - *fv[i])));
   add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f, std::move(g));
 }
 

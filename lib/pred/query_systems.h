@@ -21,6 +21,14 @@ namespace pccd::pred {
 // closed primitives are within distance delta (delta_systems.h). Scaled by D like radii.
 // (Ball kinds take delta into their radii instead.)
 //
+// `own`: empty, or one trajectory per point with p[i] = c_i(t) own[i], c_i > 0 on
+// [0, 1] common to all the points of one body (a body pair multiplies each side by the
+// other side's W; own is the side's own homogeneous trajectory). Differences of points
+// of the same body use own (features.h): the systems change by positive factors only,
+// and a static body's edges and normals become constants. The kinds' point order puts
+// one body's points before the other's (VERTEX_FACE: vertex | face; EDGE_EDGE: edge a |
+// edge b; SPHERE_TRIANGLE: ball | triangle), and only same-body differences use own.
+//
 // `positive_factors`: exact polynomials > 0 on [0, 1] that may divide the systems'
 // polynomials (a body query's motion denominators W_A, W_B: the side that does not
 // move is multiplied by the other's W, so a static face's normal carries W^2). The
@@ -35,6 +43,7 @@ struct Query_data {
   bool has_delta = false;
   NT delta = arith::from_int<NT>(0);
   std::vector<Poly<arith::Rational>> positive_factors;
+  std::vector<Point_traj<NT>> own;
 };
 
 // r^2 D^2 as a polynomial.
@@ -53,27 +62,35 @@ Feature_set<NT> build_systems(const Query_data<NT> &q, const std::vector<Feature
   s.only = only;
   if (!q.positive_factors.empty()) s.positive = &q.positive_factors;
   const auto &p = q.p;
+  // Own trajectories of point i (null without them).
+  const bool has_own = q.own.size() == p.size();
+  auto o = [&](int i) { return has_own ? &q.own[i] : nullptr; };
+  const std::array<const Point_traj<NT> *, 3> face_own{{o(1), o(2), o(3)}};
+  const std::array<const Point_traj<NT> *, 4> edges_own{{o(0), o(1), o(2), o(3)}};
   if (q.has_delta) {
-    add_delta_systems(s, q.kind, p, radius_squared(q.delta, q.scale));
+    add_delta_systems(s, q.kind, p, radius_squared(q.delta, q.scale), has_own ? &q.own : nullptr);
     return s;
   }
+  auto vertex_edge = [&](int v, int e0, int e1) {
+    add_vertex_edge(s, p[v], p[e0], p[e1], v, e0, e1, o(e0), o(e1));
+  };
   switch (q.kind) {
     case VERTEX_FACE:
-      add_vertex_face(s, p[0], {{&p[1], &p[2], &p[3]}}, {{0, 1, 2, 3}});
-      for (int i = 0; i < 3; ++i) add_vertex_edge(s, p[0], p[1 + i], p[1 + (i + 1) % 3], 0, 1 + i, 1 + (i + 1) % 3);
+      add_vertex_face(s, p[0], {{&p[1], &p[2], &p[3]}}, {{0, 1, 2, 3}}, has_own ? &face_own : nullptr);
+      for (int i = 0; i < 3; ++i) vertex_edge(0, 1 + i, 1 + (i + 1) % 3);
       for (int i = 1; i <= 3; ++i) add_vertex_vertex(s, p[0], p[i], 0, i);
       break;
     case EDGE_EDGE:
-      add_edge_edge(s, p[0], p[1], p[2], p[3]);
-      add_vertex_edge(s, p[0], p[2], p[3], 0, 2, 3);
-      add_vertex_edge(s, p[1], p[2], p[3], 1, 2, 3);
-      add_vertex_edge(s, p[2], p[0], p[1], 2, 0, 1);
-      add_vertex_edge(s, p[3], p[0], p[1], 3, 0, 1);
+      add_edge_edge(s, p[0], p[1], p[2], p[3], has_own ? &edges_own : nullptr);
+      vertex_edge(0, 2, 3);
+      vertex_edge(1, 2, 3);
+      vertex_edge(2, 0, 1);
+      vertex_edge(3, 0, 1);
       for (int i = 0; i < 2; ++i)
         for (int j = 2; j < 4; ++j) add_vertex_vertex(s, p[i], p[j], i, j);
       break;
     case VERTEX_EDGE:
-      add_vertex_edge(s, p[0], p[1], p[2], 0, 1, 2);
+      vertex_edge(0, 1, 2);
       add_vertex_vertex(s, p[0], p[1], 0, 1);
       add_vertex_vertex(s, p[0], p[2], 0, 2);
       break;
@@ -94,8 +111,11 @@ Feature_set<NT> build_systems(const Query_data<NT> &q, const std::vector<Feature
     }
     case SPHERE_TRIANGLE: {
       Poly<NT> r2d2 = radius_squared(q.radius[0], q.scale);
-      add_ball_face(s, p[0], {{&p[1], &p[2], &p[3]}}, r2d2);
-      for (int i = 0; i < 3; ++i) add_ball_edge(s, p[0], p[1 + i], p[1 + (i + 1) % 3], r2d2, 1 + i, 1 + (i + 1) % 3);
+      add_ball_face(s, p[0], {{&p[1], &p[2], &p[3]}}, r2d2, nullptr, has_own ? &face_own : nullptr);
+      for (int i = 0; i < 3; ++i) {
+        const int e0 = 1 + i, e1 = 1 + (i + 1) % 3;
+        add_ball_edge(s, p[0], p[e0], p[e1], r2d2, e0, e1, nullptr, o(e0), o(e1));
+      }
       for (int i = 1; i <= 3; ++i) add_ball_vertex(s, p[0], p[i], r2d2, i);
       break;
     }

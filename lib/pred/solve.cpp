@@ -102,6 +102,8 @@ Query_data<Interval> restricted(const Query_data<Interval> &q, double u) {
   const Interval zero(0.0), end(u);
   for (auto &p : r.p)
     for (int a = 0; a < 3; ++a) p[a] = poly::reparametrize(p[a], zero, end);
+  for (auto &p : r.own)
+    for (int a = 0; a < 3; ++a) p[a] = poly::reparametrize(p[a], zero, end);
   if (!r.scale.c.empty()) r.scale = poly::reparametrize(r.scale, zero, end);
   return r;
 }
@@ -126,6 +128,18 @@ Query_data<Rational> integral(Query_data<Rational> q) {
         for (Rational &c : pt[a].c) c *= l;
     for (Rational &r : q.radius) r *= l;
     q.delta *= l;
+  }
+  // The own trajectories by their own common denominator: they enter the systems only
+  // through differences of two of them (query_systems.h), each scaled alike.
+  arith::Integer L_own = 1;
+  for (const auto &pt : q.own)
+    for (int a = 0; a < 3; ++a)
+      for (const Rational &c : pt[a].c) mpz_lcm(L_own.get_mpz_t(), L_own.get_mpz_t(), c.get_den_mpz_t());
+  if (L_own != 1) {
+    const Rational l(L_own);
+    for (auto &pt : q.own)
+      for (int a = 0; a < 3; ++a)
+        for (Rational &c : pt[a].c) c *= l;
   }
   return q;
 }
