@@ -21,6 +21,7 @@ import pytest
 
 import oracle_distance as OD
 import polyccd as P
+from test_range import grid_plate  # the square [0, n]^2 at z = 0, 2 n^2 triangles
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus" / "min-distance"
 KINDS = ("vertex-face", "edge-edge", "vertex-edge", "vertex-vertex")
@@ -346,17 +347,6 @@ def test_tiny_scenes_at_a_tiny_delta(k):
     assert_phases_equal_brute(bodies, delta, ("tiny", k))
 
 
-def plate(n):
-    """The square [0, n] x [0, n] at z = 0 as 2 n^2 triangles."""
-    v = [[i, j, 0] for j in range(n + 1) for i in range(n + 1)]
-    t = []
-    for j in range(n):
-        for i in range(n):
-            a = j * (n + 1) + i
-            t += [[a, a + 1, a + n + 2], [a, a + n + 2, a + n + 1]]
-    return P.Mesh(v, t)
-
-
 def cube(c, h):
     """The cube of centre c and half side h (12 triangles, test_scene_property's box)."""
     v = [[c[0] + h * (2 * (i & 1) - 1), c[1] + h * (2 * ((i >> 1) & 1) - 1),
@@ -383,7 +373,7 @@ def test_mesh_near_miss_decided_by_delta(delta, expect):
     equals brute force."""
     moving = P.Body(cube([F(13, 4), F(11, 4), F(5, 4)], F(1, 4)),
                     P.Motion.linear([0, 0, 0], [0, 0, GAP - 1]), name="cube")
-    bodies = [P.Body(plate(6), name="plate"), moving]
+    bodies = [P.Body(grid_plate(6), name="plate"), moving]
     r = assert_phases_equal_brute(bodies, delta, "plate", threads=(1, 3) if delta else (1,))
     assert r[0] == (expect is not None)
     if expect is not None:

@@ -130,6 +130,22 @@ def poly_answer(r):
 FAST_NS = 50_000
 
 
+def time_fcl(fcl, bvh, start, end, reqs, repeat, row):
+    """FCL's continuous collision of the mesh (at rest) against its copy moving from the
+    pose start to end, with each request of reqs ("FCL-CA", "FCL-naive"): row[name] is the
+    time in ns, row[name + " ans"] the answer (collides, time of contact)."""
+    oA = fcl.CollisionObject(bvh, fcl.Transform())
+    oB = fcl.CollisionObject(bvh, fcl.Transform(*start))
+    for name in ("FCL-CA", "FCL-naive"):
+        req = reqs[name]
+
+        def run():
+            res = fcl.ContinuousCollisionResult()
+            fcl.continuousCollide(oA, fcl.Transform(), oB, fcl.Transform(*end), req, res)
+            return res.is_collide, res.time_of_contact
+        row[name], row[name + " ans"] = timed(run, repeat)
+
+
 def timed(fn, repeat):
     """(min ns per call, first call's output): BB.timed, then for a call under FAST_NS
     also the per-call mean of `repeat` batches of about 1 ms (see Timing above)."""
@@ -202,18 +218,7 @@ def mesh_rows(polyccd, fcl, label, opts, scaling):
         try:
             time_polyccd(polyccd, bodies, row, opts)
             if fcl:
-                oA = fcl.CollisionObject(bvh, fcl.Transform())
-                oB = fcl.CollisionObject(bvh, fcl.Transform(*start))
-                for name in ("FCL-CA", "FCL-naive"):
-                    req = reqs[mt][name]
-
-                    def run():
-                        res = fcl.ContinuousCollisionResult()
-                        fcl.continuousCollide(oA, fcl.Transform(), oB, fcl.Transform(*end), req, res)
-                        return res.is_collide, res.time_of_contact
-                    ns, out = timed(run, opts.repeat)
-                    row[name] = ns
-                    row[name + " ans"] = out
+                time_fcl(fcl, bvh, start, end, reqs[mt], opts.repeat, row)
         finally:
             gc.enable()
         rows.append(row)
@@ -258,16 +263,7 @@ def delta_rows(polyccd, fcl, A, mesh, E, opts, reqs, bvh):
             row["boxes"], rb = time_poly(polyccd, bodies, 1, 1, "boxes", min_distance=D)
             row["same"] = poly_answer(rb)[0] == row["ans"]
             if fcl:
-                oA = fcl.CollisionObject(bvh, fcl.Transform())
-                oB = fcl.CollisionObject(bvh, fcl.Transform(*start))
-                for name in ("FCL-CA", "FCL-naive"):
-                    req = reqs[mt][name]
-
-                    def run():
-                        res = fcl.ContinuousCollisionResult()
-                        fcl.continuousCollide(oA, fcl.Transform(), oB, fcl.Transform(*end), req, res)
-                        return res.is_collide, res.time_of_contact
-                    row[name], row[name + " ans"] = timed(run, opts.repeat)
+                time_fcl(fcl, bvh, start, end, reqs[mt], opts.repeat, row)
         finally:
             gc.enable()
         rows.append(row)
