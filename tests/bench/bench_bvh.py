@@ -130,6 +130,19 @@ def poly_answer(r):
 FAST_NS = 50_000
 
 
+def stop_short(polyccd, E, lo):
+    """The hit translation x0 = 1.5 E -> (x0 - E) stopped 2^-20 E before the x it has at
+    time lo (the hit's first contact, or its first time within delta): a near miss.
+    (motion, FCL start, FCL end, FCL motion type, the end x)."""
+    x0 = 1.5 * E
+    xc = Fraction(x0) - Fraction(lo) * Fraction(E)  # >= x at time lo
+    x1 = float(xc + Fraction(E) * Fraction(1, 2 ** 20))
+    while Fraction(x1) <= xc:
+        x1 = math.nextafter(x1, math.inf)
+    motion = polyccd.Motion.linear([x0, 0, 0], [x1, 0, 0])
+    return motion, (np.array([x0, 0.0, 0.0]),), (np.array([x1, 0.0, 0.0]),), "CCDM_TRANS", x1
+
+
 def time_fcl(fcl, bvh, start, end, reqs, repeat, row):
     """FCL's continuous collision of the mesh (at rest) against its copy moving from the
     pose start to end, with each request of reqs ("FCL-CA", "FCL-naive"): row[name] is the
@@ -202,14 +215,7 @@ def mesh_rows(polyccd, fcl, label, opts, scaling):
         if v == "near":
             m_hit = poses(E, "hit")[0]
             r = polyccd.check([A, polyccd.Body(mesh, m_hit, name="B")])
-            x0 = 1.5 * E
-            xc = Fraction(x0) - Fraction(r.first_contact.lo) * Fraction(E)   # >= the exact contact x
-            x1 = float(xc + Fraction(E) * Fraction(1, 2 ** 20))
-            while Fraction(x1) <= xc:
-                x1 = math.nextafter(x1, math.inf)
-            motion = polyccd.Motion.linear([x0, 0, 0], [x1, 0, 0])
-            start, end, mt = (np.array([x0, 0.0, 0.0]),), (np.array([x1, 0.0, 0.0]),), "CCDM_TRANS"
-            hit_x = x1
+            motion, start, end, mt, hit_x = stop_short(polyccd, E, r.first_contact.lo)
         else:
             motion, start, end, mt = poses(E, v)
         bodies = [A, polyccd.Body(mesh, motion, name="B")]
@@ -242,13 +248,7 @@ def delta_rows(polyccd, fcl, A, mesh, E, opts, reqs, bvh):
         if v == "near-D":
             m_hit = poses(E, "hit")[0]
             r = polyccd.check([A, polyccd.Body(mesh, m_hit, name="B")], min_distance=D)
-            x0 = 1.5 * E
-            xc = Fraction(x0) - Fraction(r.first_contact.lo) * Fraction(E)  # >= x at the delta time
-            x1 = float(xc + Fraction(E) * Fraction(1, 2 ** 20))
-            while Fraction(x1) <= xc:
-                x1 = math.nextafter(x1, math.inf)
-            motion = polyccd.Motion.linear([x0, 0, 0], [x1, 0, 0])
-            start, end, mt = (np.array([x0, 0.0, 0.0]),), (np.array([x1, 0.0, 0.0]),), "CCDM_TRANS"
+            motion, start, end, mt, _ = stop_short(polyccd, E, r.first_contact.lo)
         else:
             motion, start, end, mt = poses(E, v)
         bodies = [A, polyccd.Body(mesh, motion, name="B")]
