@@ -66,6 +66,26 @@ Point_traj<Interval> Pair_ctx::traj_i(int s, uint32_t k) const {
   return x;
 }
 
+// Rn_s v (exact, or its enclosure): a body-frame direction v turned by side s's motion
+// (times W_s).
+Point_traj<Rational> Pair_ctx::rotate(int s, const motion::Point3_q &v, Rational) const {
+  const Motion_data &m = *side(s).mo;
+  Point_traj<Rational> x;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (sgn(v[j]) != 0) x[i] = x[i] + m.Rn[i][j] * Poly_q::constant(v[j]);
+  return x;
+}
+
+Point_traj<Interval> Pair_ctx::rotate(int s, const motion::Point3_q &v, Interval) const {
+  const Motion_data &m = *side(s).mo;
+  Point_traj<Interval> x;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (sgn(v[j]) != 0) x[i] = x[i] + m.Rn_i[i][j] * Poly<Interval>::constant(arith::enclose(v[j]));
+  return x;
+}
+
 Point_traj<Rational> Pair_ctx::own_q(int s, uint32_t k) const {
   const Motion_data &m = *side(s).mo;
   const motion::Point3_q &p = side(s).point(k);
@@ -160,6 +180,19 @@ pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p, bool scaled) const {
     for (const auto &[s, k] : points) {
       if constexpr (std::is_same_v<NT, Rational>) q.own.push_back(own_q(s, k));
       else q.own.push_back(own_i(s, k));
+    }
+    // The face's normal Rn_s n0 (n0 its body-frame normal, in the order of its points):
+    // the cross product of its own edges is W_s Rn_s n0 (cof(Rn) = W Rn for Rn = W R).
+    if (q.kind == pred::VERTEX_FACE || q.kind == pred::SPHERE_TRIANGLE) {
+      const int fs = points[1].first;
+      const motion::Point3_q &p0 = side(fs).point(points[1].second),
+                             &p1 = side(fs).point(points[2].second),
+                             &p2 = side(fs).point(points[3].second);
+      motion::Point3_q e1, e2, n0;
+      for (int a = 0; a < 3; ++a) e1[a] = p1[a] - p0[a], e2[a] = p2[a] - p0[a];
+      for (int a = 0; a < 3; ++a)
+        n0[a] = e1[(a + 1) % 3] * e2[(a + 2) % 3] - e1[(a + 2) % 3] * e2[(a + 1) % 3];
+      q.face_normal.push_back(rotate(fs, n0, NT()));
     }
   }
   if constexpr (std::is_same_v<NT, Rational>) {

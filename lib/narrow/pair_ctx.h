@@ -57,6 +57,10 @@ class Pair_ctx {
   // trajectory divided by the other side's W (pred::Query_data::own).
   motion::Point_traj<Rational> own_q(int s, uint32_t k) const;
   motion::Point_traj<Interval> own_i(int s, uint32_t k) const;
+  // Rn_s v: a body-frame direction on side s's motion (times W_s); the last argument
+  // picks the number type.
+  motion::Point_traj<Rational> rotate(int s, const motion::Point3_q &v, Rational) const;
+  motion::Point_traj<Interval> rotate(int s, const motion::Point3_q &v, Interval) const;
 
   // Solves one primitive pair (not TT).
   pred::Contact_result solve(const Prim_pair &p, const pred::Solve_options &opt) const;

@@ -58,7 +58,8 @@ void add_segments_at_delta(Feature_set<NT> &set, const Point_traj<NT> &a0, const
 // u with |n|^2, which would change by different factors: it takes the points).
 template <class NT>
 void add_delta_systems(Feature_set<NT> &s, int kind, const std::vector<Point_traj<NT>> &p,
-                       const Poly<NT> &r2d2, const std::vector<Point_traj<NT>> *own = nullptr) {
+                       const Poly<NT> &r2d2, const std::vector<Point_traj<NT>> *own = nullptr,
+                       const Point_traj<NT> *normal = nullptr) {
   auto o = [&](int i) { return own ? &(*own)[i] : nullptr; };
   auto ball_vertex = [&](int c, int v) {
     const Feature f{VERTEX_VERTEX, {{c, v, -1, -1}}};
@@ -72,7 +73,7 @@ void add_delta_systems(Feature_set<NT> &s, int kind, const std::vector<Point_tra
     case VERTEX_FACE: {
       const Feature f{VERTEX_FACE, {{0, 1, 2, 3}}};
       const std::array<const Point_traj<NT> *, 3> fo{{o(1), o(2), o(3)}};
-      add_ball_face(s, p[0], {{&p[1], &p[2], &p[3]}}, r2d2, &f, own ? &fo : nullptr);
+      add_ball_face(s, p[0], {{&p[1], &p[2], &p[3]}}, r2d2, &f, own ? &fo : nullptr, normal);
       for (int i = 0; i < 3; ++i) ball_edge(0, 1 + i, 1 + (i + 1) % 3);
       for (int i = 1; i <= 3; ++i) ball_vertex(0, i);
       break;

@@ -131,7 +131,9 @@ void add_vertex_vertex(Feature_set<NT> &set, const Point_traj<NT> &a, const Poin
 // positive factor (the same one for a system's f, and the same one for the two sides of
 // each inequality), and its degree drops by deg c per difference (a static obstacle's
 // face normal becomes a constant). `o...` arguments: the own trajectories of the points
-// of that feature (null: the points themselves).
+// of that feature (null: the points themselves). `normal` (faces, with own
+// trajectories): a positive multiple of their cross product, of lower degree (a moving
+// face's rotated body-frame normal Rn n0 is that cross product divided by W).
 template <class NT>
 const Point_traj<NT> &own_or(const Point_traj<NT> *own, const Point_traj<NT> &p) {
   return own ? *own : p;
@@ -173,12 +175,13 @@ Poly<NT> edge_edge_polynomial(const Point_traj<NT> &a0, const Point_traj<NT> &a1
 template <class NT>
 void add_vertex_face(Feature_set<NT> &set, const Point_traj<NT> &v,
                      const std::array<const Point_traj<NT> *, 3> &fv, const std::array<int, 4> &idx,
-                     const std::array<const Point_traj<NT> *, 3> *fo = nullptr) {
+                     const std::array<const Point_traj<NT> *, 3> *fo = nullptr,
+                     const Point_traj<NT> *normal = nullptr) {
   using K = typename System<NT>::Kind;
   Feature feat{VERTEX_FACE, idx};
   if (!set.wants(feat)) return skip_feature(set, feat);
   const std::array<const Point_traj<NT> *, 3> &o = fo ? *fo : fv;
-  auto n = motion::cross(*o[1] - *o[0], *o[2] - *o[0]);
+  auto n = normal ? *normal : motion::cross(*o[1] - *o[0], *o[2] - *o[0]);
   Poly<NT> f = fo ? motion::dot(n, v - *fv[0]) : vertex_face_polynomial(v, fv);
   std::vector<Poly<NT>> g;
   for (int i = 0; i < 3; ++i)
@@ -251,12 +254,13 @@ template <class NT>
 void add_ball_face(Feature_set<NT> &set, const Point_traj<NT> &c,
                    const std::array<const Point_traj<NT> *, 3> &fv, const Poly<NT> &r2d2,
                    const Feature *label = nullptr,
-                   const std::array<const Point_traj<NT> *, 3> *fo = nullptr) {
+                   const std::array<const Point_traj<NT> *, 3> *fo = nullptr,
+                   const Point_traj<NT> *normal = nullptr) {
   using K = typename System<NT>::Kind;
   const Feature feat = label ? *label : Feature{SPHERE_FACE, {{0, 1, 2, 3}}};
   if (!set.wants(feat)) return skip_feature(set, feat);
   const std::array<const Point_traj<NT> *, 3> &o = fo ? *fo : fv;
-  auto n = motion::cross(*o[1] - *o[0], *o[2] - *o[0]);
+  auto n = normal ? *normal : motion::cross(*o[1] - *o[0], *o[2] - *o[0]);
   Poly<NT> h = motion::dot(n, c - *fv[0]);
   Poly<NT> f = h * h - r2d2 * motion::dot(n, n);
   std::vector<Poly<NT>> g;

@@ -44,6 +44,9 @@ struct Query_data {
   NT delta = arith::from_int<NT>(0);
   std::vector<Poly<arith::Rational>> positive_factors;
   std::vector<Point_traj<NT>> own;
+  // With own, for VERTEX_FACE and SPHERE_TRIANGLE: empty, or the face's normal as a
+  // positive multiple of (own[2] - own[1]) x (own[3] - own[1]) (features.h, `normal`).
+  std::vector<Point_traj<NT>> face_normal;
 };
 
 // r^2 D^2 as a polynomial.
@@ -67,8 +70,9 @@ Feature_set<NT> build_systems(const Query_data<NT> &q, const std::vector<Feature
   auto o = [&](int i) { return has_own ? &q.own[i] : nullptr; };
   const std::array<const Point_traj<NT> *, 3> face_own{{o(1), o(2), o(3)}};
   const std::array<const Point_traj<NT> *, 4> edges_own{{o(0), o(1), o(2), o(3)}};
+  const Point_traj<NT> *normal = has_own && q.face_normal.size() == 1 ? &q.face_normal[0] : nullptr;
   if (q.has_delta) {
-    add_delta_systems(s, q.kind, p, radius_squared(q.delta, q.scale), has_own ? &q.own : nullptr);
+    add_delta_systems(s, q.kind, p, radius_squared(q.delta, q.scale), has_own ? &q.own : nullptr, normal);
     return s;
   }
   auto vertex_edge = [&](int v, int e0, int e1) {
@@ -76,7 +80,8 @@ Feature_set<NT> build_systems(const Query_data<NT> &q, const std::vector<Feature
   };
   switch (q.kind) {
     case VERTEX_FACE:
-      add_vertex_face(s, p[0], {{&p[1], &p[2], &p[3]}}, {{0, 1, 2, 3}}, has_own ? &face_own : nullptr);
+      add_vertex_face(s, p[0], {{&p[1], &p[2], &p[3]}}, {{0, 1, 2, 3}}, has_own ? &face_own : nullptr,
+                      normal);
       for (int i = 0; i < 3; ++i) vertex_edge(0, 1 + i, 1 + (i + 1) % 3);
       for (int i = 1; i <= 3; ++i) add_vertex_vertex(s, p[0], p[i], 0, i);
       break;
@@ -111,7 +116,7 @@ Feature_set<NT> build_systems(const Query_data<NT> &q, const std::vector<Feature
     }
     case SPHERE_TRIANGLE: {
       Poly<NT> r2d2 = radius_squared(q.radius[0], q.scale);
-      add_ball_face(s, p[0], {{&p[1], &p[2], &p[3]}}, r2d2, nullptr, has_own ? &face_own : nullptr);
+      add_ball_face(s, p[0], {{&p[1], &p[2], &p[3]}}, r2d2, nullptr, has_own ? &face_own : nullptr, normal);
       for (int i = 0; i < 3; ++i) {
         const int e0 = 1 + i, e1 = 1 + (i + 1) % 3;
         add_ball_edge(s, p[0], p[e0], p[e1], r2d2, e0, e1, nullptr, o(e0), o(e1));

@@ -104,6 +104,8 @@ Query_data<Interval> restricted(const Query_data<Interval> &q, double u) {
     for (int a = 0; a < 3; ++a) p[a] = poly::reparametrize(p[a], zero, end);
   for (auto &p : r.own)
     for (int a = 0; a < 3; ++a) p[a] = poly::reparametrize(p[a], zero, end);
+  for (auto &p : r.face_normal)
+    for (int a = 0; a < 3; ++a) p[a] = poly::reparametrize(p[a], zero, end);
   if (!r.scale.c.empty()) r.scale = poly::reparametrize(r.scale, zero, end);
   return r;
 }
@@ -130,14 +132,16 @@ Query_data<Rational> integral(Query_data<Rational> q) {
     q.delta *= l;
   }
   // The own trajectories by their own common denominator: they enter the systems only
-  // through differences of two of them (query_systems.h), each scaled alike.
-  arith::Integer L_own = 1;
-  for (const auto &pt : q.own)
-    for (int a = 0; a < 3; ++a)
-      for (const Rational &c : pt[a].c) mpz_lcm(L_own.get_mpz_t(), L_own.get_mpz_t(), c.get_den_mpz_t());
-  if (L_own != 1) {
+  // through differences of two of them (query_systems.h), each scaled alike; and the
+  // face normal by its own (every system is homogeneous in it).
+  for (auto *v : {&q.own, &q.face_normal}) {
+    arith::Integer L_own = 1;
+    for (const auto &pt : *v)
+      for (int a = 0; a < 3; ++a)
+        for (const Rational &c : pt[a].c) mpz_lcm(L_own.get_mpz_t(), L_own.get_mpz_t(), c.get_den_mpz_t());
+    if (L_own == 1) continue;
     const Rational l(L_own);
-    for (auto &pt : q.own)
+    for (auto &pt : *v)
       for (int a = 0; a < 3; ++a)
         for (Rational &c : pt[a].c) c *= l;
   }
