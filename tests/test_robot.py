@@ -585,3 +585,19 @@ def test_bad_urdfs(tmp_path):
         robot.motions([0], [0])
     with pytest.raises(InputError, match=r"^allowed\[0\]:"):
         robot.check([0, 0], [0, 1], allowed=[("base", "nope")])
+
+
+def test_robot_check_takes_limits(tmp_path):
+    """Robot.check and check_path pass limits= to the scene (polyccd.Limits): a work limit
+    below what the segment needs stops it with LimitError, a generous one changes nothing."""
+    robot = load_urdf(write(tmp_path, ARM % ("revolute", "0 0 1")))
+    post = P.Body(box([1.5, -0.05, 0], [1.6, 0.05, 0.5]), name="post")
+    q0, q1 = [-math.pi / 2, 0], [0.3, 0]
+    free = robot.check(q0, q1, [post])
+    assert free.collides
+    with pytest.raises(P.LimitError, match=r"^config\.max_work: the limit of 3 work steps was reached"):
+        robot.check(q0, q1, [post], limits=P.Limits(max_work=3))
+    with pytest.raises(P.LimitError, match=r"^waypoints\[0\] -> waypoints\[1\]: config\.max_work"):
+        robot.check_path([q0, q1], [post], limits=P.Limits(max_work=3))
+    same = robot.check(q0, q1, [post], limits=P.Limits(max_work=10 ** 9))
+    assert same.first_contact == free.first_contact

@@ -192,7 +192,7 @@ class Robot:
 
     def check(self, q0, q1, obstacles=(), *, self_collision=True, allowed=None,
               time_tolerance="1e-12", all_contacts=False, threads=1, broad_phase="auto",
-              min_distance=None):
+              min_distance=None, limits=None):
         """The exact first contact over the segment q0 -> q1 of the robot with the
         obstacles (polyccd.Body, stationary or moving) and, when self_collision, of its
         links with each other except the allowed pairs (an iterable of link-name pairs;
@@ -200,6 +200,7 @@ class Robot:
         pairs skipped (pccd_scene_set_pair_check); obstacle pairs are not checked.
         min_distance: delta >= 0 (pccd_config.min_distance): a contact is the first time
         the checked pairs come within delta (the broad phases grow their boxes by delta).
+        limits: a polyccd.Limits (time, work, cancel, number size) for the whole check.
         Returns a RobotResult (first contact, contacts by link name and feature, joint
         values at the ends of the time enclosure)."""
         from ._scene import Body, check_scene
@@ -232,7 +233,7 @@ class Robot:
             raise InputError("obstacles: nothing to check (one body, no obstacle)")
         r = check_scene(bodies, time_tolerance=time_tolerance, all_contacts=all_contacts,
                         threads=threads, broad_phase=broad_phase, skip_pairs=skip,
-                        min_distance=min_distance)
+                        min_distance=min_distance, limits=limits)
         return RobotResult.of(r, self, q0, q1)
 
     def check_path(self, waypoints, obstacles=(), **options):
@@ -245,8 +246,8 @@ class Robot:
         for s in range(len(w) - 1):
             try:
                 r = self.check(w[s], w[s + 1], obstacles, **options)
-            except InputError as e:
-                raise InputError(f"waypoints[{s}] -> waypoints[{s + 1}]: {e}") from None
+            except InputError as e:  # the same class (LimitError stays one), placed
+                raise type(e)(f"waypoints[{s}] -> waypoints[{s + 1}]: {e}") from None
             if r.collides:
                 return PathResult(s, r)
         return PathResult(None, None)
