@@ -82,6 +82,20 @@ def exact_ball_ball(c1, r1, c2, r2):
     return sum((c1[a] - c2[a]) ** 2 for a in range(3)) <= (F(r1) + F(r2)) ** 2
 
 
+def pinocchio_q(pin, model, robot, angles, k):
+    """Pinocchio's configuration at sample k of the joint angles (name -> array); the
+    second finger follows the first (mimic joint)."""
+    q = pin.neutral(model)
+    for jid in range(1, model.njoints):
+        n = model.names[jid]
+        if n in robot.mimic_joints:
+            leader, mult, off = robot.mimic_joints[n]
+            q[model.joints[jid].idx_q] = mult * angles[leader][k] + off
+        else:
+            q[model.joints[jid].idx_q] = angles[n][k]
+    return q
+
+
 def first_sampled_contact(robot, balls, path, q0, q1, obstacles, pairs):
     """The first sampled time k / SAMPLES at which an exact static test finds a contact
     of one of the pairs, or None: candidate times from Pinocchio's float FK at the joint
@@ -105,15 +119,7 @@ def first_sampled_contact(robot, balls, path, q0, q1, obstacles, pairs):
     links = sorted(balls)
     centre = {link: np.zeros((len(ts), 3)) for link in links}
     for k in range(len(ts)):
-        q = pin.neutral(model)
-        for jid in range(1, model.njoints):
-            n = model.names[jid]
-            if n in robot.mimic_joints:  # the second finger follows the first
-                leader, mult, off = robot.mimic_joints[n]
-                q[model.joints[jid].idx_q] = mult * angles[leader][k] + off
-            else:
-                q[model.joints[jid].idx_q] = angles[n][k]
-        pin.framesForwardKinematics(model, data, q)
+        pin.framesForwardKinematics(model, data, pinocchio_q(pin, model, robot, angles, k))
         for link in links:
             M = data.oMf[model.getFrameId(link)]
             centre[link][k] = M.rotation @ balls[link][0] + M.translation
@@ -264,15 +270,7 @@ def pinocchio_frames(path, robot, q0, q1, ts):
     p = {link: np.zeros((len(ts), 3)) for link in links}
     frame = {link: model.getFrameId(link) for link in links}
     for k in range(len(ts)):
-        q = pin.neutral(model)
-        for jid in range(1, model.njoints):
-            n = model.names[jid]
-            if n in robot.mimic_joints:
-                leader, mult, off = robot.mimic_joints[n]
-                q[model.joints[jid].idx_q] = mult * angles[leader][k] + off
-            else:
-                q[model.joints[jid].idx_q] = angles[n][k]
-        pin.framesForwardKinematics(model, data, q)
+        pin.framesForwardKinematics(model, data, pinocchio_q(pin, model, robot, angles, k))
         for link in links:
             M = data.oMf[frame[link]]
             R[link][k], p[link][k] = M.rotation, M.translation
