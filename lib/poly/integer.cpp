@@ -111,4 +111,9 @@ Poly<Rational> divide_out_positive(const Poly<Rational> &f, const Poly<Rational>
   return primitive_positive(Poly<Rational>(std::move(out)));
 }
 
+Poly<Rational> divide_out_positive(Poly<Rational> f, const std::vector<Poly<Rational>> &ws) {
+  for (const Poly<Rational> &w : ws) f = divide_out_positive(f, w);
+  return f;
+}
+
 }  // namespace pccd::poly

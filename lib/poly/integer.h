@@ -27,6 +27,8 @@ Poly<Rational> prem_positive(Poly<Rational> a, const Poly<Rational> &b);
 // divisor w with integer coefficients, primitive, leaves an integer quotient), so a
 // trial costs little when w is not a factor.
 Poly<Rational> divide_out_positive(const Poly<Rational> &f, const Poly<Rational> &w);
+// The same for each of ws in turn (f itself, unchanged, when ws is empty).
+Poly<Rational> divide_out_positive(Poly<Rational> f, const std::vector<Poly<Rational>> &ws);
 
 // The value of F (integer coefficients, degree n >= 0) at t = p / q (q > 0) scaled to an
 // integer: q^n F(t) = sum c_i p^i q^(n - i), by Horner on the homogenized polynomial.

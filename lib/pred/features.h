@@ -74,10 +74,8 @@ inline bool common_zeros(const std::vector<Poly<arith::Rational>> &ps, Poly<arit
                          bool &all_zero,
                          const std::vector<Poly<arith::Rational>> *positive = nullptr) {
   f = Poly<arith::Rational>();
-  for (Poly<arith::Rational> p : ps) {
-    if (positive)
-      for (const auto &w : *positive) p = poly::divide_out_positive(p, w);
-    f = poly::gcd(f, p);
+  for (const Poly<arith::Rational> &p : ps) {
+    f = poly::gcd(f, positive ? poly::divide_out_positive(p, *positive) : p);
     if (f.degree() == 0) return false;  // a nonzero constant gcd: no common zero at all
   }
   all_zero = f.c.empty();

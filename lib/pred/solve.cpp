@@ -158,20 +158,16 @@ bool no_rational_root(const Poly<Rational> &f) {
   return f.degree() >= 1 && !poly::may_have_rational_root(poly::primitive_positive(f));
 }
 
-// p with the query's positive factors divided out (Query_data::positive_factors): the
-// same roots and signs on [0, 1], fewer factors for the modular test to trip on (a
+// The systems with the query's positive factors divided out (Query_data::positive_factors):
+// the same roots and signs on [0, 1], fewer factors for the modular test to trip on (a
 // factor W_j of a joint's quadratic has a root modulo about half the primes, so a
 // product of a few of them defeats the test) and a lower degree for the exact counts.
-Poly<Rational> without_positive(Poly<Rational> p, const Query_data<Rational> &q) {
-  for (const Poly<Rational> &w : q.positive_factors) p = poly::divide_out_positive(p, w);
-  return p;
-}
-
 void strip_positive(Feature_set<Rational> &set, const Query_data<Rational> &q) {
   if (q.positive_factors.empty()) return;
   for (System<Rational> &s : set.systems) {
-    if (s.kind != System<Rational>::Kind::zero_f) s.f = without_positive(std::move(s.f), q);
-    for (Poly<Rational> &g : s.g) g = without_positive(std::move(g), q);
+    if (s.kind != System<Rational>::Kind::zero_f)
+      s.f = poly::divide_out_positive(std::move(s.f), q.positive_factors);
+    for (Poly<Rational> &g : s.g) g = poly::divide_out_positive(std::move(g), q.positive_factors);
   }
 }
 
@@ -202,7 +198,7 @@ bool first_time_irrational(const Query_data<Rational> &q, const std::vector<Feat
   }
   if (fs.empty()) return false;
   for (const Poly<Rational> &f : fs)
-    if (!no_rational_root(without_positive(f, q))) return false;
+    if (!no_rational_root(poly::divide_out_positive(f, q.positive_factors))) return false;
   return true;
 }
 
