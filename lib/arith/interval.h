@@ -176,6 +176,7 @@ inline bool certainly_positive(const Interval &x) { return x.lo > 0; }
 inline bool certainly_negative(const Interval &x) { return x.hi < 0; }
 inline bool certainly_nonneg(const Interval &x) { return x.lo >= 0; }
 inline bool certainly_nonpos(const Interval &x) { return x.hi <= 0; }
+inline bool certainly_nonzero(const Interval &x) { return x.lo > 0 || x.hi < 0; }
 // Exact zero test: true/false when certain, Uncertain otherwise.
 inline bool is_zero(const Interval &x) { return sign(x) == 0; }
 

@@ -6,8 +6,9 @@ using arith::sign;
 
 namespace {
 
+// arith::certainly_nonzero (interval.h) and its exact twin.
 bool certainly_nonzero(const arith::Rational &x) { return sgn(x) != 0; }
-bool certainly_nonzero(const arith::Interval &x) { return x.lo > 0 || x.hi < 0; }
+using arith::certainly_nonzero;
 
 // v = 0. One component certainly nonzero settles it before any sign is asked of the
 // others: the filter then decides "distinct" even when another component's interval
