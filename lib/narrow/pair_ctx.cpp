@@ -66,51 +66,26 @@ Point_traj<Interval> Pair_ctx::traj_i(int s, uint32_t k) const {
   return x;
 }
 
-// Rn_s v (exact, or its enclosure): a body-frame direction v turned by side s's motion
-// (times W_s).
-Point_traj<Rational> Pair_ctx::rotate(int s, const motion::Point3_q &v, Rational) const {
+template <class NT>
+void Pair_ctx::add_rotated(Point_traj<NT> &x, int s, const motion::Point3_q &v) const {
   const Motion_data &m = *side(s).mo;
-  Point_traj<Rational> x;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (sgn(v[j]) != 0) x[i] = x[i] + m.Rn[i][j] * Poly_q::constant(v[j]);
-  return x;
+    for (int j = 0; j < 3; ++j) {
+      if (sgn(v[j]) == 0) continue;
+      if constexpr (std::is_same_v<NT, Rational>) x[i] = x[i] + m.Rn[i][j] * Poly_q::constant(v[j]);
+      else x[i] = x[i] + m.Rn_i[i][j] * Poly<Interval>::constant(arith::enclose(v[j]));
+    }
 }
 
-Point_traj<Interval> Pair_ctx::rotate(int s, const motion::Point3_q &v, Interval) const {
+template <class NT>
+Point_traj<NT> Pair_ctx::own(int s, uint32_t k) const {
   const Motion_data &m = *side(s).mo;
-  Point_traj<Interval> x;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (sgn(v[j]) != 0) x[i] = x[i] + m.Rn_i[i][j] * Poly<Interval>::constant(arith::enclose(v[j]));
-  return x;
-}
-
-Point_traj<Rational> Pair_ctx::own_q(int s, uint32_t k) const {
-  const Motion_data &m = *side(s).mo;
-  const motion::Point3_q &p = side(s).point(k);
-  Point_traj<Rational> x;
+  Point_traj<NT> x;
   for (int i = 0; i < 3; ++i) {
-    Poly_q v = m.O[i];
-    for (int j = 0; j < 3; ++j)
-      if (sgn(p[j]) != 0) v = v + m.Rn[i][j] * Poly_q::constant(p[j]);
-    x[i] = std::move(v);
+    if constexpr (std::is_same_v<NT, Rational>) x[i] = m.O[i];
+    else x[i] = m.O_i[i];
   }
-  return x;
-}
-
-Point_traj<Interval> Pair_ctx::own_i(int s, uint32_t k) const {
-  const Motion_data &m = *side(s).mo;
-  const motion::Point3_q &p = side(s).point(k);
-  Interval q[3];
-  for (int j = 0; j < 3; ++j) q[j] = arith::enclose(p[j]);
-  Point_traj<Interval> x;
-  for (int i = 0; i < 3; ++i) {
-    Poly<Interval> v = m.O_i[i];
-    for (int j = 0; j < 3; ++j)
-      if (!q[j].is_point_zero()) v = v + m.Rn_i[i][j] * Poly<Interval>::constant(q[j]);
-    x[i] = std::move(v);
-  }
+  add_rotated(x, s, side(s).point(k));
   return x;
 }
 
@@ -177,10 +152,7 @@ pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p, bool scaled) const {
   // systems take same-body differences from the own trajectories (pred::Query_data::own;
   // a static obstacle's edges and normals are then constants, not multiples of W).
   if (A_.mo->W.degree() >= 1 || B_.mo->W.degree() >= 1) {
-    for (const auto &[s, k] : points) {
-      if constexpr (std::is_same_v<NT, Rational>) q.own.push_back(own_q(s, k));
-      else q.own.push_back(own_i(s, k));
-    }
+    for (const auto &[s, k] : points) q.own.push_back(own<NT>(s, k));
     // The face's normal Rn_s n0 (n0 its body-frame normal, in the order of its points):
     // the cross product of its own edges is W_s Rn_s n0 (cof(Rn) = W Rn for Rn = W R).
     if (q.kind == pred::VERTEX_FACE || q.kind == pred::SPHERE_TRIANGLE) {
@@ -188,11 +160,9 @@ pred::Query_data<NT> Pair_ctx::query(const Prim_pair &p, bool scaled) const {
       const motion::Point3_q &p0 = side(fs).point(points[1].second),
                              &p1 = side(fs).point(points[2].second),
                              &p2 = side(fs).point(points[3].second);
-      motion::Point3_q e1, e2, n0;
-      for (int a = 0; a < 3; ++a) e1[a] = p1[a] - p0[a], e2[a] = p2[a] - p0[a];
-      for (int a = 0; a < 3; ++a)
-        n0[a] = e1[(a + 1) % 3] * e2[(a + 2) % 3] - e1[(a + 2) % 3] * e2[(a + 1) % 3];
-      q.face_normal.push_back(rotate(fs, n0, NT()));
+      Point_traj<NT> n;
+      add_rotated(n, fs, pred::cross3(pred::sub(p1, p0), pred::sub(p2, p0)));
+      q.face_normal.push_back(std::move(n));
     }
   }
   if constexpr (std::is_same_v<NT, Rational>) {

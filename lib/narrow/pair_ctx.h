@@ -53,14 +53,6 @@ class Pair_ctx {
   // The scaled trajectory of point k of side s (exact, and coefficient enclosures).
   motion::Point_traj<Rational> traj_q(int s, uint32_t k) const;
   motion::Point_traj<Interval> traj_i(int s, uint32_t k) const;
-  // The same point on its side's own homogeneous motion, Rn_s p + O_s: the scaled
-  // trajectory divided by the other side's W (pred::Query_data::own).
-  motion::Point_traj<Rational> own_q(int s, uint32_t k) const;
-  motion::Point_traj<Interval> own_i(int s, uint32_t k) const;
-  // Rn_s v: a body-frame direction on side s's motion (times W_s); the last argument
-  // picks the number type.
-  motion::Point_traj<Rational> rotate(int s, const motion::Point3_q &v, Rational) const;
-  motion::Point_traj<Interval> rotate(int s, const motion::Point3_q &v, Interval) const;
 
   // Solves one primitive pair (not TT).
   pred::Contact_result solve(const Prim_pair &p, const pred::Solve_options &opt) const;
@@ -72,6 +64,13 @@ class Pair_ctx {
                                                            const pred::Contact_result &r) const;
 
  private:
+  // The same point on its side's own homogeneous motion, Rn_s p + O_s: the scaled
+  // trajectory divided by the other side's W (pred::Query_data::own; NT = Rational or
+  // Interval, exact or coefficient enclosures).
+  template <class NT> motion::Point_traj<NT> own(int s, uint32_t k) const;
+  // x + Rn_s v: a body-frame direction v on side s's motion (times W_s) added to x.
+  template <class NT> void add_rotated(motion::Point_traj<NT> &x, int s, const motion::Point3_q &v) const;
+
   const Moving_body &A_, &B_;
   // The common-denominator trajectories' polynomials, made once by init() (lazily; a
   // pair with no candidate, such as a far-apart one, never makes or frees them).
