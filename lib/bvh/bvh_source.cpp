@@ -41,11 +41,13 @@ class Bvh_source final : public narrow::Candidate_source {
 
   // The triangle pairs whose boxes meet at t = 0. None when the root boxes miss over
   // all of [0, 1] (they hold the bodies at t = 0 too): a far-apart pair costs the two
-  // enclosures of the whole piece, which run() reuses, and one box test. The static
+  // enclosures of the whole piece (boxes::whole_pose: once per body, for all its pairs
+  // and for run()) and one box test. The static
   // test asks for triangles sharing a point whatever the minimum separation, so its
   // boxes are not grown (pairs within delta at t = 0 are run()'s, solved with delta).
   std::vector<Prim_pair> static_candidates(util::Thread_pool &pool) override {
-    if (!roots_meet(whole(), 0.0)) return {};
+    const Pose_piece whole[2] = {boxes::whole_pose(ctx_.side(0)), boxes::whole_pose(ctx_.side(1))};
+    if (!roots_meet(whole, 0.0)) return {};
     const Pose_piece pose[2] = {boxes::enclose_pose(ctx_.side(0), 0.0, 0.0),
                                 boxes::enclose_pose(ctx_.side(1), 0.0, 0.0)};
     std::vector<Node_pair> leaves, wait;
@@ -77,16 +79,6 @@ class Bvh_source final : public narrow::Candidate_source {
   // piece holding t (bvh_source.h, "Coverage").
   const double reach_;
   double feature_ = 0;  // the bodies' typical feature size (final-piece test)
-  bool have_whole_ = false;
-  Pose_piece whole_[2];  // the motions' enclosures over [0, 1], computed once
-
-  const Pose_piece *whole() {
-    if (!have_whole_) {
-      for (int s = 0; s < 2; ++s) whole_[s] = boxes::whole_pose(ctx_.side(s));
-      have_whole_ = true;
-    }
-    return whole_;
-  }
 
   bool roots_meet(const Pose_piece pose[2], double reach) const {
     return boxes::boxes_meet(node_box(0, pose[0], 0, reach), node_box(1, pose[1], 0, 0.0));
@@ -166,7 +158,7 @@ class Bvh_source final : public narrow::Candidate_source {
     ++stats_->pieces;
     Pose_piece pose[2];
     for (int s = 0; s < 2; ++s)
-      pose[s] = depth == 0 ? whole()[s] : boxes::enclose_pose(ctx_.side(s), a, b);
+      pose[s] = depth == 0 ? boxes::whole_pose(ctx_.side(s)) : boxes::enclose_pose(ctx_.side(s), a, b);
     const double spread = std::max(pose[0].spread, pose[1].spread);
     bool final = depth >= kMax_depth || spread <= feature_ || boxes::spread_stalled(depth, spread, parent_spread);
     if (!final && front.size() <= kLeaf_pairs) {
