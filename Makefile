@@ -92,8 +92,15 @@ PREFIX     ?= /usr/local
 LIBDIR     ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
 DESTDIR    ?=
-INSTALL_SUBST := sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' \
-  -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|g' -e 's|@VERSION@|$(VERSION)|g' \
+# The installed pkg-config and CMake files name the library and header directories
+# relative to their own directory (${pcfiledir}, CMAKE_CURRENT_LIST_DIR), so an installed
+# tree still works after it is moved or copied elsewhere as a whole.
+rel_to = $(shell realpath -m --relative-to=$(1) $(2))
+INSTALL_SUBST := sed -e 's|@PC_LIBDIR@|$(call rel_to,$(LIBDIR)/pkgconfig,$(LIBDIR))|g' \
+  -e 's|@PC_INCLUDEDIR@|$(call rel_to,$(LIBDIR)/pkgconfig,$(INCLUDEDIR))|g' \
+  -e 's|@CMAKE_LIBDIR@|$(call rel_to,$(LIBDIR)/cmake/polyccd,$(LIBDIR))|g' \
+  -e 's|@CMAKE_INCLUDEDIR@|$(call rel_to,$(LIBDIR)/cmake/polyccd,$(INCLUDEDIR))|g' \
+  -e 's|@VERSION@|$(VERSION)|g' \
   -e 's|@SOVERSION@|$(PCCD_SOVERSION)|g' -e 's|@LIBS@|$(PCCD_LIBS)|g'
 INSTALLED := $(INCLUDEDIR)/polyccd.h $(LIBDIR)/libpolyccd.so.$(VERSION) $(LIBDIR)/$(SONAME) \
   $(LIBDIR)/libpolyccd.so $(LIBDIR)/pkgconfig/polyccd.pc \

@@ -136,6 +136,28 @@ def test_cmake_find_package(prefix, tmp_path):
     assert out.returncode != 0 and "polyccd" in out.stderr, out.stderr
 
 
+def test_moved_prefix_still_builds_and_links(tmp_path):
+    """polyccd.pc and the CMake package name their directories relative to themselves:
+    an installed tree moved elsewhere as a whole serves pkg-config and find_package from
+    its new place (the old one is gone)."""
+    old, moved = tmp_path / "old", tmp_path / "moved" / "here"
+    _run(["make", "--no-print-directory", "-C", str(ROOT), "install", f"PREFIX={old}"], env=_env())
+    moved.parent.mkdir()
+    shutil.move(str(old), str(moved))
+    pc = _run(["pkg-config", "--cflags", "--libs", "polyccd"],
+              env=_env(PKG_CONFIG_PATH=str(moved / "lib" / "pkgconfig"))).stdout
+    assert str(old) not in pc and str(moved) in pc, pc
+    (tmp_path / "ex.c").write_text(_readme_c_example())
+    _run(["sh", "-c", "cc ex.c $(pkg-config --cflags --libs polyccd) -o ex"], cwd=tmp_path,
+         env=_env(PKG_CONFIG_PATH=str(moved / "lib" / "pkgconfig")))
+    _check_example_run(tmp_path / "ex", moved, _env(LD_LIBRARY_PATH=str(moved / "lib")))
+    _cmake_project(tmp_path / "src")
+    _run(["cmake", "-S", str(tmp_path / "src"), "-B", str(tmp_path / "bld"),
+          f"-DCMAKE_PREFIX_PATH={moved}"], env=_env())
+    _run(["cmake", "--build", str(tmp_path / "bld")], env=_env())
+    _check_example_run(tmp_path / "bld" / "ex", moved, _env())
+
+
 def test_uninstall_removes_every_file(tmp_path):
     _run(["make", "--no-print-directory", "-C", str(ROOT), "install", f"PREFIX={tmp_path}"], env=_env())
     _run(["make", "--no-print-directory", "-C", str(ROOT), "uninstall", f"PREFIX={tmp_path}"], env=_env())
