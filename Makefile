@@ -42,7 +42,7 @@ CPP_TESTS := $(patsubst tests/cpp/%.cpp,$(BUILD)/%,$(sort $(wildcard tests/cpp/t
 # The system packages, one list shared with .ci/run (comments after # dropped).
 APT_PKGS := $(strip $(shell sed 's/\#.*//' .ci/apt-packages.txt))
 
-.PHONY: all deps lib venv install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind tsan
+.PHONY: all deps lib venv wheel install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind tsan
 
 # The entry points of a fresh machine (all, test, demo, bench, valgrind, sanitize) run
 # deps first, then make the rest in a sub-make, so nothing compiles while apt-get is still
@@ -191,6 +191,17 @@ bench: all $(BUILD)/bench_linear $(BUILD)/bench_min_distance
 	$(VPY) tests/bench/bench_online.py
 	$(VPY) tests/bench/bench_distributed.py
 	$(VPY) tests/bench/bench_robot.py
+
+# `make wheel`: the pip wheel of bindings/python (built against this machine's GMP and
+# libstdc++), repaired by auditwheel into a manylinux wheel in build/dist/: GMP is copied
+# into polyccd.libs/ and linked there, so the wheel needs no libgmp on the target machine
+# (glibc and libstdc++ at least as new as this machine's, the tag says which).
+wheel: all
+	rm -rf $(BUILD)/dist
+	$(VENV)/bin/pip wheel -q --no-deps --no-build-isolation -w $(BUILD)/dist/linux ./bindings/python
+	PATH="$(abspath $(VENV))/bin:$$PATH" $(VENV)/bin/auditwheel repair -w $(BUILD)/dist $(BUILD)/dist/linux/polyccd-*.whl
+	PATH="$(abspath $(VENV))/bin:$$PATH" $(VENV)/bin/auditwheel show $(BUILD)/dist/polyccd-*manylinux*.whl
+	@echo "wheel: $$(ls $(abspath $(BUILD))/dist/polyccd-*manylinux*.whl)"
 
 demo: all
 	$(VENV)/bin/polyccd demo
