@@ -42,7 +42,7 @@ CPP_TESTS := $(patsubst tests/cpp/%.cpp,$(BUILD)/%,$(sort $(wildcard tests/cpp/t
 # The system packages, one list shared with .ci/run (comments after # dropped).
 APT_PKGS := $(strip $(shell sed 's/\#.*//' .ci/apt-packages.txt))
 
-.PHONY: all deps lib venv wheel install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind tsan
+.PHONY: all deps lib venv wheel docs install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind tsan
 
 # The entry points of a fresh machine (all, test, demo, bench, valgrind, sanitize) run
 # deps first, then make the rest in a sub-make, so nothing compiles while apt-get is still
@@ -191,6 +191,13 @@ bench: all $(BUILD)/bench_linear $(BUILD)/bench_min_distance
 	$(VPY) tests/bench/bench_online.py
 	$(VPY) tests/bench/bench_distributed.py
 	$(VPY) tests/bench/bench_robot.py
+
+# `make docs`: the reference in build/docs/html (docs/: the Markdown pages, the Python
+# API from the package's docstrings, the C API from include/polyccd.h's comments);
+# warnings are errors, as in tests/test_docs.py.
+docs: all
+	$(VENV)/bin/sphinx-build -W --keep-going -q -b html docs $(BUILD)/docs/html
+	@echo "docs: $(abspath $(BUILD))/docs/html/index.html"
 
 # `make wheel`: the pip wheel of bindings/python (built against this machine's GMP and
 # libstdc++), repaired by auditwheel into a manylinux wheel in build/dist/: GMP is copied

@@ -46,7 +46,7 @@
  *    (tests/c/test_threads.c, also under ThreadSanitizer). A handle being changed (set,
  *    solved into, freed) must not be used by another thread at the same time.
  *
- * Meaning of a contact (see shared/design/formats.md): closed time interval [0, 1],
+ * Meaning of a contact (see docs/formats.md): closed time interval [0, 1],
  * closed triangles, segments and balls; touching (distance exactly 0) is a contact.
  */
 #ifndef POLYCCD_H

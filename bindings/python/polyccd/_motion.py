@@ -138,7 +138,7 @@ class Motion:
     @classmethod
     def axis_rotation(cls, axis, center, tau0, tau1):
         """Rotation about the fixed axis through center (linear quaternion interpolation
-        (1, tau0 axis) -> (1, tau1 axis)); tan(angle(t) / 2) = tau(t) |axis|."""
+        (1, tau0 axis) -> (1, tau1 axis)); tan(angle(t) / 2) = tau(t) ``|axis|``."""
         va, vc = _vector(axis, "axis"), _vector(center, "center")
         a, ka = _texts(va)
         c, kc = _texts(vc)
