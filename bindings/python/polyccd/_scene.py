@@ -103,6 +103,18 @@ class SceneResult:
                         found.setdefault(kind, set()).add(k)
         return {kind: np.array(sorted(ks), dtype=np.int64) for kind, ks in sorted(found.items())}
 
+    def contact_geometry(self, pair=0, contact=0, *, bodies=None):
+        """The contact point and normal (a polyccd._contact.ContactGeometry: enclosures,
+        and exact Fractions when the time is exact) of contact `contact` of pair `pair`
+        (indices into self.pairs and its contacts) at that contact's first time.
+        pccd_contact_geometry_compute has the definitions; a result of a solve with
+        min_distance > 0 is refused when its features are apart."""
+        from ._contact import contact_geometry
+        bodies = self._bodies_for(bodies)
+        p = _item(self.pairs, pair, "pair")
+        c = _item(p.contacts, contact, "contact")
+        return contact_geometry(bodies[p.bodies[0]], c.a, bodies[p.bodies[1]], c.b, c.first_contact)
+
     def to_png(self, path, *, bodies=None, t=None, **options):
         """Writes a PNG of the bodies at t (default: the first contact, else 0) with the
         touching features in red (polyccd.apps._render.render_scene, matplotlib);
@@ -130,6 +142,12 @@ class SceneResult:
 
 
 _WHOLE = lib.PCCD_WHOLE
+
+
+def _item(items, k, place):
+    if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k < len(items):
+        raise InputError(f"{place}: expected an index from 0 to {len(items) - 1}, got {show(k)}")
+    return items[k]
 
 
 def _time(rep, pair, contact):
