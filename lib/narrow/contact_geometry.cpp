@@ -282,6 +282,10 @@ const char *kind_word(int kind) {
   static const char *const words[] = {"vertex", "edge", "triangle", "sphere"};
   return words[kind];
 }
+const char *kind_plural(int kind) {
+  static const char *const words[] = {"vertices", "edges", "triangles", "spheres"};
+  return words[kind];
+}
 
 // The body points of feature f (checked), as indices into the body's points.
 int feature_points(const Moving_body &b, const Feature_arg &f, std::array<size_t, 3> &idx) {
@@ -295,7 +299,7 @@ int feature_points(const Moving_body &b, const Feature_arg &f, std::array<size_t
                  : f.kind == F_TRIANGLE ? b.mesh->triangles().size() : b.n_points();
   if (f.index >= count)
     throw Input_error(std::string(f.index_name) + ": " + std::to_string(f.index) + " out of range (" +
-                      std::to_string(count) + " " + kind_word(f.kind) + (count == 1 ? "" : "s") + ")");
+                      std::to_string(count) + " " + (count == 1 ? kind_word(f.kind) : kind_plural(f.kind)) + ")");
   switch (f.kind) {
     case F_EDGE: idx = {b.mesh->edges()[f.index][0], b.mesh->edges()[f.index][1], 0}; return 2;
     case F_TRIANGLE: {
