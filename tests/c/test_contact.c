@@ -41,6 +41,24 @@ static void exact(const pccd_body *a, const pccd_motion *ma, int fa, size_t ia, 
   OK(pccd_contact_geometry_exact(a, ma, fa, ia, b, mb, fb, ib, t, t, which, buf, 256, NULL));
 }
 
+/* Feature kinds, short. */
+enum {
+  V = PCCD_FEATURE_VERTEX,
+  E = PCCD_FEATURE_EDGE,
+  T = PCCD_FEATURE_TRIANGLE,
+  S = PCCD_FEATURE_SPHERE
+};
+
+/* Whether that text is `want`. */
+static int exact_is(const pccd_body *a, const pccd_motion *ma, int fa, size_t ia,
+                    const pccd_body *b, const pccd_motion *mb, int fb, size_t ib, const char *t,
+                    int which, const char *want)
+{
+  char buf[256];
+  exact(a, ma, fa, ia, b, mb, fb, ib, t, which, buf);
+  return strcmp(buf, want) == 0;
+}
+
 static int encloses(const double lo[3], const double hi[3], double x, double y, double z)
 {
   return lo[0] <= x && x <= hi[0] && lo[1] <= y && y <= hi[1] && lo[2] <= z && z <= hi[2];
@@ -76,10 +94,8 @@ static void vertex_face(void)
   CHECK(g.exact == 1 && g.normal_state == PCCD_NORMAL_ENCLOSED);
   CHECK(encloses(g.point_lo, g.point_hi, 1, 1, 0));
   CHECK(encloses(g.normal_lo, g.normal_hi, 0, 0, 1));
-  exact(a, NULL, fi, ii, b, mb, fj, ij, lo, 0, buf);
-  CHECK(strcmp(buf, "1 1 0") == 0);
-  exact(a, NULL, fi, ii, b, mb, fj, ij, lo, 1, buf);
-  CHECK(strcmp(buf, "0 0 16") == 0);
+  CHECK(exact_is(a, NULL, fi, ii, b, mb, fj, ij, lo, 0, "1 1 0"));
+  CHECK(exact_is(a, NULL, fi, ii, b, mb, fj, ij, lo, 1, "0 0 16"));
   /* The same features over a time interval around 1/2: an enclosure containing the
    * point, no exact value. */
   OK(pccd_contact_geometry_compute(a, NULL, fi, ii, b, mb, fj, ij, "0.49", "0.51", &g));
@@ -110,16 +126,12 @@ static void edges(void)
   pccd_motion *mb = shift(0, 0, -2);
   char buf[256];
   g_case = "edges";
-  exact(a, NULL, PCCD_FEATURE_EDGE, 0, b, mb, PCCD_FEATURE_EDGE, 0, "1/2", 0, buf);
-  CHECK(strcmp(buf, "1/2 1 0") == 0);
-  exact(a, NULL, PCCD_FEATURE_EDGE, 0, b, mb, PCCD_FEATURE_EDGE, 0, "1/2", 1, buf);
-  CHECK(strcmp(buf, "0 0 16") == 0);
+  CHECK(exact_is(a, NULL, E, 0, b, mb, E, 0, "1/2", 0, "1/2 1 0"));
+  CHECK(exact_is(a, NULL, E, 0, b, mb, E, 0, "1/2", 1, "0 0 16"));
   /* The triangles meet there too (edge-triangle and triangle-triangle: a point of both;
    * the edge of a crosses b's plane x = 1/2 at (1/2, 1, 0)); no normal. */
-  exact(a, NULL, PCCD_FEATURE_EDGE, 0, b, mb, PCCD_FEATURE_TRIANGLE, 0, "1/2", 0, buf);
-  CHECK(strcmp(buf, "1/2 1 0") == 0);
-  exact(a, NULL, PCCD_FEATURE_TRIANGLE, 0, b, mb, PCCD_FEATURE_TRIANGLE, 0, "1/2", 0, buf);
-  CHECK(strcmp(buf, "1/2 1 0") == 0);
+  CHECK(exact_is(a, NULL, E, 0, b, mb, T, 0, "1/2", 0, "1/2 1 0"));
+  CHECK(exact_is(a, NULL, T, 0, b, mb, T, 0, "1/2", 0, "1/2 1 0"));
   FAILS(pccd_contact_geometry_exact(a, NULL, PCCD_FEATURE_TRIANGLE, 0, b, mb, PCCD_FEATURE_TRIANGLE,
                                     0, "1/2", "1/2", 1, buf, 256, NULL), PCCD_ESTATE, "no normal");
   pccd_motion_free(mb);
@@ -133,12 +145,9 @@ static void balls(void)
    * apart at t = 1/2; point c_a + 1/3 (c_b - c_a) = (1, 0, 0), normal c_b - c_a. */
   pccd_body *a = ball("0", "0", "0", "1"), *b = ball("5", "0", "0", "2");
   pccd_motion *mb = shift(-4, 0, 0);
-  char buf[256];
   g_case = "balls";
-  exact(a, NULL, PCCD_FEATURE_SPHERE, 0, b, mb, PCCD_FEATURE_SPHERE, 0, "1/2", 0, buf);
-  CHECK(strcmp(buf, "1 0 0") == 0);
-  exact(a, NULL, PCCD_FEATURE_SPHERE, 0, b, mb, PCCD_FEATURE_SPHERE, 0, "1/2", 1, buf);
-  CHECK(strcmp(buf, "3 0 0") == 0);
+  CHECK(exact_is(a, NULL, S, 0, b, mb, S, 0, "1/2", 0, "1 0 0"));
+  CHECK(exact_is(a, NULL, S, 0, b, mb, S, 0, "1/2", 1, "3 0 0"));
   pccd_motion_free(mb);
   pccd_body_free(a);
   pccd_body_free(b);
@@ -153,24 +162,15 @@ static void ball_triangle(void)
   pccd_body *t = mesh(vt);
   pccd_body *face = ball("1", "1", "1", "1"), *edge = ball("2", "-1", "0", "1");
   pccd_body *corner = ball("-3", "-4", "0", "5");
-  char buf[256];
   g_case = "ball_triangle";
-  exact(t, NULL, PCCD_FEATURE_TRIANGLE, 0, face, NULL, PCCD_FEATURE_SPHERE, 0, "0", 0, buf);
-  CHECK(strcmp(buf, "1 1 0") == 0);
-  exact(t, NULL, PCCD_FEATURE_TRIANGLE, 0, face, NULL, PCCD_FEATURE_SPHERE, 0, "0", 1, buf);
-  CHECK(strcmp(buf, "0 0 1") == 0);
-  exact(face, NULL, PCCD_FEATURE_SPHERE, 0, t, NULL, PCCD_FEATURE_TRIANGLE, 0, "0", 1, buf);
-  CHECK(strcmp(buf, "0 0 -1") == 0);
-  exact(t, NULL, PCCD_FEATURE_TRIANGLE, 0, edge, NULL, PCCD_FEATURE_SPHERE, 0, "0", 0, buf);
-  CHECK(strcmp(buf, "2 0 0") == 0);
-  exact(t, NULL, PCCD_FEATURE_EDGE, 0, edge, NULL, PCCD_FEATURE_SPHERE, 0, "0", 0, buf);
-  CHECK(strcmp(buf, "2 0 0") == 0);
-  exact(t, NULL, PCCD_FEATURE_EDGE, 0, edge, NULL, PCCD_FEATURE_SPHERE, 0, "0", 1, buf);
-  CHECK(strcmp(buf, "0 -1 0") == 0);
-  exact(t, NULL, PCCD_FEATURE_TRIANGLE, 0, corner, NULL, PCCD_FEATURE_SPHERE, 0, "0", 0, buf);
-  CHECK(strcmp(buf, "0 0 0") == 0);
-  exact(t, NULL, PCCD_FEATURE_VERTEX, 0, corner, NULL, PCCD_FEATURE_SPHERE, 0, "0", 1, buf);
-  CHECK(strcmp(buf, "-3 -4 0") == 0);
+  CHECK(exact_is(t, NULL, T, 0, face, NULL, S, 0, "0", 0, "1 1 0"));
+  CHECK(exact_is(t, NULL, T, 0, face, NULL, S, 0, "0", 1, "0 0 1"));
+  CHECK(exact_is(face, NULL, S, 0, t, NULL, T, 0, "0", 1, "0 0 -1"));
+  CHECK(exact_is(t, NULL, T, 0, edge, NULL, S, 0, "0", 0, "2 0 0"));
+  CHECK(exact_is(t, NULL, E, 0, edge, NULL, S, 0, "0", 0, "2 0 0"));
+  CHECK(exact_is(t, NULL, E, 0, edge, NULL, S, 0, "0", 1, "0 -1 0"));
+  CHECK(exact_is(t, NULL, T, 0, corner, NULL, S, 0, "0", 0, "0 0 0"));
+  CHECK(exact_is(t, NULL, V, 0, corner, NULL, S, 0, "0", 1, "-3 -4 0"));
   pccd_body_free(t);
   pccd_body_free(face);
   pccd_body_free(edge);
@@ -189,42 +189,52 @@ static void errors(void)
   g_case = "errors";
   memset(&g, 0, sizeof g);
   g.struct_size = sizeof g;
-#define GEOM(fa, ia, fb, ib, lo, hi) \
-  pccd_contact_geometry_compute(t, NULL, fa, ia, s, NULL, fb, ib, lo, hi, &g)
-  FAILS(GEOM(7, 0, PCCD_FEATURE_SPHERE, 0, "0", "0"), PCCD_EINVAL, "feature_a: 7 is not a pccd_feature");
-  FAILS(GEOM(PCCD_FEATURE_TRIANGLE, 0, PCCD_FEATURE_TRIANGLE, 0, "0", "0"), PCCD_EINVAL,
-        "feature_b: triangle is not a feature of a sphere body");
-  FAILS(GEOM(PCCD_FEATURE_SPHERE, 0, PCCD_FEATURE_SPHERE, 0, "0", "0"), PCCD_EINVAL,
-        "feature_a: sphere is not a feature of a mesh body");
-  FAILS(GEOM(PCCD_FEATURE_VERTEX, 3, PCCD_FEATURE_SPHERE, 0, "0", "0"), PCCD_EINVAL,
-        "index_a: 3 out of range (3 vertices)");
-  FAILS(GEOM(PCCD_FEATURE_EDGE, 3, PCCD_FEATURE_SPHERE, 0, "0", "0"), PCCD_EINVAL,
-        "index_a: 3 out of range (3 edges)");
-  FAILS(GEOM(PCCD_FEATURE_TRIANGLE, 0, PCCD_FEATURE_SPHERE, 1, "0", "0"), PCCD_EINVAL,
-        "index_b: 1 out of range (1 sphere)");
-  FAILS(GEOM(PCCD_FEATURE_TRIANGLE, 0, PCCD_FEATURE_SPHERE, 0, "1/2", "1/4"), PCCD_EINVAL,
-        "t_lo: 1/2 is above t_hi = 1/4");
-  FAILS(GEOM(PCCD_FEATURE_TRIANGLE, 0, PCCD_FEATURE_SPHERE, 0, "0", "3/2"), PCCD_EINVAL,
-        "t_hi: 3/2 is outside [0, 1]");
-  FAILS(GEOM(PCCD_FEATURE_TRIANGLE, 0, PCCD_FEATURE_SPHERE, 0, "-1", "0"), PCCD_EINVAL,
-        "t_lo: -1 is outside [0, 1]");
-  FAILS(GEOM(PCCD_FEATURE_TRIANGLE, 0, PCCD_FEATURE_SPHERE, 0, "x", "0"), PCCD_EINVAL, "t_lo");
-  FAILS(GEOM(PCCD_FEATURE_TRIANGLE, 0, PCCD_FEATURE_SPHERE, 0, "0", NULL), PCCD_EINVAL, "t_hi");
-  FAILS(pccd_contact_geometry_compute(NULL, NULL, 0, 0, s, NULL, 3, 0, "0", "0", &g), PCCD_EINVAL, "a");
-  FAILS(pccd_contact_geometry_compute(t, NULL, 2, 0, s, NULL, 3, 0, "0", "0", NULL), PCCD_EINVAL, "out");
+  {
+    /* Each bad argument of mesh t against ball s, and the words its message must hold. */
+    static const struct {
+      int fa;
+      size_t ia;
+      int fb;
+      size_t ib;
+      const char *lo, *hi, *word;
+    } bad_args[] = {
+        {7, 0, S, 0, "0", "0", "feature_a: 7 is not a pccd_feature"},
+        {T, 0, T, 0, "0", "0", "feature_b: triangle is not a feature of a sphere body"},
+        {S, 0, S, 0, "0", "0", "feature_a: sphere is not a feature of a mesh body"},
+        {V, 3, S, 0, "0", "0", "index_a: 3 out of range (3 vertices)"},
+        {E, 3, S, 0, "0", "0", "index_a: 3 out of range (3 edges)"},
+        {T, 0, S, 1, "0", "0", "index_b: 1 out of range (1 sphere)"},
+        {T, 0, S, 0, "1/2", "1/4", "t_lo: 1/2 is above t_hi = 1/4"},
+        {T, 0, S, 0, "0", "3/2", "t_hi: 3/2 is outside [0, 1]"},
+        {T, 0, S, 0, "-1", "0", "t_lo: -1 is outside [0, 1]"},
+        {T, 0, S, 0, "x", "0", "t_lo: "},
+        {T, 0, S, 0, "0", NULL, "t_hi: is NULL"},
+    };
+    size_t k;
+    for (k = 0; k < sizeof bad_args / sizeof bad_args[0]; ++k)
+      FAILS(pccd_contact_geometry_compute(t, NULL, bad_args[k].fa, bad_args[k].ia, s, NULL,
+                                          bad_args[k].fb, bad_args[k].ib, bad_args[k].lo,
+                                          bad_args[k].hi, &g),
+            PCCD_EINVAL, bad_args[k].word);
+  }
+  FAILS(pccd_contact_geometry_compute(NULL, NULL, V, 0, s, NULL, S, 0, "0", "0", &g), PCCD_EINVAL,
+        "a: is NULL");
+  FAILS(pccd_contact_geometry_compute(t, NULL, T, 0, s, NULL, S, 0, "0", "0", NULL), PCCD_EINVAL,
+        "out: is NULL");
   g.struct_size = 3;
-  FAILS(GEOM(PCCD_FEATURE_TRIANGLE, 0, PCCD_FEATURE_SPHERE, 0, "0", "0"), PCCD_EINVAL, "out.struct_size");
+  FAILS(pccd_contact_geometry_compute(t, NULL, T, 0, s, NULL, S, 0, "0", "0", &g), PCCD_EINVAL,
+        "out.struct_size");
   g.struct_size = sizeof g;
   /* A motion whose quaternion vanishes (r = 0): named. */
   OK(pccd_motion_new(&bad));
   OK(pccd_motion_set_rotation_d(bad, 0, zero, 1));
-  FAILS(pccd_contact_geometry_compute(t, NULL, 2, 0, s, bad, 3, 0, "0", "0", &g), PCCD_EINVAL, "mb: ");
-  FAILS(pccd_contact_geometry_exact(t, NULL, 2, 0, s, NULL, 3, 0, "0", "0", 2, buf, sizeof buf, NULL),
-        PCCD_EINVAL, "which: 2");
+  FAILS(pccd_contact_geometry_compute(t, NULL, T, 0, s, bad, S, 0, "0", "0", &g), PCCD_EINVAL,
+        "mb: ");
+  FAILS(pccd_contact_geometry_exact(t, NULL, T, 0, s, NULL, S, 0, "0", "0", 2, buf, sizeof buf,
+                                    NULL), PCCD_EINVAL, "which: 2");
   /* The buffer protocol: "1 1 0" needs 6 bytes. */
-  CHECK(pccd_contact_geometry_exact(t, NULL, 2, 0, s, NULL, 3, 0, "0", "0", 0, buf, 3, &needed) ==
-        PCCD_ERANGE && needed == 6);
-#undef GEOM
+  CHECK(pccd_contact_geometry_exact(t, NULL, T, 0, s, NULL, S, 0, "0", "0", 0, buf, 3,
+                                    &needed) == PCCD_ERANGE && needed == 6);
   pccd_motion_free(bad);
   pccd_body_free(t);
   pccd_body_free(s);
