@@ -36,6 +36,7 @@ struct Shape {
   int kind = F_VERTEX;
   int n = 1;
   std::array<V<NT>, 3> p;
+  std::array<V<NT>, 2> e;  // p[1] - p[0], p[2] - p[0] (the sides an edge or triangle has)
   NT r{};
 };
 
@@ -194,7 +195,7 @@ V<NT> contact_point(const Shape<NT> &A, const Shape<NT> &B) {
     return closest_on_triangle(ball.p[0], x.p);
   }
   if (A.kind == F_EDGE && B.kind == F_EDGE) {
-    const V<NT> da = sub(A.p[1], A.p[0]), db = sub(B.p[1], B.p[0]);
+    const V<NT> &da = A.e[0], &db = B.e[0];
     const V<NT> n = cross3(da, db);
     const NT nn = dot3(n, n);
     if (sign(nn) != 0) {
@@ -220,11 +221,11 @@ bool contact_normal(const Shape<NT> &A, const Shape<NT> &B, const V<NT> &point, 
   const int ka = A.kind, kb = B.kind;
   if ((ka == F_VERTEX && kb == F_TRIANGLE) || (ka == F_TRIANGLE && kb == F_VERTEX)) {
     const Shape<NT> &t = ka == F_TRIANGLE ? A : B;
-    n = cross3(sub(t.p[1], t.p[0]), sub(t.p[2], t.p[0]));
+    n = cross3(t.e[0], t.e[1]);
     return true;
   }
   if (ka == F_EDGE && kb == F_EDGE) {
-    n = cross3(sub(A.p[1], A.p[0]), sub(B.p[1], B.p[0]));
+    n = cross3(A.e[0], B.e[0]);
     return true;
   }
   if (ka == F_SPHERE && kb == F_SPHERE) {
@@ -263,14 +264,17 @@ Interval range_over(const poly::Poly<Rational> &p, double a, double b) {
   return poly::range_on_unit(poly::convert<Interval>(poly::reparametrize(p, Rational(a), Rational(b))));
 }
 
-// The world position of body point p over [a, b]: (Rn p + O) / W (moving_body.h).
-V<Interval> position_over(const Motion_data &mo, const motion::Point3_q &p, double a, double b) {
+// The world position of body point p over [a, b]: (Rn p + O) / W (moving_body.h); with
+// offset = false the world vector R(t) p of a body vector p (an edge's direction: tighter
+// than the difference of its ends' enclosures, and exact for a translation).
+V<Interval> position_over(const Motion_data &mo, const motion::Point3_q &p, double a, double b,
+                          bool offset = true) {
   const Interval w = range_over(mo.W, a, b);
   if (!(w.lo > 0)) return {Interval(-HUGE_VAL, HUGE_VAL), Interval(-HUGE_VAL, HUGE_VAL),
                            Interval(-HUGE_VAL, HUGE_VAL)};
   V<Interval> x;
   for (int k = 0; k < 3; ++k) {
-    poly::Poly<Rational> num = mo.O[k];
+    poly::Poly<Rational> num = offset ? mo.O[k] : poly::Poly<Rational>();
     for (int j = 0; j < 3; ++j)
       if (sgn(p[j]) != 0) num = num + p[j] * mo.Rn[k][j];
     x[k] = range_over(num, a, b) / w;
@@ -311,15 +315,37 @@ int feature_points(const Moving_body &b, const Feature_arg &f, std::array<size_t
   }
 }
 
-template <class NT, class Pos>
-Shape<NT> shape_of(const Moving_body &b, const Feature_arg &f, Pos &&pos) {
+// The shape of feature f: pos(p) the world position of body point p, dir(v) the world
+// vector of body vector v.
+template <class NT, class Pos, class Dir>
+Shape<NT> shape_of(const Moving_body &b, const Feature_arg &f, Pos &&pos, Dir &&dir) {
   std::array<size_t, 3> idx;
   Shape<NT> s;
   s.kind = f.kind;
   s.n = feature_points(b, f, idx);
   for (int k = 0; k < s.n; ++k) s.p[k] = pos(b.point(idx[k]));
+  for (int k = 1; k < s.n; ++k) {
+    const motion::Point3_q &p0 = b.point(idx[0]), &pk = b.point(idx[k]);
+    s.e[k - 1] = dir(motion::Point3_q{pk[0] - p0[0], pk[1] - p0[1], pk[2] - p0[2]});
+  }
   if (f.kind == F_SPHERE) s.r = arith::from_rational<NT>(b.spheres->radii()[f.index]);
   return s;
+}
+
+// The shape at the exact time t (sides: differences of exact positions).
+Shape<Rational> exact_shape(const Moving_body &b, const Feature_arg &f, const Rational &t) {
+  Shape<Rational> s = shape_of<Rational>(
+      b, f, [&](const motion::Point3_q &p) { return b.mo->motion.position(p, t); },
+      [](const motion::Point3_q &) { return V<Rational>{}; });
+  for (int k = 1; k < s.n; ++k) s.e[k - 1] = sub(s.p[k], s.p[0]);
+  return s;
+}
+
+// The shape enclosed over [lo, hi].
+Shape<Interval> shape_over(const Moving_body &b, const Feature_arg &f, double lo, double hi) {
+  return shape_of<Interval>(
+      b, f, [&](const motion::Point3_q &p) { return position_over(*b.mo, p, lo, hi); },
+      [&](const motion::Point3_q &v) { return position_over(*b.mo, v, lo, hi, false); });
 }
 
 // The box of a shape over the time interval: its points' hull, a ball's grown by r.
@@ -353,12 +379,7 @@ Contact_geometry contact_geometry(const Moving_body &a, const Feature_arg &fa, c
   Contact_geometry g;
   if (t_lo == t_hi) {
     g.exact = true;
-    const Shape<Rational> A = shape_of<Rational>(a, fa, [&](const motion::Point3_q &p) {
-      return a.mo->motion.position(p, t_lo);
-    });
-    const Shape<Rational> B = shape_of<Rational>(b, fb, [&](const motion::Point3_q &p) {
-      return b.mo->motion.position(p, t_lo);
-    });
+    const Shape<Rational> A = exact_shape(a, fa, t_lo), B = exact_shape(b, fb, t_lo);
     auto apart = [&] {
       return Input_error(std::string("the features do not touch at t = ") + arith::to_string(t_lo) +
                          " (a " + kind_word(fa.kind) + " of a and a " + kind_word(fb.kind) +
@@ -382,12 +403,7 @@ Contact_geometry contact_geometry(const Moving_body &a, const Feature_arg &fa, c
     return g;
   }
   const double lo = std::fmax(arith::enclose(t_lo).lo, 0.0), hi = std::fmin(arith::enclose(t_hi).hi, 1.0);
-  const Shape<Interval> A = shape_of<Interval>(a, fa, [&](const motion::Point3_q &p) {
-    return position_over(*a.mo, p, lo, hi);
-  });
-  const Shape<Interval> B = shape_of<Interval>(b, fb, [&](const motion::Point3_q &p) {
-    return position_over(*b.mo, p, lo, hi);
-  });
+  const Shape<Interval> A = shape_over(a, fa, lo, hi), B = shape_over(b, fb, lo, hi);
   std::array<Interval, 3> box = box_of(A);
   if (!meet(box, box_of(B)))
     throw Input_error("the features do not touch in [t_lo, t_hi] = [" + arith::to_string(t_lo) + ", " +
@@ -406,7 +422,9 @@ Contact_geometry contact_geometry(const Moving_body &a, const Feature_arg &fa, c
   V<Interval> n;
   const bool has = contact_normal(A, B, g.point, n);
   const bool needs_point = A.kind == F_SPHERE ? B.kind != F_SPHERE : B.kind == F_SPHERE;
-  if (!has) {
+  // Point intervals are exact values (positions that stay put over [t_lo, t_hi]).
+  const bool zero = has && n[0].is_point_zero() && n[1].is_point_zero() && n[2].is_point_zero();
+  if (!has || (zero && (!needs_point || formula))) {
     g.normal_state = Normal_state::none;
   } else if ((!needs_point || formula) && unit_enclosure(n, g.normal)) {
     g.normal_state = Normal_state::enclosed;

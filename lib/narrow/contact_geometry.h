@@ -34,7 +34,8 @@
 // distance but apart, are refused). t_lo < t_hi (t* irrational): the same formulas in
 // interval arithmetic over the feature points' position enclosures on [t_lo, t_hi]
 // (Bernstein hulls of the exact motion polynomials over the time interval, divided by
-// W's); when a decision or division is uncertain the point falls back to the
+// W's; the sides of edges and triangles, for the normals and the crossing of edges, as
+// R(t) times the body-frame side, exact for translations); when a decision or division is uncertain the point falls back to the
 // intersection of the two features' boxes over [t_lo, t_hi], which contains every point
 // of both features at t* (Input_error when it is empty: the features cannot touch in
 // [t_lo, t_hi]), and the normal to Normal_state::unknown. Every enclosure contains the
