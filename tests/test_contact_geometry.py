@@ -38,6 +38,9 @@ def test_balls_touch_at_a_known_point():
     b = polyccd.Body(polyccd.Spheres([[5, 0, 0]], [2]), polyccd.Motion.linear([0, 0, 0], [-4, 0, 0]))
     g = polyccd.check([a, b]).contact_geometry()
     assert g.point == (1, 0, 0) and g.normal == (3, 0, 0)
+    # An index query's result holds its bodies too: the same geometry.
+    h = polyccd.Index(a).query(b).contact_geometry()
+    assert (h.point, h.normal) == (g.point, g.normal)
 
 
 def rotating_vertex(tol):
