@@ -27,6 +27,7 @@ from pathlib import Path
 import pytest
 
 import polyccd as P
+import polyccd.apps
 from test_scene_corpus import check_time, exact, expected_time, read, summary
 from test_scene_property import grid, random_mesh, random_spheres
 
@@ -249,7 +250,7 @@ def test_query_threads_give_identical_answers():
 def _case(path):
     doc = read(path)
     tol = exact(doc.get("options", {}).get("time_tolerance", "1e-12"))
-    bodies, _options, _expect = P.load_scene(str(path))
+    bodies, _options, _expect = P.apps.load_scene(str(path))
     return doc, tol, bodies
 
 
@@ -302,7 +303,7 @@ def test_corpus_two_bodies(path):
 @pytest.mark.parametrize("path", MORE, ids=[str(p.relative_to(CORPUS)) for p in MORE])
 def test_corpus_every_pair_of_more_bodies(path):
     _doc, tol, bodies = _case(path)
-    expect = P.load_scene(str(path))[2]
+    expect = P.apps.load_scene(str(path))[2]
     for all_contacts in (False, True):
         scene = P.check(bodies, broad_phase="brute", all_contacts=all_contacts, time_tolerance=tol)
         assert tuple(p.names for p in scene.pairs) == expect.pairs
@@ -443,8 +444,11 @@ def test_errors():
         ix.query(q, broad_phase="kd")
     with pytest.raises(P.InputError, match=r"^broad_phase: "):
         ix.query(q, broad_phase=None)
-    for bad in (0, -1, 1025, 1.5, True, "2"):
-        with pytest.raises(P.InputError, match=r"^threads: expected an integer from 1 to 1024"):
+    for bad in (0, -1, 1025, 2 ** 40):  # the library's rule and words
+        with pytest.raises(P.InputError, match=rf"^opt\.threads: {bad} is outside 1\.\.1024$"):
+            ix.query(q, threads=bad)
+    for bad in (1.5, True, "2"):
+        with pytest.raises(P.InputError, match=r"^opt\.threads: expected an integer, got"):
             ix.query(q, threads=bad)
     with pytest.raises(P.InputError, match=r"^all_contacts: expected True or False"):
         ix.query(q, all_contacts="yes")

@@ -24,6 +24,7 @@ import pytest
 import oracle
 import oracle_body
 import polyccd
+import polyccd.apps
 from oracle_hull import in_hull
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus" / "bodies"
@@ -46,7 +47,7 @@ def read(path):
 def run(path, **kw):
     doc = read(path)
     tol = exact(doc.get("options", {}).get("time_tolerance", "1e-12"))
-    bodies, _options, _expect = polyccd.load_scene(str(path))
+    bodies, _options, _expect = polyccd.apps.load_scene(str(path))
     return doc, tol, bodies, polyccd.check(bodies, time_tolerance=tol, **kw)
 
 
