@@ -39,6 +39,9 @@ from pathlib import Path
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_report import cpu_model, pkg_version  # noqa: E402
+
 REPO = Path(__file__).resolve().parents[2]
 KIND_POINTS = {"vertex-face": 4, "edge-edge": 4}
 STAGES = ("bounds", "bernstein", "interval", "exact")
@@ -185,26 +188,6 @@ def ti_method(ti, queries):
 
 # ---------------------------------------------------------------------------------------
 # Reporting
-
-
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
-
-
-def pkg_version(name):
-    try:
-        from importlib.metadata import version
-
-        return version(name)
-    except Exception:
-        return "not installed"
 
 
 def summarize(method, queries):
