@@ -21,8 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._body import Mesh, Spheres
-from .._errors import InputError
+from .. import InputError, Mesh, Spheres
 
 # Where Debian puts the tarballs of libcgal-demo (/usr/share/doc/libcgal-demo is a
 # symbolic link to libcgal-dev's folder in bookworm).

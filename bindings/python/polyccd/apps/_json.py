@@ -9,9 +9,8 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import List, Optional, Tuple, Union
 
-from .._errors import InputError
-from .._numbers import exact_fraction, ratio_text, show
-from .._results import KINDS
+from .. import KINDS, InputError
+from .._numbers import exact_fraction, ratio_text, show  # number texts: no public twin yet
 from .._solve import npoints
 
 QUERY_FORMAT = "polyccd-query/1"
