@@ -72,8 +72,10 @@ def capped_files():
     for top in CAPPED:
         for p in sorted((ROOT / top).rglob("*")):
             parts = p.relative_to(ROOT).parts
-            if (p.is_file() and p.suffix in TEXT and not SKIP & set(parts)
-                    and not any(x.endswith(".egg-info") for x in parts)
+            # A symlink (bindings/python/README.md: the checkout's README for the wheel)
+            # is the file it points to, outside these folders.
+            if (p.is_file() and not p.is_symlink() and p.suffix in TEXT
+                    and not SKIP & set(parts) and not any(x.endswith(".egg-info") for x in parts)
                     and not p.name.startswith("_pccd")):  # the generated cffi extension
                 yield p
 
