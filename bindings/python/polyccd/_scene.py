@@ -219,9 +219,7 @@ def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1
     limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
     min_distance: delta >= 0: contacts are times when bodies are within delta.
     skip_pairs: body pairs (i, j) (indices or names) not to check."""
-    bodies = _bodies_list(bodies)
-    if len(bodies) < 2:
-        raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
+    bodies = _bodies_list(bodies)  # fewer than 2: pccd_scene_solve says so
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
                                limits, min_distance)
     rep = _scratch.report
