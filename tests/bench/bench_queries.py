@@ -40,7 +40,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from bench_report import cpu_model, pkg_version  # noqa: E402
+from bench_report import cpu_model, pkg_version, print_table  # noqa: E402
 
 REPO = Path(__file__).resolve().parents[2]
 KIND_POINTS = {"vertex-face": 4, "edge-edge": 4}
@@ -219,15 +219,6 @@ def summarize(method, queries):
 
 def ratio(x):
     return f"{x:.2f}x" if x >= 0.1 else f"{x:.2g}x"
-
-
-def print_table(headers, rows):
-    widths = [max(len(str(h)), *(len(str(r[i])) for r in rows)) for i, h in enumerate(headers)]
-    line = "  ".join(f"{h:>{w}}" for h, w in zip(headers, widths))
-    print(line)
-    print("-" * len(line))
-    for r in rows:
-        print("  ".join(f"{str(c):>{w}}" for c, w in zip(r, widths)))
 
 
 def main():
