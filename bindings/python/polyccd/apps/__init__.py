@@ -1,6 +1,6 @@
 """polyccd.apps: the applications built on the polyccd bindings.
 
-What a user calls (each documented in bindings/python/API.md):
+What a user calls (each documented in docs/python.md):
     polyccd.apps.load_scene(path_or_doc)          a polyccd/1 scene file -> (bodies, options, expect)
     polyccd.apps.to_png(result, path, ...)        a picture of a SceneResult (matplotlib)
     polyccd.apps.to_trimesh(result, ...)          a trimesh.Scene of a SceneResult

@@ -12,7 +12,7 @@ call's answer: the workers run the same library calls on the same exact inputs.
 
 Shipping: the C handles cannot be pickled, so bodies, motions and Index objects travel
 as their exact inputs (Mesh / Spheres / Motion / Body pickle that way, see
-bindings/python/API.md) and are rebuilt on arrival. A body shared by every task (the Index's
+docs/python.md) and are rebuilt on arrival. A body shared by every task (the Index's
 stored body) is scattered to every worker once (client.scatter(broadcast=True)) and
 each worker process builds its Index from it once, lazily on its first task, then
 keeps it (_cached_index). Files (CSV query sets, scene and query files, corpus cases)
