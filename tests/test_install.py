@@ -185,16 +185,21 @@ def _build_inputs():
     return _package_files() + [ROOT / f for f in _library_sources() + ["README.md", "LICENSE", "COPYING"]]
 
 
+# What the README's Python quick start imports besides polyccd (it builds meshes with trimesh).
+QUICK_START_EXTRA = ["trimesh>=4,<6"]
+
+
 def _requirements():
     """The runtime requirements and the build backend's, as pip arguments."""
-    return ["-r", str(PKG / "requirements.txt"), "setuptools>=77"]
+    return ["-r", str(PKG / "requirements.txt"), "setuptools>=77", *QUICK_START_EXTRA]
 
 
 @pytest.fixture(scope="module")
 def deps():
     """build/wheels/deps: wheels of the requirements, downloaded once (keyed by them)."""
     key = hashlib.sha256((PKG / "requirements.txt").read_bytes()
-                         + (PKG / "pyproject.toml").read_bytes()).hexdigest()[:16]
+                         + (PKG / "pyproject.toml").read_bytes()
+                         + " ".join(QUICK_START_EXTRA).encode()).hexdigest()[:16]
     stamp = DEPS / f"complete-{key}"
     if not stamp.exists():
         shutil.rmtree(DEPS, ignore_errors=True)
@@ -270,6 +275,17 @@ def test_pip_installed_command_checks_a_corpus_case(venv, tmp_path):
     expect = json.loads(CASE.read_text())["expect"]
     assert got["collides"] is expect["collides"] is True
     assert got["first_contact"]["exact"] == expect["first_contact"]
+
+
+def test_quick_starts_run_from_root_with_the_installed_wheel(venv):
+    """The README's Python quick start and the other Python examples, run from / with the
+    installed wheel (and trimesh, which the quick start uses), print what they promise."""
+    _run([sys.executable, "-m", "pip", "--python", str(venv / "bin" / "python"), "install", "-q",
+          "--no-index", "--find-links", str(DEPS), *QUICK_START_EXTRA], env=_env())
+    for example in sorted((ROOT / "examples" / "python").glob("*.py")):
+        out = _run([str(venv / "bin" / "python"), str(example)], cwd="/", env=_env())
+        promised = example.read_text().split("\n# Prints:\n", 1)[1]
+        assert out.stdout.splitlines() == [line[4:] for line in promised.splitlines()], example
 
 
 def test_pip_installed_import_needs_nothing_from_the_checkout(venv, tmp_path):

@@ -23,7 +23,9 @@ import pytest
 
 import oracle
 import oracle_body
+from helpers import summary
 import polyccd
+import polyccd.apps
 from oracle_hull import in_hull
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus" / "bodies"
@@ -46,18 +48,8 @@ def read(path):
 def run(path, **kw):
     doc = read(path)
     tol = exact(doc.get("options", {}).get("time_tolerance", "1e-12"))
-    bodies, _options, _expect = polyccd.load_scene(str(path))
+    bodies, _options, _expect = polyccd.apps.load_scene(str(path))
     return doc, tol, bodies, polyccd.check(bodies, time_tolerance=tol, **kw)
-
-
-def summary(r):
-    """Everything a SceneResult says (stats aside), as comparable values."""
-    def t(ct):
-        return None if ct is None else (ct.lo, ct.hi, ct.exact)
-    return (r.collides, t(r.first_contact),
-            tuple((p.bodies, p.names, t(p.first_contact),
-                   tuple((c.a, c.b, t(c.first_contact)) for c in p.contacts)) for p in r.pairs),
-            tuple(p.bodies for p in r.first))
 
 
 def check_time(ct, want, tol, what):

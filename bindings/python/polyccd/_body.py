@@ -315,21 +315,6 @@ class Spheres(_Body):
         """Pickles as the exact inputs; unpickling builds new Spheres from them."""
         return _rebuild, (Spheres, self._inputs)
 
-    @classmethod
-    def from_gemmi(cls, source, select=None, *, waters=False, altloc="first", radius_scale=1):
-        """The atoms of a molecule as balls of van der Waals radius (Bondi 1964 for H C N
-        O S P F Cl, else gemmi's table to its 2 decimals; times radius_scale, exact).
-
-        source: a PDB or mmCIF path (str or os.PathLike): the centres are the decimal
-        texts of the file exactly ("14.264" is 14264/1000, not a double); or a
-        gemmi.Structure / gemmi.Model in memory: the centres are gemmi's float64
-        positions at their exact binary values. First model only; select, waters,
-        altloc as polyccd.apps._data.load_pdb. The result carries .info (an AtomInfo
-        naming each ball). Needs gemmi (imported here, not by `import polyccd`)."""
-        from .apps._data import spheres_from_gemmi
-        return spheres_from_gemmi(source, select, waters=waters, altloc=altloc,
-                                  radius_scale=radius_scale)
-
     @property
     def centers(self):
         """The centres as an (n, 3) float64 array (read-only): exactly the body's when

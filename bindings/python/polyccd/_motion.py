@@ -258,15 +258,19 @@ def _composed(outer, inner):
     return Motion._wrap(handle, ("compose_motions", (outer._recipe, inner._recipe)))
 
 
+# The builders of recipes named by the modules that make such Motions ("chain":
+# polyccd._chain registers its own on import), so that this module imports none of them.
+RECIPE_BUILDERS = {}
+
+
 def _from_recipe(recipe):
     """The Motion of a recipe (see Motion.__reduce__): the same constructors, called with
     the exact number texts they recorded."""
     name, args = recipe
     if name == "__init__":
         return Motion(*args)
-    if name == "chain":
-        from ._chain import motion_from_recipe
-        return motion_from_recipe(*args)
+    if name in RECIPE_BUILDERS:
+        return RECIPE_BUILDERS[name](*args)
     if name == "compose_motions":
         return _from_recipe(args[0]).compose(_from_recipe(args[1]))
     if name == "compose":
