@@ -15,6 +15,7 @@ import pytest
 import sympy
 
 import polyccd
+import polyccd.apps
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus" / "bodies"
 FILES = sorted(CORPUS.rglob("*.json"))
@@ -160,7 +161,7 @@ def expected_normal(fa, pa, fb, pb, point):
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: str(p.relative_to(CORPUS)))
 def test_corpus_contacts_lie_on_both_features(path):
-    bodies, _options, _expect = polyccd.load_scene(str(path))
+    bodies, _options, _expect = polyccd.apps.load_scene(str(path))
     r = polyccd.check(bodies, all_contacts=True)
     tight = None
     for i, p in enumerate(r.pairs):
