@@ -1,8 +1,8 @@
 """Contact point and normal of two touching features (pccd_contact_geometry_compute and
 pccd_contact_geometry_exact in polyccd.h have the definitions; only conversion here)."""
 from dataclasses import dataclass
-from typing import Optional, Tuple
 from fractions import Fraction
+from typing import Optional, Tuple
 
 import numpy as np
 
@@ -48,7 +48,7 @@ def _exact_text(args, which):
     return tuple(fraction_from_text(x) for x in ffi.string(buf).decode("ascii").split(" "))
 
 
-def contact_geometry(body_a, feature_a, body_b, feature_b, time):
+def contact_geometry(body_a, feature_a, body_b, feature_b, time) -> ContactGeometry:
     """The ContactGeometry of feature_a of body_a and feature_b of body_b (polyccd.Body;
     features as (kind, index), kind "vertex", "edge", "triangle" or "sphere") touching
     at time (a ContactTime, e.g. a Contact's first_contact)."""

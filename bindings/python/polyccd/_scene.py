@@ -104,7 +104,7 @@ class SceneResult:
         return {kind: np.array(sorted(ks), dtype=np.int64) for kind, ks in sorted(found.items())}
 
     def contact_geometry(self, pair=0, contact=0, *, bodies=None):
-        """The contact point and normal (a polyccd._contact.ContactGeometry: enclosures,
+        """The contact point and normal (a polyccd.ContactGeometry: enclosures,
         and exact Fractions when the time is exact) of contact `contact` of pair `pair`
         (indices into self.pairs and its contacts) at that contact's first time.
         pccd_contact_geometry_compute has the definitions; a result of a solve with
