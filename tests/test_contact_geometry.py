@@ -16,6 +16,7 @@ import sympy
 
 import polyccd
 import polyccd.apps
+from polyccd._contact import contact_geometry
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus" / "bodies"
 FILES = sorted(CORPUS.rglob("*.json"))
@@ -159,6 +160,16 @@ def expected_normal(fa, pa, fb, pb, point):
     return None if n == (0, 0, 0) else n
 
 
+EPS = Fraction(1, 2 ** 20)
+
+
+def ge(x, c, n2):
+    """x >= c sqrt(n2), exactly (n2 > 0)."""
+    if c <= 0:
+        return x >= 0 or x * x <= c * c * n2
+    return x > 0 and x * x >= c * c * n2
+
+
 @pytest.mark.parametrize("path", FILES, ids=lambda p: str(p.relative_to(CORPUS)))
 def test_corpus_contacts_lie_on_both_features(path):
     bodies, _options, _expect = polyccd.apps.load_scene(str(path))
@@ -186,6 +197,18 @@ def test_corpus_contacts_lie_on_both_features(path):
             assert all(Fraction(lo) <= x <= Fraction(hi)
                        for lo, x, hi in zip(g.point_lo, g.point, g.point_hi))
             assert g.normal == expected_normal(c.a, pa, c.b, pb, g.point)
+            # The interval path: over a time enclosure around t the enclosures must hold
+            # the exact point and unit normal.
+            window = polyccd.ContactTime(max(t - EPS, Fraction(0)), min(t + EPS, Fraction(1)),
+                                         None, float(t))
+            h = contact_geometry(a, c.a, b, c.b, window)
+            assert h.point is None and all(Fraction(lo) <= x <= Fraction(hi)
+                                           for lo, x, hi in zip(h.point_lo, g.point, h.point_hi))
+            assert (h.normal_state == "none") == (g.normal is None) or h.normal_state == "unknown"
+            if h.normal_state == "enclosed":
+                n2 = dot(g.normal, g.normal)
+                assert all(ge(x, Fraction(lo), n2) and ge(-x, -Fraction(hi), n2)
+                           for lo, x, hi in zip(h.normal_lo, g.normal, h.normal_hi))
 
 
 def test_errors_name_the_argument():
@@ -196,7 +219,6 @@ def test_errors_name_the_argument():
         r.contact_geometry(1)
     with pytest.raises(polyccd.InputError, match=r"^contact: expected an index"):
         r.contact_geometry(0, 5)
-    from polyccd._contact import contact_geometry
     time = r.pairs[0].first_contact
     with pytest.raises(polyccd.InputError, match=r"^feature_b: triangle is not a feature of a sphere"):
         contact_geometry(a, ("sphere", 0), b, ("triangle", 0), time)
