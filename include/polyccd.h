@@ -794,8 +794,9 @@ PCCD_API int pccd_contact_geometry_compute(const pccd_body *a, const pccd_motion
 /* The exact values at an exact time (t_lo = t_hi = t), same arguments: which 0 = the
  * point, 1 = the normal (unnormalized, as defined above), written as "x y z" (rationals
  * "p/q" or "p", single spaces) with the buffer protocol (PCCD_ERANGE, *needed).
- * PCCD_ESTATE when t_lo != t_hi (t* not exact: use the enclosures of pccd_contact_geometry_compute) or, for which = 1,
- * when no normal is defined; PCCD_EINVAL as pccd_contact_geometry_compute, or which not 0 or 1. */
+ * PCCD_ESTATE when t_lo != t_hi (t* not exact: use the enclosures of
+ * pccd_contact_geometry_compute) or, for which = 1, when no normal is defined;
+ * PCCD_EINVAL as pccd_contact_geometry_compute, or which not 0 or 1. */
 PCCD_API int pccd_contact_geometry_exact(const pccd_body *a, const pccd_motion *ma, int feature_a,
                                          size_t index_a, const pccd_body *b,
                                          const pccd_motion *mb, int feature_b, size_t index_b,

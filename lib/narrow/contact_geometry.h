@@ -35,12 +35,15 @@
 // interval arithmetic over the feature points' position enclosures on [t_lo, t_hi]
 // (Bernstein hulls of the exact motion polynomials over the time interval, divided by
 // W's; the sides of edges and triangles, for the normals and the crossing of edges, as
-// R(t) times the body-frame side, exact for translations); when a decision or division is uncertain the point falls back to the
-// intersection of the two features' boxes over [t_lo, t_hi], which contains every point
-// of both features at t* (Input_error when it is empty: the features cannot touch in
-// [t_lo, t_hi]), and the normal to Normal_state::unknown. Every enclosure contains the
-// true value whenever the features do touch at some t* in [t_lo, t_hi]; its width
-// shrinks with t_hi - t_lo.
+// R(t) times the body-frame side, exact for translations); when a decision or division
+// is uncertain the point falls back to the intersection of the two features' boxes over
+// [t_lo, t_hi], which contains every point of both features at t* (Input_error when it
+// is empty: the features cannot touch in [t_lo, t_hi]); the normal is
+// Normal_state::unknown when |n|^2 is not certainly positive, or when it depends on a
+// point that fell back (sphere-X). Every enclosure contains the true value whenever the
+// features do touch at some t* in [t_lo, t_hi]; its width shrinks with t_hi - t_lo.
+// (lib/narrow precedes lib/boxes in the layer order, so the enclosures are made here
+// from poly::range_on_unit, the Bernstein hull boxes::enclose_pose builds on.)
 #pragma once
 #include <array>
 #include <cstddef>
