@@ -1,4 +1,4 @@
-"""polyccd installed the ways its users install libraries (README, "Install").
+"""polyccd installed the ways its users install libraries (docs/install.md).
 
 C and C++: `make install PREFIX=<temporary>` lays out the header, the versioned shared
 library and its symlinks, polyccd.pc and the CMake package; the README's C example

@@ -52,7 +52,7 @@ def _number(value, place):
 
 class Motion:
     """An exact rigid motion: body point p is at R(r(t)) p + o(t) for t in [0, 1]
-    (formats.md, MOTION). See bindings/python/API.md, "Motions"."""
+    (formats.md, MOTION). See docs/python.md, "Motions"."""
 
     __slots__ = ("_handle", "_recipe")
 

@@ -147,7 +147,7 @@ def solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limi
 def solve(kind, points, radii=None, *, time_tolerance="1e-12", want_time=True,
           want_exact=True, limits=None, min_distance=None):
     """Decides exactly whether the moving primitives touch during [0, 1]; see
-    bindings/python/API.md. points: one [xs, ys, zs] per point, ascending powers of t.
+    docs/python.md. points: one [xs, ys, zs] per point, ascending powers of t.
     limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
     min_distance: delta >= 0: the first time the closed primitives are within delta."""
     return solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limits,
