@@ -660,7 +660,7 @@ typedef enum pccd_broad_phase {
   PCCD_BROAD_RANGE = 2, /* linearized contact conditions, lifted points in CGAL kd-trees
                            searched with halfspace queries (the paper's section 3) */
   PCCD_BROAD_AUTO = 3,  /* the default: the phase the benchmarks measured fastest for
-                           the kind of problem (README, "Broad phases") */
+                           the kind of problem (docs/design.md, "Broad phases") */
   PCCD_BROAD_BVH = 4    /* a bounding-volume hierarchy kept with each body, traversed
                            for both bodies at once over time pieces (swept boxes) */
 } pccd_broad_phase;

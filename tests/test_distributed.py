@@ -68,7 +68,7 @@ def without_time(report):
 def test_index_batch_of_10k_equals_serial(client):
     queries = query_bodies(10_000)
     ix = Index(PLATE)
-    serial = ix.query_many(queries)  # equal to [ix.query(q) ...] (API.md, tests/test_index.py)
+    serial = ix.query_many(queries)  # equal to [ix.query(q) ...] (docs/python.md, tests/test_index.py)
     before = builds(client)
     got = list(pd.index_map(ix, queries, client=client))
     assert got == serial

@@ -1,4 +1,4 @@
-"""The on-line index (bindings/python/API.md, "On-line index"): polyccd.Index(body) and
+"""The on-line index (docs/python.md, "On-line index"): polyccd.Index(body) and
 ix.query(body, ...) must give exactly the answers of brute force over every feature pair
 of the two-body scene [stored, query] (P.check(..., broad_phase="brute")), with every
 broad phase ("auto", "range", "boxes"), in first-contact and all-contacts modes:

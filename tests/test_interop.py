@@ -1,4 +1,4 @@
-"""numpy / trimesh / gemmi interop (bindings/python/API.md, "Interop"), with exactness
+"""numpy / trimesh / gemmi interop (docs/python.md, "Interop"), with exactness
 checked against what the C library reports back: a float64 given is the rational used.
 
 The round trips read coordinates back through exact contact times: a body at an

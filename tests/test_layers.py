@@ -1,4 +1,4 @@
-"""The layers of lib/ include only the layers before them (README, "Layout").
+"""The layers of lib/ include only the layers before them (docs/design.md, "Layout").
 
 Order: arith -> poly -> motion -> pred -> narrow -> boxes -> bvh -> range -> scene -> api, with
 util (threads) below every layer that needs it. Only lib/api includes the public

@@ -2,7 +2,7 @@
 `expect` block, which tests/tools/make_body_corpus.py wrote from the independent body oracle
 (tests/oracle/oracle_body.py), never from polyccd.
 
-Checked (formats.md, EXPECT; bindings/python/API.md, Scenes): collides; first_contact
+Checked (formats.md, EXPECT; docs/python.md, Scenes): collides; first_contact
 (an exact rational is reported exactly; an enclosure [lo, hi] must meet the expected
 one and be no wider than the case's time tolerance, and must not claim to be exact);
 pairs (every body pair in contact; for two bodies, the one pair exactly when they

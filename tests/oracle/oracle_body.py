@@ -5,7 +5,7 @@
     res.pairs                                      # {(i, j): PairAnswer} for pairs in contact
     res.pair_list                                  # every pair (i < j), PairAnswer each
     PairAnswer.collides / .first / .touching       # touching: feature pairs in contact at
-                                                   # the pair's first time, API.md vocabulary
+                                                   # the pair's first time, docs/python.md vocabulary
 
 What is decided (formats.md, "Meaning of a contact"): over the CLOSED time interval
 [0, 1], two meshes touch when their surfaces (the union of their closed, possibly
@@ -96,7 +96,7 @@ grown by r) are disjoint on every piece cannot touch and is skipped.
 
 Touching features at t* (PairAnswer.touching): the feature pairs whose own first time
 equals t* (a feature pair touching at t* has its first time <= t*, hence = t*), in the
-API.md vocabulary: ("vertex", k), ("edge", k) (k indexes Mesh.edges: each side {a, b},
+docs/python.md vocabulary: ("vertex", k), ("edge", k) (k indexes Mesh.edges: each side {a, b},
 a != b, once as (a, b) with a < b, sorted), ("triangle", k), ("sphere", k); for a
 contact found only by the static test at t = 0, the triangle pairs that meet.
 """

@@ -90,7 +90,7 @@ def _motion(obj, where):
 
 
 def mesh_edges(triangles):
-    """Mesh.edges of API.md: each side {a, b}, a != b, once as (a, b), a < b, sorted."""
+    """Mesh.edges of docs/python.md: each side {a, b}, a != b, once as (a, b), a < b, sorted."""
     out = set()
     for tri in triangles:
         for u, w in ((tri[0], tri[1]), (tri[1], tri[2]), (tri[2], tri[0])):

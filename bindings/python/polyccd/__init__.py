@@ -1,6 +1,6 @@
 """polyccd: exact continuous collision detection of moving primitives.
 
-Python bindings of libpolyccd (see bindings/python/API.md). Every answer comes from the C
+Python bindings of libpolyccd (see docs/python.md). Every answer comes from the C
 library; this package converts inputs exactly and raises clear errors. The applications
 (command line, file readers, corpus runner, data loaders, rendering, dask maps, demo)
 live in polyccd.apps, which `import polyccd` does not import and no module of this core

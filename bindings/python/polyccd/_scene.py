@@ -1,4 +1,4 @@
-"""Scenes: bodies on motions, checked exactly (bindings/python/API.md, "Scenes").
+"""Scenes: bodies on motions, checked exactly (docs/python.md, "Scenes").
 
 Only conversion here: two bodies are solved in C by one call (pccd_pair_solve), more
 as a scene (pccd_scene, pccd_scene_solve), and the answers are read back from a
@@ -237,7 +237,7 @@ def _pair_index(x, names, place):
 def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
                 broad_phase="auto", want_exact=True, limits=None, min_distance=None,
                 skip_pairs=()):
-    """Every body pair in contact and the scene's first contact (API.md, Scenes).
+    """Every body pair in contact and the scene's first contact (docs/python.md, "Scenes").
     limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
     min_distance: delta >= 0: contacts are times when bodies are within delta.
     skip_pairs: body pairs (i, j) (indices or names) not to check."""

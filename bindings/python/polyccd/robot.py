@@ -6,7 +6,7 @@ names), meshes by trimesh; both are imported when a URDF is loaded, never by
 `import polyccd`. The origins (xyz, rpy) are read from the URDF's own text, each number
 the double nearest its decimal, which the chain then takes exactly (yourdfpy keeps only
 a 4x4 matrix computed in floats). Every kinematic computation is the C library's
-(pccd_chain_*, pccd_motion_*, pccd_scene_*). See bindings/python/API.md, "Robots".
+(pccd_chain_*, pccd_motion_*, pccd_scene_*). See docs/python.md, "Robots".
 
 Policies (stated once, checked here or by the C library):
   - joints: fixed, revolute, continuous (a revolute joint without limits), prismatic;
@@ -34,6 +34,7 @@ import numpy as np
 from ._body import Mesh, Spheres
 from ._chain import Chain
 from ._errors import InputError
+from ._extras import need
 
 SUPPORTED = ("fixed", "revolute", "continuous", "prismatic")
 
@@ -57,7 +58,7 @@ def _origin(element, place):
 
 
 def _mesh_file(filename, scale, place):
-    import trimesh
+    trimesh = need("polyccd.robot.load_urdf (mesh files)", "robot", "trimesh")
     if not os.path.isfile(filename):
         raise InputError(f"{place}: mesh file {filename!r} not found")
     try:
@@ -255,7 +256,7 @@ def load_urdf(path, *, geometry="collision"):
     Mesh file names ("package://...", relative) are resolved by yourdfpy's default
     handler (relative to the URDF file and its parent folders). InputError for a
     missing or unreadable file, an unsupported joint type, a zero axis, a bad number."""
-    import yourdfpy
+    yourdfpy = need("polyccd.robot.load_urdf", "robot", "yourdfpy")
     if geometry not in ("collision", "visual"):
         raise InputError(f'geometry: {geometry!r} is not "collision" or "visual"')
     if not os.path.isfile(path):
