@@ -2,13 +2,17 @@
 pccd_contact_geometry_exact in polyccd.h have the definitions; only conversion here)."""
 from dataclasses import dataclass
 from fractions import Fraction
-from typing import Optional, Tuple
+from typing import TYPE_CHECKING, Optional, Tuple
 
 import numpy as np
 
 from ._errors import InputError, check
 from ._numbers import fraction_from_text, ratio_text, show
 from ._pccd import ffi, lib
+from ._results import ContactTime
+
+if TYPE_CHECKING:
+    from ._scene import Body
 
 FEATURES = ("vertex", "edge", "triangle", "sphere")
 NORMAL_STATES = {lib.PCCD_NORMAL_NONE: "none", lib.PCCD_NORMAL_ENCLOSED: "enclosed",
@@ -48,7 +52,8 @@ def _exact_text(args, which):
     return tuple(fraction_from_text(x) for x in ffi.string(buf).decode("ascii").split(" "))
 
 
-def contact_geometry(body_a, feature_a, body_b, feature_b, time) -> ContactGeometry:
+def contact_geometry(body_a: "Body", feature_a: Tuple[str, int], body_b: "Body",
+                     feature_b: Tuple[str, int], time: ContactTime) -> ContactGeometry:
     """The ContactGeometry of feature_a of body_a and feature_b of body_b (polyccd.Body;
     features as (kind, index), kind "vertex", "edge", "triangle" or "sphere") touching
     at time (a ContactTime, e.g. a Contact's first_contact)."""

@@ -8,13 +8,14 @@ applications (polyccd.apps.load_scene, to_png, to_trimesh).
 import struct
 import threading
 from dataclasses import dataclass, field
-from typing import Optional, Tuple
+from typing import Optional, Sequence, Tuple
 
 import numpy as np
 
 from . import _handles as handles
 from . import _limits
 from ._body import Mesh, Spheres
+from ._contact import ContactGeometry, contact_geometry as _contact_geometry
 from ._errors import InputError, check
 from ._motion import Motion
 from ._numbers import fraction_from_text, show
@@ -103,21 +104,21 @@ class SceneResult:
                         found.setdefault(kind, set()).add(k)
         return {kind: np.array(sorted(ks), dtype=np.int64) for kind, ks in sorted(found.items())}
 
-    def contact_geometry(self, pair=0, contact=0, *, bodies=None):
+    def contact_geometry(self, pair: int = 0, contact: int = 0, *,
+                         bodies: Optional[Sequence[Body]] = None) -> ContactGeometry:
         """The contact point and normal (a polyccd.ContactGeometry: enclosures,
         and exact Fractions when the time is exact) of contact `contact` of pair `pair`
         (indices into self.pairs and its contacts) at that contact's first time.
         pccd_contact_geometry_compute has the definitions; a result of a solve with
         min_distance > 0 is refused when its features are apart. bodies: default the
         ones this result was solved from."""
-        from ._contact import contact_geometry
         bodies = self.bodies if bodies is None else list(bodies)
         if not bodies:
             raise InputError("bodies: this result does not hold its bodies (it was "
                              "pickled or made elsewhere); pass bodies=[...]")
         p = _item(self.pairs, pair, "pair")
         c = _item(p.contacts, contact, "contact")
-        return contact_geometry(bodies[p.bodies[0]], c.a, bodies[p.bodies[1]], c.b, c.first_contact)
+        return _contact_geometry(bodies[p.bodies[0]], c.a, bodies[p.bodies[1]], c.b, c.first_contact)
 
 
 _WHOLE = lib.PCCD_WHOLE
