@@ -1,5 +1,5 @@
 """The polyccd command line: check, corpus, queries, demo; exit codes 0/1/2 and the
-messages for bad files (shared/design/formats.md, Command line)."""
+messages for bad files (docs/formats.md, "The command line")."""
 import json
 from fractions import Fraction
 

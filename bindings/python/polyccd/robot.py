@@ -34,9 +34,6 @@ from ._chain import Chain
 from ._errors import InputError
 
 SUPPORTED = ("fixed", "revolute", "continuous", "prismatic")
-BOX_TRIANGLES = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
-                 [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
-
 
 def _floats(text, place, n=3):
     try:
@@ -55,30 +52,6 @@ def _origin(element, place):
         return [0.0] * 3, [0.0] * 3
     return (_floats(o.get("xyz", "0 0 0"), place + ".origin.xyz"),
             _floats(o.get("rpy", "0 0 0"), place + ".origin.rpy"))
-
-
-def _box_mesh(size):
-    h = [float(s) / 2 for s in size]  # halving a double is exact
-    v = [[h[0] * (1 if i & 1 else -1), h[1] * (1 if i & 2 else -1), h[2] * (1 if i & 4 else -1)]
-         for i in range(8)]
-    return Mesh(v, BOX_TRIANGLES)
-
-
-def _cylinder_mesh(radius, length, sides=16):
-    # The 16-gon with inradius >= radius (its vertices at radius / cos(pi / 16), enlarged
-    # by 1e-12 relative so that the rounding of the doubles cannot cut into the circle).
-    R = radius / np.cos(np.pi / sides) * (1 + 1e-12)
-    a = 2 * np.pi * (np.arange(sides) + 0.5) / sides
-    ring = [[R * np.cos(x), R * np.sin(x)] for x in a]
-    h = length / 2
-    v = [[x, y, -h] for x, y in ring] + [[x, y, h] for x, y in ring]
-    t = []
-    for i in range(sides):
-        j = (i + 1) % sides
-        t += [[i, j, sides + j], [i, sides + j, sides + i]]
-    for i in range(1, sides - 1):
-        t += [[0, i + 1, i], [sides, sides + i, sides + i + 1]]
-    return Mesh(v, t)
 
 
 def _mesh_file(filename, scale, place):
@@ -384,14 +357,14 @@ def _geometry(g, urdf, place):
         raise InputError(f"{place}.geometry: missing")
     e = g[0]
     if e.tag == "box":
-        return _box_mesh(_floats(e.get("size"), place + ".geometry.box.size"))
+        return Mesh.box(_floats(e.get("size"), place + ".geometry.box.size"))
     if e.tag == "sphere":
         r = _floats(e.get("radius"), place + ".geometry.sphere.radius", 1)[0]
         return Spheres([[0, 0, 0]], [r])
     if e.tag == "cylinder":
         r = _floats(e.get("radius"), place + ".geometry.cylinder.radius", 1)[0]
         h = _floats(e.get("length"), place + ".geometry.cylinder.length", 1)[0]
-        return _cylinder_mesh(r, h)
+        return Mesh.cylinder(r, h)
     if e.tag == "mesh":
         name = e.get("filename")
         if not name:

@@ -1,5 +1,5 @@
 """Corpus cases: solve a case file and compare the answer with its `expect` block
-(shared/design/formats.md, EXPECT)."""
+(docs/formats.md, "EXPECT")."""
 import glob
 from fractions import Fraction
 from pathlib import Path

@@ -1,4 +1,4 @@
-"""Exact reading of polyccd JSON files (shared/design/formats.md).
+"""Exact reading of polyccd JSON files (docs/formats.md).
 
 A JSON number means exactly the decimal written, so numbers are kept as their literal
 text (JsonNumber) and parsed by the C library, never by float(). Every error names the

@@ -1,4 +1,4 @@
-"""The polyccd command line (shared/design/formats.md, Command line).
+"""The polyccd command line (docs/formats.md, "The command line").
 
 Exit status: 0 success; 1 a failed case, a wrong answer or an internal error; 2 an input
 error (the message on stderr names the file and the place in it).
@@ -367,7 +367,7 @@ def _cluster_flags(c):
 def parser():
     p = argparse.ArgumentParser(
         prog="polyccd", description="Exact continuous collision detection of moving "
-        "primitives (file formats: shared/design/formats.md).")
+        "primitives (file formats: docs/formats.md in the source repository).")
     p.add_argument("--version", action="version", version=f"polyccd {__version__}")
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
     c = sub.add_parser("check", help="solve one scene or query file and print the JSON result "
