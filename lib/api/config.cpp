@@ -36,6 +36,13 @@ bool same_text(bool has, const std::string &text, const char *s) {
   return has == (s != nullptr) && (!s || std::strcmp(s, text.c_str()) == 0);
 }
 
+pred::Solve_options with_flags(bool want_time, bool want_exact) {
+  pred::Solve_options o;
+  o.want_time = want_time;
+  o.want_exact = want_exact;
+  return o;
+}
+
 const pred::Solve_options &solve_options(const pccd_config *cfg) {
   static const pred::Solve_options kDefaults;
   if (!cfg) return kDefaults;
@@ -45,8 +52,13 @@ const pred::Solve_options &solve_options(const pccd_config *cfg) {
                       std::to_string(sizeof(pccd_config)) + " (initialise with pccd_config_init)");
   // config.min_distance exists only in the full layout.
   const char *md = cfg->struct_size == sizeof(pccd_config) ? cfg->min_distance : nullptr;
-  Solve_cache &c = tl_cache;
   const bool want_time = cfg->want_time != 0, want_exact = cfg->want_exact != 0;
+  if (!cfg->time_tolerance && !md) {  // no number to parse: no thread-local access
+    static const pred::Solve_options kFlags[2][2] = {{with_flags(false, false), with_flags(false, true)},
+                                                     {with_flags(true, false), with_flags(true, true)}};
+    return kFlags[want_time][want_exact];
+  }
+  Solve_cache &c = tl_cache;
   if (c.valid && c.want_time == want_time && c.want_exact == want_exact &&
       same_text(c.has_tolerance, c.tolerance, cfg->time_tolerance) &&
       same_text(c.has_min_distance, c.min_distance, md))

@@ -4,6 +4,7 @@
 // batch entry is exactly the single call's answer.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "api/config.h"
@@ -71,8 +72,7 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
                                  const pccd_config *cfg, pccd_result *res) {
   return guard(__func__, [&] {
     require(res, "res");
-    res->solved = false;
-    pccd::pred::reset(res->r);
+    res->solved = false;  // unreadable until solved (require_solved); solve_linear resets r
     require(p_t0, "p_t0");
     require(p_t1, "p_t1");
     const long k = pccd::api::raw_kind(kind);
@@ -82,7 +82,8 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
     pccd::api::check_finite(p_t1, n, "p_t1", nullptr);
     pccd::api::check_double_bits(call.limits, p_t0, n, "p_t0", nullptr);
     pccd::api::check_double_bits(call.limits, p_t1, n, "p_t1", nullptr);
-    const pccd::api::Call_budget budget(call.limits.work);
+    std::optional<pccd::api::Call_budget> budget;  // none without limits: no per-call cost
+    if (call.limits.work.any()) budget.emplace(call.limits.work);
     pccd::pred::solve_linear(static_cast<int>(k), n, p_t0, p_t1, *call.solve, res->r);
     res->solved = true;
     return PCCD_OK;

@@ -161,7 +161,7 @@ Cubic_bernstein coplanarity_cubic(int kind, const double *p0, const double *p1) 
 }
 
 Linear_verdict linear_filter(int kind, const double *p0, const double *p1, Cubic_bernstein &f) {
-  f = Cubic_bernstein{};
+  f.ok = false;  // nothing else of f is read unless ok
   auto at = [&](int i) {
     struct Pair {
       const double *x[2];
