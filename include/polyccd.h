@@ -225,7 +225,9 @@ PCCD_API int pccd_query_set_coord_s(pccd_query *q, size_t point, size_t axis,
 PCCD_API int pccd_query_set_linear_d(pccd_query *q, const double *p_t0, const double *p_t1);
 
 /* Sets the radius of ball `which` (0 or 1) of a SPHERE_SPHERE query. Radii must be > 0
- * when the query is solved (PCCD_EINVAL from pccd_query_solve otherwise). */
+ * when the query is solved (PCCD_EINVAL from pccd_query_solve otherwise; an unset radius
+ * is 0: "radii[0]: 0 is not > 0 ..."). PCCD_EINVAL for another kind ("radii: only
+ * sphere-sphere queries have radii"). */
 PCCD_API int pccd_query_set_radius_d(pccd_query *q, size_t which, double r);
 PCCD_API int pccd_query_set_radius_s(pccd_query *q, size_t which, const char *r);
 
@@ -543,6 +545,13 @@ PCCD_API int pccd_chain_add_link(pccd_chain *c, long parent, int joint, const do
 /* The number of links in *n. PCCD_EINVAL when c or n is NULL. */
 PCCD_API int pccd_chain_size(const pccd_chain *c, size_t *n);
 
+/* How error messages name link k's joint value after "q0" / "q1": place replaces the
+ * default "[k]" (a caller that numbers the values otherwise says so: a robot whose
+ * joint 2, "elbow", moves link k gives "[2] (elbow)", and a bad value reads
+ * "q1[2] (elbow): ..."). Only the messages change. PCCD_EINVAL: c or place NULL, k not
+ * a link ("k: 7 out of range (the chain has 4 links)"). */
+PCCD_API int pccd_chain_set_value_place(pccd_chain *c, size_t k, const char *place);
+
 /* The world motion of every link over the segment q0 -> q1 (t = 0: q0, t = 1: q1):
  * motions[k] receives a new pccd_motion for link k (release each with
  * pccd_motion_free). q0[k], q1[k]: the value of link k's joint (radians or length
@@ -656,7 +665,7 @@ typedef enum pccd_broad_phase {
   PCCD_BROAD_RANGE = 2, /* linearized contact conditions, lifted points in CGAL kd-trees
                            searched with halfspace queries (the paper's section 3) */
   PCCD_BROAD_AUTO = 3,  /* the default: the phase the benchmarks measured fastest for
-                           the kind of problem (README, "Broad phases") */
+                           the kind of problem (docs/design.md, "Broad phases") */
   PCCD_BROAD_BVH = 4    /* a bounding-volume hierarchy kept with each body, traversed
                            for both bodies at once over time pieces (swept boxes) */
 } pccd_broad_phase;

@@ -1,4 +1,4 @@
-"""polyccd installed the ways its users install libraries (README, "Install").
+"""polyccd installed the ways its users install libraries (docs/install.md).
 
 C and C++: `make install PREFIX=<temporary>` lays out the header, the versioned shared
 library and its symlinks, polyccd.pc and the CMake package; the README's C example
@@ -257,6 +257,7 @@ def test_wheel_contents(wheel):
         and binaries[1].startswith("polyccd/_pccd.") and binaries[2] == "polyccd/libpolyccd.so.0", binaries
     assert re.match(r"polyccd-%s-cp3\d+-cp3\d+-manylinux_2_\d+_x86_64\.whl" % re.escape(VERSION),
                     wheel.name), wheel.name
+    assert "polyccd/py.typed" in names    # PEP 561: type checkers read the annotations
     info = f"polyccd-{VERSION}.dist-info/"
     for legal in ("LICENSE", "COPYING"):
         assert z.read(info + "licenses/" + legal) == (ROOT / legal).read_bytes()

@@ -13,7 +13,7 @@ from typing import Dict, List
 
 import numpy as np
 
-from .._errors import InputError
+from .. import InputError
 from .._numbers import ratio_text
 
 CSV_KINDS = ("vertex-face", "edge-edge")
