@@ -42,8 +42,8 @@
 // Normal_state::unknown when |n|^2 is not certainly positive, or when it depends on a
 // point that fell back (sphere-X). Every enclosure contains the true value whenever the
 // features do touch at some t* in [t_lo, t_hi]; its width shrinks with t_hi - t_lo.
-// (lib/narrow precedes lib/boxes in the layer order, so the enclosures are made here
-// from poly::range_on_unit, the Bernstein hull boxes::enclose_pose builds on.)
+// (lib/narrow precedes lib/enclose in the layer order, so the enclosures are made here
+// from poly::range_on_unit, the Bernstein hull enclose::enclose_pose builds on.)
 #pragma once
 #include <array>
 #include <cstddef>
