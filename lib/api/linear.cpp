@@ -114,6 +114,14 @@ void check_double_bits(const Call_limits &l, const double *p, size_t n, const ch
 }
 
 }  // namespace
+
+void solve_linear_one(int kind, const double *p0, const double *p1, const pred::Solve_options &opt,
+                      pred::Contact_result &r) {
+  reset(r);
+  if (sgn(opt.delta) > 0 || (!filtered(kind, p0, p1, r) && !certified_hit(kind, p0, p1, opt, r)))
+    r = solve_staged(kind, linear_points(kind), p0, p1, opt);
+}
+
 }  // namespace pccd::api
 
 extern "C" {
@@ -195,10 +203,7 @@ PCCD_API int pccd_solve_linear_batch_d(pccd_kind kind, size_t n, const double *t
       const size_t end = std::min(n, (c + 1) * pccd::api::kChunk);
       for (size_t q = c * pccd::api::kChunk; q < end; ++q) {
         const double *p0 = t0 + 3 * np * q, *p1 = t1 + 3 * np * q;
-        pccd::api::reset(r);
-        if (sgn(so.delta) > 0 ||
-            (!pccd::api::filtered(k, p0, p1, r) && !pccd::api::certified_hit(k, p0, p1, so, r)))
-          r = pccd::api::solve_staged(k, np, p0, p1, so);
+        pccd::api::solve_linear_one(static_cast<int>(k), p0, p1, so, r);
         pccd::api::write(*out, q, r);
       }
     });
