@@ -852,8 +852,9 @@ PCCD_API int pccd_step_report_contact_count(const pccd_step_report *rep, size_t 
 PCCD_API int pccd_step_report_contacts(const pccd_step_report *rep, size_t first, size_t n,
                                        int *kind, size_t *index, double *lo, double *hi,
                                        unsigned char *exact);
-/* Edge i of mesh `mesh` (given, or derived: sorted (a, b) with a < b, each once). */
-PCCD_API int pccd_step_edge(const pccd_step *s, size_t mesh, size_t i, size_t v[2]);
+/* Edges first .. first + n - 1 of mesh `mesh` into v[2k], v[2k + 1] (given or derived
+ * edges as (a, b) with a < b, sorted, each once). PCCD_EINVAL: beyond the edge count. */
+PCCD_API int pccd_step_edges(const pccd_step *s, size_t mesh, size_t first, size_t n, size_t *v);
 /* Sizes of mesh `mesh`: vertices, faces, edges, isolated points (pointers may be NULL). */
 PCCD_API int pccd_step_mesh_counts(const pccd_step *s, size_t mesh, size_t *nv, size_t *nf,
                                    size_t *ne, size_t *np);

@@ -238,13 +238,15 @@ PCCD_API int pccd_step_report_contacts(const pccd_step_report *rep, size_t first
   });
 }
 
-PCCD_API int pccd_step_edge(const pccd_step *s, size_t mesh, size_t i, size_t v[2]) {
+PCCD_API int pccd_step_edges(const pccd_step *s, size_t mesh, size_t first, size_t n, size_t *v) {
   return guard(__func__, [&] {
     const pccd::step::Mesh_range &r = pccd::api::mesh_at(s, mesh);
-    require(v, "v");
-    if (i >= r.ne)
-      throw Input_error("i: " + std::to_string(i) + " out of range (" + std::to_string(r.ne) + " edges)");
-    for (int k = 0; k < 2; ++k) v[k] = s->set.edges[r.e0 + i][k] - r.v0;
+    if (first > r.ne || n > r.ne - first)
+      throw Input_error("n: edges " + std::to_string(first) + " .. " + std::to_string(first + n) +
+                        " are beyond the " + std::to_string(r.ne) + " edges");
+    if (n) require(v, "v");
+    for (size_t i = 0; i < n; ++i)
+      for (int k = 0; k < 2; ++k) v[2 * i + k] = s->set.edges[r.e0 + first + i][k] - r.v0;
     return PCCD_OK;
   });
 }
