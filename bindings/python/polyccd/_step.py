@@ -55,15 +55,14 @@ class StepResult:
 
 def _mesh(step, where, v0, v1, faces, edges, points):
     """Adds one mesh to the step handle; InputError names its place with `where`."""
-    a0 = _float64_array(v0, f"{where}V0", "(n, 3)", lambda s: len(s) == 2 and s[1] == 3)
-    a1 = _float64_array(v1, f"{where}V1", "(n, 3)", lambda s: len(s) == 2 and s[1] == 3)
+    # Messages name V0, V1 as the C library does: v_t0, v_t1.
+    a0 = _float64_array(v0, f"{where}v_t0", "(n, 3)", lambda s: len(s) == 2 and s[1] == 3)
+    a1 = _float64_array(v1, f"{where}v_t1", "(n, 3)", lambda s: len(s) == 2 and s[1] == 3)
     if a0.shape != a1.shape:
-        raise InputError(f"{where}V1: expected shape {a0.shape} like V0, got {a1.shape}")
+        raise InputError(f"{where}v_t1: expected shape {a0.shape} like v_t0, got {a1.shape}")
     nf, f = _indices(np.zeros((0, 3), np.uint32) if faces is None else faces, f"{where}faces", 3)
     ne, e = (0, None) if edges is None else _indices(edges, f"{where}edges", 2)
-    n_p, p = (0, None) if points is None else _indices(np.asarray(points).reshape(-1, 1)
-                                                      if isinstance(points, np.ndarray) else
-                                                      [[x] for x in points], f"{where}points", 1)
+    n_p, p = (0, None) if points is None else _points(points, f"{where}points")
     out = ffi.new("size_t *")
     rc = lib.pccd_step_add_mesh_d(step, ffi.from_buffer("double[]", a0), ffi.from_buffer("double[]", a1),
                                   len(a0), ffi.from_buffer("unsigned int[]", f), nf,
@@ -77,6 +76,17 @@ def _mesh(step, where, v0, v1, faces, edges, points):
             raise type(err)(f"{where}{err}") from None
     check(rc)
     return out[0]
+
+
+def _points(points, where):
+    """(n, uint32 array) of a 1-D sequence of vertex indices, or InputError naming the entry."""
+    a = np.asarray(points)
+    if a.ndim != 1 or (a.size and a.dtype.kind not in "iu"):
+        raise InputError(f"{where}: expected a 1-D sequence of integer vertex indices")
+    bad = np.flatnonzero((a < 0) | (a > 2 ** 32 - 1)) if a.size else []
+    if len(bad):
+        raise InputError(f"{where}[{bad[0]}]: index {int(a[bad[0]])} is not a valid 0-based index")
+    return len(a), np.ascontiguousarray(a, dtype=np.uint32)
 
 
 def _obstacle(k, ob):
@@ -172,7 +182,8 @@ def check_step(V0, V1, faces, edges=None, *, points=None, obstacles=(), min_dist
     within that distance as touching. first_contact=False only decides whether
     anything touches (cheaper: it stops at the first contacts found); all_contacts=True
     reports every touching pair with its own first time. threads (default 1) never
-    changes an answer. Returns a StepResult."""
+    changes an answer. Errors name V0, V1 as v_t0, v_t1 (the C arguments), e.g.
+    "obstacles[0].v_t1[4][2]: NaN is not a finite number". Returns a StepResult."""
     mode = 2 if all_contacts else (0 if first_contact else 1)
     step, nmeshes, rep = _solve(V0, V1, faces, edges, points, obstacles, min_distance, mode,
                                 threads, limits)
