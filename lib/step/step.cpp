@@ -8,6 +8,7 @@
 #include "arith/convert.h"
 #include "pred/features.h"
 #include "scene/combine.h"
+#include "step/separate.h"
 #include "step/tree.h"
 #include "util/thread_pool.h"
 #include "util/work_budget.h"
@@ -95,6 +96,10 @@ class Driver {
         std::memcpy(p1 + 3 * i, &s_.x1[3 * size_t(pts[i])], 3 * sizeof(double));
       }
       ++out.candidates;
+      if (separated(kind, p0, p1, reach_)) {  // separate.h: certified, never a contact
+        ++out.by_stage[pred::STAGE_BOUNDS];
+        return;
+      }
       opt_.solver(kind, p0, p1, solve_, r);
       ++out.by_stage[r.stage >= 0 && r.stage < 5 ? r.stage : 0];
       if (r.collides) {
