@@ -45,7 +45,7 @@ void frame_velocity(const Step_set &s, double u[3]) {
 
 class Driver {
  public:
-  Driver(const Step_set &s, const Step_options &opt) : s_(s), opt_(opt) {
+  Driver(const Step_set &s, const Step_options &opt, util::Thread_pool &pool) : s_(s), opt_(opt) {
     solve_ = opt.solve;
     solve_.want_time = opt.mode != DECIDE;
     reach_ = boxes::reach_of(opt.solve.delta);
@@ -73,9 +73,13 @@ class Driver {
     }
     for (size_t e = 0; e < eb_.size(); ++e) eb_[e] = boxes::hull(vb_[s.edges[e][0]], vb_[s.edges[e][1]]);
     for (size_t k = 0; k < pb.size(); ++k) pb[k] = vb_[s.points[k]];
-    faces_ = std::make_unique<Box_tree>(fb);
-    edges_ = std::make_unique<Box_tree>(eb_);
-    points_ = std::make_unique<Box_tree>(pb);
+    std::vector<Box> ub(s.used.size());
+    for (size_t i = 0; i < ub.size(); ++i) ub[i] = vb_[s.used[i]];
+    // The four trees are independent: built at once on the pool. used_ serves only its
+    // curve order (queries in that order are coherent).
+    std::unique_ptr<Box_tree> *trees[4] = {&used_, &faces_, &edges_, &points_};
+    const std::vector<Box> *from[4] = {&ub, &fb, &eb_, &pb};
+    pool.parallel_for(4, [&](size_t k) { *trees[k] = std::make_unique<Box_tree>(*from[k]); });
     nu_ = s.used.size();
     ne_ = s.edges.size();
     np_ = s.points.size();
@@ -110,7 +114,7 @@ class Driver {
     const size_t end = std::min(total_, (c + 1) * kChunk);
     for (size_t q = c * kChunk; q < end && !done; ++q) {
       if (q < nu_) {
-        const uint32_t v = s_.used[q];
+        const uint32_t v = s_.used[used_->at(static_cast<uint32_t>(q))];
         faces_->query(grown(vb_[v]), [&](uint32_t f) {
           const auto &F = s_.faces[f];
           if (done || F[0] == v || F[1] == v || F[2] == v || !s_.checked(s_.vmesh[v], s_.fmesh[f])) return;
@@ -118,16 +122,16 @@ class Driver {
           candidate(pred::VERTEX_FACE, v, static_cast<uint32_t>(f), pts, 4);
         });
       } else if (q < nu_ + ne_) {
-        const uint32_t e = static_cast<uint32_t>(q - nu_);
-        const auto &E = s_.edges[e];
-        edges_->query(grown(eb_[e]), [&](uint32_t g) {
-          if (done || g <= e) return;
-          const auto &G = s_.edges[g];
-          if (E[0] == G[0] || E[0] == G[1] || E[1] == G[0] || E[1] == G[1] ||
-              !s_.checked(s_.emesh[e], s_.emesh[g]))
+        // Edges in curve order, each against the edges after it on the curve.
+        const uint32_t pos = static_cast<uint32_t>(q - nu_), e = edges_->at(pos);
+        edges_->query_after(grown(eb_[e]), pos + 1, [&](uint32_t g) {
+          const uint32_t lo = std::min(e, g), hi = std::max(e, g);
+          const auto &E = s_.edges[lo], &G = s_.edges[hi];
+          if (done || E[0] == G[0] || E[0] == G[1] || E[1] == G[0] || E[1] == G[1] ||
+              !s_.checked(s_.emesh[lo], s_.emesh[hi]))
             return;
           const uint32_t pts[4] = {E[0], E[1], G[0], G[1]};
-          candidate(pred::EDGE_EDGE, e, g, pts, 4);
+          candidate(pred::EDGE_EDGE, lo, hi, pts, 4);
         });
       } else if (q < nu_ + ne_ + np_) {
         const size_t k = q - nu_ - ne_;
@@ -183,7 +187,7 @@ class Driver {
   pred::Solve_options solve_;
   double reach_ = 0;
   std::vector<Box> vb_, eb_;
-  std::unique_ptr<Box_tree> faces_, edges_, points_;
+  std::unique_ptr<Box_tree> used_, faces_, edges_, points_;
   size_t nu_ = 0, ne_ = 0, np_ = 0, total_ = 0;
 };
 
@@ -235,10 +239,10 @@ void combine(const Driver &d, const Step_options &opt, std::vector<Step_contact>
 
 Step_report solve_step(const Step_set &s, const Step_options &opt) {
   Step_report rep;
-  const Driver d(s, opt);
+  util::Thread_pool pool(opt.threads);
+  const Driver d(s, opt, pool);
   const size_t chunks = (d.queries() + kChunk - 1) / kChunk;
   std::vector<Chunk_out> outs(chunks);
-  util::Thread_pool pool(opt.threads);
   size_t ran = chunks;
   if (opt.mode == DECIDE) {
     for (size_t first = 0; first < chunks; first += kRound) {

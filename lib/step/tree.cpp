@@ -32,11 +32,12 @@ Box_tree::Box_tree(const std::vector<Box> &boxes) {
       lo[a] = std::min(lo[a], x);
       hi[a] = std::max(hi[a], x);
     }
-  double scale[3];
-  for (int a = 0; a < 3; ++a) {
-    const double w = hi[a] - lo[a];
-    scale[a] = w > 0 && w < 1e300 ? 1023.0 / w : 0.0;
-  }
+  // One scale for all axes (the largest extent): a thin axis (a flat cloth) then adds
+  // few bits to the codes instead of spreading its noise over all of them.
+  double w = 0;
+  for (int a = 0; a < 3; ++a) w = std::max(w, hi[a] - lo[a]);
+  const double unit = w > 0 && w < 1e300 ? 1023.0 / w : 0.0;
+  const double scale[3] = {unit, unit, unit};
   std::vector<uint32_t> code(n);
   for (size_t i = 0; i < n; ++i) {
     uint32_t m = 0;
@@ -60,20 +61,16 @@ Box_tree::Box_tree(const std::vector<Box> &boxes) {
   }
   sorted_.resize(n);
   for (size_t k = 0; k < n; ++k) sorted_[k] = boxes[order_[k]];
-  std::vector<Box> level((n + kLeaf - 1) / kLeaf);
-  for (size_t i = 0; i < level.size(); ++i) {
+  size_t leaves = (n + kLeaf - 1) / kLeaf, width = 1;
+  while (width < leaves) width *= 2;
+  first_leaf_ = static_cast<uint32_t>(width - 1);
+  nodes_.assign(2 * width - 1, boxes::empty_box());
+  for (size_t i = 0; i < leaves; ++i) {
     Box h = sorted_[i * kLeaf];
     for (size_t k = i * kLeaf + 1; k < std::min(n, (i + 1) * kLeaf); ++k) h = boxes::hull(h, sorted_[k]);
-    level[i] = h;
+    nodes_[first_leaf_ + i] = h;
   }
-  levels_.push_back(std::move(level));
-  while (levels_.back().size() > 1) {
-    const std::vector<Box> &below = levels_.back();
-    std::vector<Box> up((below.size() + 1) / 2);
-    for (size_t i = 0; i < up.size(); ++i)
-      up[i] = 2 * i + 1 < below.size() ? boxes::hull(below[2 * i], below[2 * i + 1]) : below[2 * i];
-    levels_.push_back(std::move(up));
-  }
+  for (size_t k = first_leaf_; k-- > 0;) nodes_[k] = boxes::hull(nodes_[2 * k + 1], nodes_[2 * k + 2]);
 }
 
 }  // namespace pccd::step

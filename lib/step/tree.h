@@ -1,9 +1,10 @@
 // A bounding-volume hierarchy over boxes, rebuilt for every step (the boxes move).
 //
 // Build: the boxes are ordered along a Morton curve of their centres (30-bit codes,
-// 10 bits per axis over the centres' bounding box, a stable radix sort, so equal codes
-// keep index order), cut into leaves of kLeaf consecutive boxes, and the levels above
-// are hulls of adjacent pairs: an implicit balanced tree, O(n) after the sort, with no
+// 10 bits per axis over the centres' bounding cube, a stable radix sort, so equal codes
+// keep index order), cut into leaves of kLeaf consecutive boxes, and a complete binary
+// tree in array form above them (node k's children 2k + 1, 2k + 2; the leaves last, in
+// curve order, padded with empty boxes to a power of two): O(n) after the sort, no
 // pointers. The order only changes how fast a query runs, never what it finds: a
 // query visits exactly the boxes that meet it (closed boxes), whatever the order.
 #pragma once
@@ -26,30 +27,43 @@ class Box_tree {
   // of the boxes alone).
   template <class F>
   void query(const Box &q, F &&visit) const {
+    query_after(q, 0, visit);
+  }
+
+  // query, restricted to the boxes at curve positions >= from (a self-join visits each
+  // pair once: box i at position p queries with from = p + 1).
+  template <class F>
+  void query_after(const Box &q, uint32_t from, F &&visit) const {
     if (order_.empty()) return;
-    struct Item { uint32_t level, index; };
+    struct Item { uint32_t node, first, end; };  // node and its leaves [first, end)
     Item stack[64];
     int top = 0;
-    stack[top++] = {static_cast<uint32_t>(levels_.size() - 1), 0};
+    stack[top++] = {0, 0, first_leaf_ + 1};
+    const uint32_t from_leaf = from / kLeaf;
     while (top) {
       const Item it = stack[--top];
-      if (!boxes::boxes_meet(levels_[it.level][it.index], q)) continue;
-      if (it.level == 0) {
-        const uint32_t end = std::min<uint32_t>(static_cast<uint32_t>(order_.size()), (it.index + 1) * kLeaf);
-        for (uint32_t k = it.index * kLeaf; k < end; ++k)
-          if (boxes::boxes_meet(sorted_[k], q)) visit(order_[k]);
+      if (it.end <= from_leaf || !boxes::boxes_meet(nodes_[it.node], q)) continue;
+      if (it.node >= first_leaf_) {
+        const uint32_t leaf = it.node - first_leaf_;
+        const uint32_t end = std::min<uint32_t>(static_cast<uint32_t>(order_.size()), (leaf + 1) * kLeaf);
+        for (uint32_t j = std::max(leaf * kLeaf, from); j < end; ++j)
+          if (boxes::boxes_meet(sorted_[j], q)) visit(order_[j]);
         continue;
       }
-      const uint32_t c = 2 * it.index, below = it.level - 1;
-      if (c + 1 < levels_[below].size()) stack[top++] = {below, c + 1};
-      stack[top++] = {below, c};
+      const uint32_t mid = it.first + (it.end - it.first) / 2;
+      stack[top++] = {2 * it.node + 2, mid, it.end};
+      stack[top++] = {2 * it.node + 1, it.first, mid};
     }
   }
 
+  size_t size() const { return order_.size(); }
+  uint32_t at(uint32_t position) const { return order_[position]; }  // index at a curve position
+
  private:
-  std::vector<uint32_t> order_;          // box indices along the curve
-  std::vector<Box> sorted_;              // the boxes in that order
-  std::vector<std::vector<Box>> levels_; // levels_[0][i]: hull of leaf i; top: the root
+  std::vector<uint32_t> order_;  // box indices along the curve
+  std::vector<Box> sorted_;      // the boxes in that order
+  std::vector<Box> nodes_;       // a complete binary tree in array form; leaves last
+  uint32_t first_leaf_ = 0;      // nodes_[first_leaf_ + i]: hull of leaf i's boxes
 };
 
 }  // namespace pccd::step

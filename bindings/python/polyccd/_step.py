@@ -1,6 +1,7 @@
 """Whole simulator steps of deforming meshes (pccd_step_*): check_step and
 collision_free_stepsize. Vertices move on straight paths from V0 (t = 0) to V1 (t = 1),
 float64 arrays taken at their exact values; every answer comes from the C library."""
+import threading
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Optional
@@ -53,13 +54,28 @@ class StepResult:
     edges: tuple = field(repr=False)
 
 
-def _mesh(step, where, v0, v1, faces, edges, points):
-    """Adds one mesh to the step handle; InputError names its place with `where`."""
-    # Messages name V0, V1 as the C library does: v_t0, v_t1.
+def _positions(where, v0, v1):
+    """float64 (n, 3) arrays of V0, V1; messages name them as the C library does: v_t0, v_t1."""
     a0 = _float64_array(v0, f"{where}v_t0", "(n, 3)", lambda s: len(s) == 2 and s[1] == 3)
     a1 = _float64_array(v1, f"{where}v_t1", "(n, 3)", lambda s: len(s) == 2 and s[1] == 3)
     if a0.shape != a1.shape:
         raise InputError(f"{where}v_t1: expected shape {a0.shape} like v_t0, got {a1.shape}")
+    return a0, a1
+
+
+def _checked(where, rc):
+    """check(rc), with `where` (an obstacle's place) before the C message's place."""
+    if rc != 0 and where:
+        try:
+            check(rc)
+        except InputError as err:
+            raise type(err)(f"{where}{err}") from None
+    check(rc)
+
+
+def _mesh(step, where, v0, v1, faces, edges, points):
+    """Adds one mesh to the step handle; InputError names its place with `where`."""
+    a0, a1 = _positions(where, v0, v1)
     nf, f = _indices(np.zeros((0, 3), np.uint32) if faces is None else faces, f"{where}faces", 3)
     ne, e = (0, None) if edges is None else _indices(edges, f"{where}edges", 2)
     n_p, p = (0, None) if points is None else _points(points, f"{where}points")
@@ -69,12 +85,7 @@ def _mesh(step, where, v0, v1, faces, edges, points):
                                   ffi.NULL if e is None else ffi.from_buffer("unsigned int[]", e), ne,
                                   ffi.NULL if p is None else ffi.from_buffer("unsigned int[]", p), n_p,
                                   out)
-    if rc != 0 and where:
-        try:
-            check(rc)
-        except InputError as err:  # the C message names the place within the mesh
-            raise type(err)(f"{where}{err}") from None
-    check(rc)
+    _checked(where, rc)
     return out[0]
 
 
@@ -97,15 +108,45 @@ def _obstacle(k, ob):
     return (ob[0], ob[0], ob[1]) if len(ob) == 2 else tuple(ob)
 
 
+def _topology(faces, edges, points, sizes, obs_faces):
+    """A key of the connectivity (or None when it cannot be hashed cheaply)."""
+    parts = [faces, edges, points] + list(obs_faces)
+    if not all(x is None or isinstance(x, np.ndarray) for x in parts):
+        return None
+    return (tuple(sizes),) + tuple(None if x is None else (x.dtype.str, x.shape, x.tobytes()) for x in parts)
+
+
+_cache = threading.local()  # the last step handle of this thread, by topology
+
+
 def _build(V0, V1, faces, edges, points, obstacles):
+    """A step handle of the mesh and obstacles. A simulator calls with the same
+    connectivity every step: then the last handle of this thread is reused, only its
+    positions replaced (pccd_step_set_positions_d checks them as adding would)."""
+    obs = [_obstacle(k, ob) for k, ob in enumerate(obstacles)]
+    try:
+        sizes = [len(V0)] + [len(o[0]) for o in obs]
+    except TypeError:
+        sizes = None
+    key = None if sizes is None else _topology(faces, edges, points, sizes, [o[2] for o in obs])
+    hit = getattr(_cache, "last", None)
+    if key is not None and hit is not None and hit[0] == key:
+        step = hit[1]
+        for m, (where, p0, p1) in enumerate([("", V0, V1)] + [(f"obstacles[{k}].", o[0], o[1])
+                                                             for k, o in enumerate(obs)]):
+            a0, a1 = _positions(where, p0, p1)
+            _checked(where, lib.pccd_step_set_positions_d(step, m, ffi.from_buffer("double[]", a0),
+                                                          ffi.from_buffer("double[]", a1), len(a0)))
+        return step, len(obs) + 1
     step = handles.new("step")
     _mesh(step, "", V0, V1, faces, edges, points)
-    obs = [_obstacle(k, ob) for k, ob in enumerate(obstacles)]
     for k, (o0, o1, of) in enumerate(obs):
         _mesh(step, f"obstacles[{k}].", o0, o1, of, None, None)
     for i in range(1, len(obs) + 1):  # obstacles: against the mesh only
         for j in range(i, len(obs) + 1):
             check(lib.pccd_step_set_pair_check(step, i, j, 0))
+    if key is not None:
+        _cache.last = (key, step)
     return step, len(obs) + 1
 
 
