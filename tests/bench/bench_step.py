@@ -1,12 +1,13 @@
 """Whole simulator steps: polyccd.check_step against ipctk 1.6 (IPC Toolkit, Tight
 Inclusion CCD behind each of its CPU broad phases) on the same MuJoCo cloth frames.
 
-    .venv/bin/python tests/bench/bench_step.py --sizes 32,64,224 --repeat 3
+    .venv/bin/python tests/bench/bench_step.py --sizes 32,64,224@64 --repeat 3
 
 Frames: tests/bench/step_frames.py (a MuJoCo flex cloth of 2 n^2 triangles with
 self-collision falling onto a sphere above a floor; steps "falling", "impact", "draped";
 V0, V1 the flex vertex positions at consecutive steps; the sphere and floor as static
-obstacle meshes). For each frame and min_distance, on 1 and 2 threads
+obstacle meshes; "224@64": the 64 x 64 cloth's frames resampled onto a 224 x 224 grid,
+100,352 triangles, since MuJoCo steps that model too slowly here). For each frame and min_distance, on 1 and 2 threads
 (ipctk.set_num_threads; polyccd's threads=):
   - polyccd first: check_step (the exact first time, the pairs touching first, the step
     size); polyccd decide: check_step(first_contact=False);
@@ -124,7 +125,8 @@ def table(rows, threads):
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--sizes", default="32,64,224", help="cloth resolutions n (2 n^2 triangles)")
+    ap.add_argument("--sizes", default="32,64,224@64",
+                    help="cloth resolutions n (2 n^2 triangles), n@m: m resampled onto n")
     ap.add_argument("--phases", default=",".join(step_frames.PHASES))
     ap.add_argument("--min-distance", default="0,0.001", help="min_distance values")
     ap.add_argument("--threads", default="1,2")
@@ -133,14 +135,19 @@ def main(argv=None):
     a = ap.parse_args(argv)
     threads = [int(x) for x in a.threads.split(",")]
     rows = []
-    for n in (int(x) for x in a.sizes.split(",")):
-        frames, F, obstacles = step_frames.load(n)
+    for size in a.sizes.split(","):
+        # "n": MuJoCo's n x n cloth; "n@m": MuJoCo's m x m cloth resampled onto n x n
+        n, _, m = size.partition("@")
+        frames, F, obstacles = step_frames.load(int(m or n))
+        label = f"cloth {n}" if not m else f"cloth {n} (from {m})"
+        if m:
+            frames, F = step_frames.upsampled(frames, int(m), int(n))
         for phase in a.phases.split(","):
             if phase not in frames:
                 continue
             V0, V1 = frames[phase]
             for delta in (float(x) for x in a.min_distance.split(",")):
-                row = run_frame(f"cloth {n} {phase}", V0, V1, F, obstacles, delta, threads, a.repeat)
+                row = run_frame(f"{label} {phase}", V0, V1, F, obstacles, delta, threads, a.repeat)
                 rows.append(row)
                 print(table([row], threads).splitlines()[-1], flush=True)
     print()

@@ -107,3 +107,31 @@ def load(n):
     z = np.load(path)
     frames = {p: (z[f"{p}_V0"], z[f"{p}_V1"]) for p in PHASES if f"{p}_V0" in z}
     return frames, z["faces"], obstacles()
+
+
+def grid_faces(n):
+    """Triangles of an (n + 1) x (n + 1) vertex grid, vertex i (n + 1) + j, as MuJoCo's
+    flexcomp grid numbers them."""
+    i, j = np.meshgrid(np.arange(n), np.arange(n), indexing="ij")
+    a = (i * (n + 1) + j).ravel()
+    b, c, d = a + n + 2, a + 1, a + n + 1
+    return np.concatenate([np.stack([a, b, c], 1), np.stack([a, d, b], 1)]).astype(np.int64)
+
+
+def upsampled(frames, n_src, n_dst):
+    """The frames of an n_src cloth resampled (bilinear in the grid parameters) onto an
+    n_dst grid: a finer mesh on the same simulated surfaces, for sizes MuJoCo steps too
+    slowly here (the 100k-triangle model)."""
+    u = np.linspace(0, n_src, n_dst + 1)
+    i0 = np.minimum(np.floor(u).astype(int), n_src - 1)
+    w = (u - i0)[:, None, None]
+    out = {}
+    for phase, (a, b) in frames.items():
+        pair = []
+        for X in (a, b):
+            G = X.reshape(n_src + 1, n_src + 1, 3)
+            rows = G[i0] * (1 - w) + G[i0 + 1] * w                       # along i
+            cols = rows[:, i0] * (1 - w.transpose(1, 0, 2)) + rows[:, i0 + 1] * w.transpose(1, 0, 2)
+            pair.append(np.ascontiguousarray(cols.reshape(-1, 3)))
+        out[phase] = tuple(pair)
+    return out, grid_faces(n_dst)
