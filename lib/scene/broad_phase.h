@@ -10,7 +10,7 @@ namespace pccd::scene {
 // The values of pccd_broad_phase (polyccd.h; checked in lib/api/constants.cpp).
 enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3, bvh = 4 };
 
-// The default (automatic), chosen by measurement (README, "Broad phases";
+// The default (automatic), chosen by measurement (docs/design.md, "Broad phases";
 // tests/bench/bench_bvh.py, tests/bench/bench_online.py). online: the pair comes from an
 // on-line index (the stored side's trees exist already and are shared by every query):
 // range; otherwise a scene's body pair: bvh (the hierarchies are built with the bodies).

@@ -36,13 +36,12 @@ def solve_linear_many(kind, t0, t1, *, time_tolerance="1e-12", want_time=True, w
     """Every query k of t0[k], t1[k] (float64 arrays of shape (n, npoints, 3): points
     moving linearly from t0 to t1) solved in one call on `threads` workers; answers
     do not depend on the number of threads. Returns a LinearBatch of numpy arrays."""
-    code = kind_code(kind, linear=True)
+    code = kind_code(kind)
     a0 = linear_batch(t0, "t0", _NPOINTS[kind])
     a1 = linear_batch(t1, "t1", _NPOINTS[kind])
     if a0.shape != a1.shape:
         raise InputError(f"t1: expected shape {a0.shape} like t0, got {a1.shape}")
-    if not isinstance(threads, int) or isinstance(threads, bool) or not 1 <= threads <= 1024:
-        raise InputError(f"opt.threads: {threads!r} is outside 1..1024")
+    threads = _limits.thread_count(threads)
     _limits.warn_threads(threads)
     n = a0.shape[0]
     if limits is None:

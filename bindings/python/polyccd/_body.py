@@ -131,6 +131,11 @@ class _Body:
         return tuple(counts)
 
 
+# The 12 outward-facing triangles of a box whose corner i is (+-x, +-y, +-z) by the bits of i.
+_BOX_TRIANGLES = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
+                  [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
+
+
 class Mesh(_Body):
     """A triangle mesh: vertices (n, 3) and triangles (m, 3) of 0-based indices.
     Degenerate triangles (repeated indices, collinear points) are accepted as given."""
@@ -156,6 +161,46 @@ class Mesh(_Body):
     def __reduce__(self):
         """Pickles as the exact inputs; unpickling builds a new Mesh from them."""
         return _rebuild, (Mesh, self._inputs)
+
+    @classmethod
+    def box(cls, extents):
+        """The closed box [-a/2, a/2] x [-b/2, b/2] x [-c/2, c/2] of extents (a, b, c) > 0
+        as 12 outward-facing triangles; halving a double is exact, so its corners are
+        exactly +-extents/2."""
+        e = [float(x) for x in _items(extents, "extents", "3 numbers")]
+        if len(e) != 3 or not all(np.isfinite(x) and x > 0 for x in e):
+            raise InputError(f"extents: expected 3 positive finite numbers, got {show(extents)}")
+        h = [x / 2 for x in e]
+        v = [[h[0] * (1 if i & 1 else -1), h[1] * (1 if i & 2 else -1), h[2] * (1 if i & 4 else -1)]
+             for i in range(8)]
+        return cls(v, _BOX_TRIANGLES)
+
+    @classmethod
+    def cylinder(cls, radius, height, sections=16):
+        """A closed prism around the cylinder of this radius and height (axis z, centred at
+        the origin): the regular `sections`-gon whose inscribed circle has radius at least
+        `radius` (vertices at radius / cos(pi / sections), enlarged by 1e-12 relative, which
+        covers the rounding of the doubles, about 1e-16 relative), so the prism contains
+        the cylinder; its distance from the cylinder is at most radius (1 / cos(pi /
+        sections) - 1), 2 % for 16 sections. Collisions are those of the prism."""
+        r, hgt = float(radius), float(height)
+        if not (np.isfinite(r) and r > 0 and np.isfinite(hgt) and hgt > 0):
+            raise InputError(f"radius, height: expected positive finite numbers, got "
+                             f"{show(radius)}, {show(height)}")
+        if not isinstance(sections, numbers.Integral) or sections < 3:
+            raise InputError(f"sections: expected an integer >= 3, got {show(sections)}")
+        big = r / np.cos(np.pi / sections) * (1 + 1e-12)
+        a = 2 * np.pi * (np.arange(sections) + 0.5) / sections
+        ring = [[big * np.cos(x), big * np.sin(x)] for x in a]
+        h = hgt / 2
+        v = [[x, y, -h] for x, y in ring] + [[x, y, h] for x, y in ring]
+        t = []
+        for i in range(sections):
+            j = (i + 1) % sections
+            t += [[i, j, sections + j], [i, sections + j, sections + i]]
+        for i in range(1, sections - 1):
+            t += [[0, i + 1, i], [sections, sections + i, sections + i + 1]]
+        return cls(v, t)
 
     @classmethod
     def from_trimesh(cls, mesh):
@@ -270,21 +315,6 @@ class Spheres(_Body):
     def __reduce__(self):
         """Pickles as the exact inputs; unpickling builds new Spheres from them."""
         return _rebuild, (Spheres, self._inputs)
-
-    @classmethod
-    def from_gemmi(cls, source, select=None, *, waters=False, altloc="first", radius_scale=1):
-        """The atoms of a molecule as balls of van der Waals radius (Bondi 1964 for H C N
-        O S P F Cl, else gemmi's table to its 2 decimals; times radius_scale, exact).
-
-        source: a PDB or mmCIF path (str or os.PathLike): the centres are the decimal
-        texts of the file exactly ("14.264" is 14264/1000, not a double); or a
-        gemmi.Structure / gemmi.Model in memory: the centres are gemmi's float64
-        positions at their exact binary values. First model only; select, waters,
-        altloc as polyccd.apps._data.load_pdb. The result carries .info (an AtomInfo
-        naming each ball). Needs gemmi (imported here, not by `import polyccd`)."""
-        from .apps._data import spheres_from_gemmi
-        return spheres_from_gemmi(source, select, waters=waters, altloc=altloc,
-                                  radius_scale=radius_scale)
 
     @property
     def centers(self):

@@ -1,4 +1,4 @@
-"""The on-line collision problem (bindings/python/API.md, "On-line index").
+"""The on-line collision problem (docs/python.md, "On-line index").
 
 Only conversion here: the index is built in C (pccd_index_new: the stored body's
 primitives as lifted points in range trees) and queried there (pccd_index_query); the

@@ -1,15 +1,15 @@
-"""A result's contact as a trimesh.Scene (SceneResult.to_trimesh): every body at a time
+"""A result's contact as a trimesh.Scene (polyccd.apps.to_trimesh): every body at a time
 t, the touching features in red.
 
 Drawing only, in floating point, like polyccd.apps._render: each body's pose at t is
-taken exactly from its Motion and rounded once (_render._float_pose), the geometry is
+taken exactly from its Motion and rounded once (_draw_geometry._float_pose), the geometry is
 the shapes' float arrays (Mesh.vertices / .triangles, Spheres.centers / .radii). Balls
 are icospheres (subdivision 1); touching edges are red line paths, touching vertices
 red points, touching triangles and balls red faces.
 """
 import numpy as np
 
-from ._render import BODY_COLORS, HIGHLIGHT, _arrays, _contacts, _edges_of, _float_pose, _parts
+from ._draw_geometry import BODY_COLORS, HIGHLIGHT, _arrays, _contacts, _edges_of, _float_pose, _parts
 
 
 def _rgba(hex_color):

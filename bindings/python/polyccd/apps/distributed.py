@@ -1,18 +1,18 @@
-"""polyccd.distributed: batches of polyccd work mapped over a dask.distributed cluster.
+"""polyccd.apps.distributed: batches of polyccd work mapped over a dask.distributed cluster.
 
-    import polyccd.distributed as pd
+    import polyccd.apps.distributed as pd
     with pd.cluster(workers=2) as client:            # an embedded LocalCluster
         for r in pd.index_map(body, queries, client=client):
             ...                                        # SceneResults, in query order
 
 Every map splits its items into chunks, submits one task per chunk and yields the
 answers in the order of the items as they stream back (a tqdm bar on stderr when both
-stdout and stderr are terminals, see polyccd.apps._progress), each equal to the serial
+stdout and stderr are terminals, see _progress), each equal to the serial
 call's answer: the workers run the same library calls on the same exact inputs.
 
 Shipping: the C handles cannot be pickled, so bodies, motions and Index objects travel
 as their exact inputs (Mesh / Spheres / Motion / Body pickle that way, see
-polyccd._body) and are rebuilt on arrival. A body shared by every task (the Index's
+docs/python.md) and are rebuilt on arrival. A body shared by every task (the Index's
 stored body) is scattered to every worker once (client.scatter(broadcast=True)) and
 each worker process builds its Index from it once, lazily on its first task, then
 keeps it (_cached_index). Files (CSV query sets, scene and query files, corpus cases)
@@ -29,15 +29,13 @@ import threading
 import uuid
 from contextlib import contextmanager
 
-from ._errors import InputError
-from ._index import Index
-from ._scene import Body, _bodies_list
-from .apps._progress import bar
+from .. import Body, Index, InputError
+from ._progress import bar
 
 try:
     import distributed as _distributed
 except ImportError as _e:  # pragma: no cover - depends on the install
-    raise ImportError("polyccd.distributed needs dask.distributed: pip install "
+    raise ImportError("polyccd.apps.distributed needs dask.distributed: pip install "
                       "'polyccd[dask]' (or dask[distributed])") from _e
 
 __all__ = ["cluster", "map_chunks", "index_map", "check_map", "corpus_map", "queries_map"]
@@ -77,7 +75,7 @@ def _client(client):
             return _distributed.get_client()
         except ValueError:
             raise InputError("client: no dask.distributed Client given and none is active "
-                             "(use `with polyccd.distributed.cluster() as client:`)") from None
+                             "(use `with polyccd.apps.distributed.cluster() as client:`)") from None
     return client
 
 
@@ -167,7 +165,7 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
     body = index.body if isinstance(index, Index) else index
     if not isinstance(body, Body):
         raise InputError(f"index: expected a polyccd.Index or polyccd.Body, got {type(index).__name__}")
-    queries = _bodies_list([q if isinstance(q, Body) else Body(*q) for q in queries])
+    queries = [q if isinstance(q, Body) else Body(*q) for q in queries]
     token = uuid.uuid4().hex
     answers = map_chunks(_index_chunk, queries, body, token, options, client=client,
                          chunk_size=chunk_size, progress=progress, desc="index queries",
@@ -180,7 +178,7 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
 # ---------------------------------------------------------------------------- files ---
 
 def _check_chunk(paths, threads, limits=None):
-    from .apps._corpus import read_case, solve_case, solve_scene_case
+    from ._corpus import read_case, solve_case, solve_scene_case
     out = []
     for path in paths:
         try:
@@ -201,7 +199,7 @@ def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None, lim
 
 
 def _corpus_chunk(paths):
-    from .apps._corpus import check_case
+    from ._corpus import check_case
     return [check_case(p) for p in paths]
 
 
@@ -213,7 +211,7 @@ def corpus_map(paths, *, client=None, chunk_size=None, progress=None):
 
 
 def _queries_chunk(paths, kind):
-    from .apps._queries import run_file
+    from ._queries import run_file
     out = []
     for path in paths:
         try:
