@@ -341,3 +341,14 @@ def test_work_limit_ends_the_step():
     V0, V1, F, P = meshes[0]
     with pytest.raises(polyccd.LimitError):
         polyccd.check_step(V0, V1, F, points=P, limits=polyccd.Limits(max_work=3))
+
+
+@pytest.mark.parametrize("gap,touches", [(0.0, True), (2.0 ** -50, False)])
+def test_coplanar_min_distance_boundary(gap, touches):
+    # B's vertex exactly 1/4 (or just more) from A's edge x = 0, all in z = 0, static:
+    # the separating-direction filter must leave the exact boundary to the solver.
+    b = [[-0.25 - gap, 0.5, 0], [-2, 0, 0], [-2, 1, 0]]
+    meshes = two_triangles(b, b)
+    truth, (tc, *_rest) = check_against_brute(meshes, min_distance="1/4")
+    assert bool(truth) == touches
+    assert (tc is not None and tc.exact == 0) == touches
