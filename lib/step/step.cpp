@@ -93,6 +93,10 @@ class Driver {
     util::work_step();
     pred::Contact_result r;
     bool done = false;
+    // FIRST: a pair touching only after the chunk's earliest contact so far cannot be
+    // first; the solver may then stop early (until, pred/solve.h). The bound is the
+    // chunk's own, so which pairs drop out depends on the chunk alone, not on threads.
+    pred::Solve_options local = solve_;
     auto candidate = [&](int kind, uint32_t a, uint32_t b, const uint32_t *pts, int n) {
       double p0[12], p1[12];
       for (int i = 0; i < n; ++i) {
@@ -104,9 +108,10 @@ class Driver {
         ++out.by_stage[pred::STAGE_BOUNDS];
         return;
       }
-      opt_.solver(kind, p0, p1, solve_, r);
+      opt_.solver(kind, p0, p1, local, r);
       ++out.by_stage[r.stage >= 0 && r.stage < 5 ? r.stage : 0];
       if (r.collides) {
+        if (opt_.mode == FIRST && r.hi < local.until) local.until = r.hi;
         out.hits.push_back(Step_contact{kind, a, b, r});
         if (stop) done = true;
       }
