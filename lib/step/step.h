@@ -12,7 +12,9 @@
 // the query side's boxes grow by boxes::reach_of(delta) (boxes.h: why one side
 // suffices). Queries (every used vertex against the face tree, every edge against the
 // edge tree, every point against the edge and point trees) run in fixed chunks on the
-// thread pool, each candidate solved as it is found, chunk results kept by index.
+// thread pool, each candidate solved as it is found (first by the separating-direction
+// filter, separate.h; in FIRST mode with the chunk's earliest contact so far as the
+// solver's `until`), chunk results kept by index.
 //
 // Answers (none depends on the broad phase or on the thread count: the broad phase
 // only drops pairs whose boxes are apart, which cannot touch):
