@@ -817,7 +817,7 @@ PCCD_API void pccd_step_free(pccd_step *s);
 
 /* Appends a mesh of nv vertices: vertex i moves from v_t0[3i..3i+2] to v_t1[3i..3i+2].
  * faces: nf index triples (may be 0); edges: ne index pairs, or edges = NULL to derive
- * them from the faces (every side once); points: np isolated points (vertex indices:
+ * them from the faces (every side once; ne is then ignored); points: np isolated points (vertex indices:
  * particles, or rod ends). *index (when not NULL) receives the mesh's position.
  * PCCD_EINVAL, naming the place: s NULL, a NULL array with a nonzero count, a non-finite
  * coordinate ("v_t1[4][2]"), an index out of range ("faces[3][1]: index 12 out of range

@@ -84,7 +84,6 @@ PCCD_API int pccd_step_add_mesh_d(pccd_step *s, const double *v_t0, const double
     require(s, "s");
     const size_t m = pccd::step::add_mesh(s->set, v_t0, v_t1, nv, faces, nf, edges, edges ? ne : 0,
                                           points, np);
-    if (!edges && ne) throw Input_error("edges: is NULL");  // never reached: add_mesh derived them
     if (index) *index = m;
     return PCCD_OK;
   });
