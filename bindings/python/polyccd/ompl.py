@@ -48,6 +48,8 @@ motion validator), not with shortcutting, which keeps sub-edges of linear
 interpolations unchecked; check_path() re-checks any path exactly.
 """
 import math
+import time
+import weakref
 from fractions import Fraction
 
 import numpy as np
@@ -136,6 +138,7 @@ class RobotSpace:
             self.space.setDimensionName(i, name)
         self.si = ob.SpaceInformation(self.space)
         self.errors = []
+        self.counts = {"state": [0, 0, 0.0], "motion": [0, 0, 0.0]}
         cls = _classes()
         self.validity_checker = cls["StateValidityChecker"](self)
         self.motion_validator = cls["MotionValidator"](self)
@@ -223,13 +226,20 @@ class RobotSpace:
 
     def _checked(self, q0, q1, options=None):
         """Robot.check of the segment with this space's options; None after an exception
-        (kept in self.errors)."""
+        (kept in self.errors). Counted in self.counts: [checks, colliding, seconds] by kind
+        ("state": q0 == q1, else "motion")."""
+        count = self.counts["state" if q0 is q1 else "motion"]
+        start = time.perf_counter()
         try:
-            return self.robot.check(q0, q1, self.obstacles,
-                                    **(self.check_options if options is None else options))
+            r = self.robot.check(q0, q1, self.obstacles,
+                                 **(self.check_options if options is None else options))
         except Exception as e:  # a check that does not finish never accepts the motion
             self.errors.append(e)
-            return None
+            r = None
+        count[0] += 1
+        count[1] += r is None or r.collides
+        count[2] += time.perf_counter() - start
+        return r
 
     def is_valid(self, q):
         r = self._checked(q, q)
@@ -274,7 +284,7 @@ def _classes():
 
         def __init__(self, space):
             super().__init__(space.si)
-            self.space = space
+            self.space = weakref.proxy(space)  # the space owns si, which owns this
 
         def isValid(self, state):
             return self.space.is_valid(self.space.q(state))
@@ -284,7 +294,7 @@ def _classes():
 
         def __init__(self, space):
             super().__init__(space.si)
-            self.space = space
+            self.space = weakref.proxy(space)  # the space owns si, which owns this
 
         def checkMotion(self, s1, s2, last_valid=None):
             sp = self.space
