@@ -87,6 +87,20 @@ def joint_path(revolute, q0, q1, t):
     return np.where(revolute, turned, (1 - tt) * q0 + tt * q1)
 
 
+def simplify(si, path, rounds=3):
+    """Shortens an OMPL PathGeometric in place with the simplifications that check every
+    new edge with si's motion validator and create no state by interpolation
+    (reduceVertices, then collapseCloseVertices, up to `rounds` times); returns it."""
+    _, og = _ompl()
+    simplifier = og.PathSimplifier(si)
+    for _ in range(rounds):
+        changed = simplifier.reduceVertices(path)
+        changed = simplifier.collapseCloseVertices(path) or changed
+        if not changed:
+            break
+    return path
+
+
 class RobotSpace:
     """OMPL's state space, SpaceInformation and validators for a polyccd Robot among
     obstacles (see the module comment). joints: the planned joints (names; default every
@@ -211,16 +225,8 @@ class RobotSpace:
         return og.SimpleSetup(self.si)
 
     def simplify(self, path, rounds=3):
-        """Shortens a PathGeometric in place with the simplifications that check every new
-        edge with the motion validator (reduceVertices, collapseCloseVertices); returns it."""
-        _, og = _ompl()
-        simplifier = og.PathSimplifier(self.si)
-        for _ in range(rounds):
-            changed = simplifier.reduceVertices(path)
-            changed = simplifier.collapseCloseVertices(path) or changed
-            if not changed:
-                break
-        return path
+        """simplify(self.si, path, rounds)."""
+        return simplify(self.si, path, rounds)
 
     # ---- the checks behind the validators
 
