@@ -51,6 +51,14 @@ def scene():
     return load_urdf(path), [plate(*WALL, "wall"), plate(*SHELF, "shelf")]
 
 
+def decide_options(robot):
+    """{"first_contact": False} when Robot.check has a decide mode (the edge check needs
+    only "does anything touch?"; the last-valid form asks for the time anyway), else {}."""
+    import inspect
+    return ({"first_contact": False}
+            if "first_contact" in inspect.signature(robot.check).parameters else {})
+
+
 def plan(space, start, goal, seconds, simplify=True):
     """RRTConnect from start to goal (arm joint vectors) on a polyccd.ompl.RobotSpace:
     (waypoints or None, planning seconds, simplifying seconds)."""
@@ -102,12 +110,14 @@ def main(argv=None):
     from polyccd.ompl import RobotSpace
     robot, plates = scene()
     options = dict(self_collision=args.self_collision,
-                   limits=polyccd.Limits(max_seconds=args.check_seconds))
+                   limits=polyccd.Limits(max_seconds=args.check_seconds), **decide_options(robot))
     space = RobotSpace(robot, plates, fixed={"panda_finger_joint1": FINGER}, **options)
     start, goal = np.array(START + (FINGER,)), np.array(GOAL + (FINGER,))
-    straight = robot.check(start, goal, plates, **options)
+    straight = robot.check(start, goal, plates, self_collision=args.self_collision)
     print(f"ompl_panda: Panda ({len(robot.shapes)} collision meshes), plates wall + shelf "
-          f"(2 mm), self-collision {'on' if args.self_collision else 'off'}; the straight "
+          f"(2 mm), self-collision {'on' if args.self_collision else 'off'}, "
+          f"{'decide' if options.get('first_contact') is False else 'first-contact'} mode; "
+          f"the straight "
           f"joint path {'hits ' + straight.contacts[0].b[0] if straight.collides else 'is free'}"
           + (f" at t ~ {straight.first_contact.approx:.4f}" if straight.collides else ""))
     waypoints, planning, simplifying = plan(space, start, goal, args.time,

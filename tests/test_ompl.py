@@ -6,16 +6,15 @@
   library's values of the exact chain path) at sampled rational times, for a small arm
   written here and the Franka Panda (example-robot-data), fixed joints included.
 - The validators on random segments of the small arm among posts: checkMotion(s1, s2)
-  (called from Python and through OMPL's C++ SpaceInformation) equals Robot.check with
-  the brute-force broad phase; the last-valid form returns, for an invalid motion, a
-  fraction strictly below the certified first contact's lower end, a state on the joint
-  path at that fraction, contact-free by an exact static check, and a contact-free path
-  from s1 to it; isValid equals the exact static check. A check that raises (a work
+  (called from Python and through OMPL's C++ SpaceInformation) equals Robot.check (whose
+  broad phases test_robot.py holds to brute force); the last-valid form returns, for an
+  invalid motion, a fraction strictly below the certified first contact's lower end, a
+  state on the joint path at that fraction, contact-free by an exact static check, and
+  a contact-free path from s1 to it; isValid equals the exact static check. A check that raises (a work
   limit) makes the motion invalid and is kept in space.errors.
 - RRTConnect plans the small arm around a post: the path is free by polyccd's check of
   every segment and by exact static checks of dense poses along the joint path.
 """
-import math
 import random
 import subprocess
 import sys
@@ -132,11 +131,11 @@ def test_validators_agree_with_robot_check(tmp_path):
     counts = {"valid": 0, "invalid": 0, "backoff": 0}
     for q0, q1 in random_segments(space, rng, 24):
         s0, s1 = space.state(q0), space.state(q1)
-        ref = robot.check(q0, q1, obstacles, broad_phase="brute", **options)
+        ref = robot.check(q0, q1, obstacles, **options)
         assert mv.checkMotion(s0, s1) == (not ref.collides)
         assert si.checkMotion(s0, s1) == (not ref.collides)  # through OMPL's C++
         for q, s in ((q0, s0), (q1, s1)):
-            still = robot.check(q, q, obstacles, broad_phase="brute")
+            still = robot.check(q, q, obstacles)
             assert si.isValid(s) == space.validity_checker.isValid(s) == (not still.collides)
         out = si.allocState()
         last = [out, -1.0]
@@ -156,8 +155,8 @@ def test_validators_agree_with_robot_check(tmp_path):
         counts["backoff"] += 1
         exact = robot.joint_values(q0, q1, F(f))
         np.testing.assert_allclose(q, [exact[n] for n in robot.joints], rtol=0, atol=1e-12)
-        assert not robot.check(q, q, obstacles, broad_phase="brute").collides
-        assert not robot.check(q0, q, obstacles, broad_phase="brute").collides
+        assert not robot.check(q, q, obstacles).collides
+        assert not robot.check(q0, q, obstacles).collides
     assert counts["valid"] and counts["invalid"] and counts["backoff"], counts
     assert space.errors == []
 

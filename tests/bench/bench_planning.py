@@ -38,6 +38,7 @@ import random
 import statistics
 import sys
 import time
+import weakref
 
 import numpy as np
 
@@ -61,16 +62,13 @@ class DiscreteSpace:
 
     def __init__(self, rspace, fcl_side, resolution):
         from ompl import base as ob
-        self.space = ob.RealVectorStateSpace(len(rspace.joints))
-        b = ob.RealVectorBounds(len(rspace.joints))
-        for i, (lo, hi) in enumerate(rspace.bounds):
-            b.setLow(i, lo)
-            b.setHigh(i, hi)
-        self.space.setBounds(b)
+        from polyccd.ompl import joint_space
+        self.space = joint_space(rspace.joints, rspace.bounds)  # the same space, OMPL's own checks
         self.si = ob.SpaceInformation(self.space)
         self.rspace, self.fcl = rspace, fcl_side
         self.counts = {"state": [0, 0, 0.0]}
-        self.si.setStateValidityChecker(self._valid)
+        me = weakref.proxy(self)  # no reference cycle through OMPL's SpaceInformation
+        self.si.setStateValidityChecker(lambda state: me._valid(state))
         # longest valid segment = fraction * maximum extent = resolution (rad, L2)
         self.si.setStateValidityCheckingResolution(resolution / self.space.getMaximumExtent())
         self.si.setup()
@@ -123,7 +121,8 @@ def main(argv=None):
     ap.add_argument("--runs", type=int, default=3, help="plans per query and method")
     ap.add_argument("--seed", type=int, default=20261125)
     ap.add_argument("--time", type=float, default=60.0, help="planning budget per plan (s)")
-    ap.add_argument("--resolution", type=float, default=0.05, help="discrete side (rad)")
+    ap.add_argument("--resolution", type=float, nargs="+", default=[0.05],
+                    help="the discrete sides' resolutions (rad; default 0.05)")
     ap.add_argument("--spread", type=float, default=0.4, help="query variations (rad)")
     ap.add_argument("--dense", type=float, default=0.002, help="dense sampling step (rad)")
     ap.add_argument("--check-seconds", type=float, default=10.0)
@@ -156,29 +155,29 @@ def main(argv=None):
     robot, plates = ex.scene()
     boxes = [("wall",) + ex.WALL, ("shelf",) + ex.SHELF]
     fcl_side = Discrete(robot, example_robot_file(PANDA_URDF), boxes)
-    options = dict(self_collision=False, limits=P.Limits(max_seconds=args.check_seconds))
+    options = dict(self_collision=False, limits=P.Limits(max_seconds=args.check_seconds),
+                   **ex.decide_options(robot))
     rspace = RobotSpace(robot, plates, fixed={"panda_finger_joint1": ex.FINGER}, **options)
-    dspace = DiscreteSpace(rspace, fcl_side, args.resolution)
+    sides = {"polyccd": rspace}
+    for r in args.resolution:
+        sides[f"discrete {r}"] = DiscreteSpace(rspace, fcl_side, r)
     rng = random.Random(args.seed)
     qs = queries(robot, rspace, plates, args.queries, rng, args.spread)
     print(f"bench_planning: Panda, wall + shelf (2 mm), {len(qs)} queries x {args.runs} runs, "
-          f"RRTConnect {args.time:g} s budget; discrete at {args.resolution} rad; dense "
+          f"polyccd {'decide' if options.get('first_contact') is False else 'first-contact'} "
+          f"mode, "
+          f"RRTConnect {args.time:g} s budget; discrete at {' / '.join(map(str, args.resolution))} rad; dense "
           f"sampling every {args.dense} rad; seed {args.seed}", flush=True)
     runs = []
     for qi, (start, goal) in enumerate(qs):
         for run in range(args.runs):
-            for method in ("polyccd", "discrete"):
-                side = rspace if method == "polyccd" else dspace
-                before = {k: list(v) for k, v in rspace.counts.items()}
-                before_d = list(dspace.counts["state"])
+            for method, side in sides.items():
+                before = {k: list(v) for k, v in side.counts.items()}
                 path, solve, total = plan(side.si, side.state, start, goal, args.time, simplify)
                 row = dict(query=qi, run=run, method=method, solved=path is not None,
                            solve=solve, total=total)
-                if method == "polyccd":
-                    row["motions"] = rspace.counts["motion"][0] - before["motion"][0]
-                    row["states"] = rspace.counts["state"][0] - before["state"][0]
-                else:
-                    row["states"] = dspace.counts["state"][0] - before_d[0]
+                for kind in side.counts:
+                    row[f"{kind}s"] = side.counts[kind][0] - before[kind][0]  # checks made
                 if path is not None:
                     w = rspace.waypoints(path)
                     row["waypoints"] = len(w)
@@ -189,7 +188,7 @@ def main(argv=None):
                     hits = [i for i, q in enumerate(poses) if fcl_side.pose_collides(q)]
                     row["dense_poses"], row["dense_collides"] = len(poses), bool(hits)
                 runs.append(row)
-                print(f"  query {qi} run {run} {method:<8} "
+                print(f"  query {qi} run {run} {method:<13} "
                       + ("solved" if path is not None else "FAILED")
                       + f" {solve:7.2f} s (+simplify {total - solve:6.2f} s)"
                       + (f", {row['waypoints']} waypoints, collides: polyccd "
@@ -208,12 +207,12 @@ def summarize(runs, args):
     rows = []
     print(f"\n{'method':<22} {'solved':>8} {'solve s med':>11} {'mean':>7} {'max':>7} "
           f"{'+simplify med':>13} {'colliding paths: polyccd':>24} {'dense':>6}")
-    for method in ("polyccd", "discrete"):
+    for method in dict.fromkeys(r["method"] for r in runs):
         mine = [r for r in runs if r["method"] == method]
         ok = [r for r in mine if r["solved"]]
         solve = [r["solve"] for r in mine]
         total = [r["total"] for r in ok] or [float("nan")]
-        name = "polyccd exact" if method == "polyccd" else f"discrete {args.resolution} rad (FCL)"
+        name = "polyccd exact" if method == "polyccd" else f"{method} rad (FCL)"
         row = dict(method=name, solved=len(ok), plans=len(mine),
                    solve_median=statistics.median(solve), solve_mean=statistics.mean(solve),
                    solve_max=max(solve), total_median=statistics.median(total),
@@ -235,10 +234,11 @@ def plot(table, path, args):
     import matplotlib.pyplot as plt
     names = [r["method"] for r in table]
     fig, ax = plt.subplots(1, 3, figsize=(11, 3.4))
-    ax[0].bar(names, [r["solve_median"] for r in table], color=["tab:blue", "tab:orange"])
+    colors = ["tab:blue", "tab:orange", "tab:red", "tab:brown", "tab:gray"][:len(names)]
+    ax[0].bar(names, [r["solve_median"] for r in table], color=colors)
     ax[0].set_ylabel("median solve time (s, log)")
     ax[0].set_yscale("log")
-    ax[1].bar(names, [r["solved"] / r["plans"] for r in table], color=["tab:blue", "tab:orange"])
+    ax[1].bar(names, [r["solved"] / r["plans"] for r in table], color=colors)
     ax[1].set_ylabel("success rate")
     ax[1].set_ylim(0, 1.05)
     x = np.arange(len(names))

@@ -87,6 +87,21 @@ def joint_path(revolute, q0, q1, t):
     return np.where(revolute, turned, (1 - tt) * q0 + tt * q1)
 
 
+def joint_space(names, bounds):
+    """An ompl.base.RealVectorStateSpace with one dimension per joint name, bounds
+    [(lo, hi)] (OMPL interpolates it linearly: see the module comment)."""
+    ob, _ = _ompl()
+    space = ob.RealVectorStateSpace(len(names))
+    b = ob.RealVectorBounds(len(names))
+    for i, (lo, hi) in enumerate(bounds):
+        b.setLow(i, lo)
+        b.setHigh(i, hi)
+    space.setBounds(b)
+    for i, name in enumerate(names):
+        space.setDimensionName(i, name)
+    return space
+
+
 def simplify(si, path, rounds=3):
     """Shortens an OMPL PathGeometric in place with the simplifications that check every
     new edge with si's motion validator and create no state by interpolation
@@ -105,7 +120,8 @@ class RobotSpace:
     """OMPL's state space, SpaceInformation and validators for a polyccd Robot among
     obstacles (see the module comment). joints: the planned joints (names; default every
     actuated joint not fixed); fixed: {joint: value} of the other actuated joints (each required);
-    bounds: {joint: (lo, hi)} replacing the URDF limits; check_options: keywords of
+    bounds: {joint: (lo, hi)} replacing the URDF limits (beyond them, pass
+    joint_limits="ignore" too: Robot.check rejects values outside the limits); check_options: keywords of
     Robot.check (self_collision, allowed, time_tolerance, limits, ...; first_contact=False
     once Robot.check takes it: the last-valid form drops it, it needs the time)."""
 
@@ -142,14 +158,7 @@ class RobotSpace:
             if lim is None:
                 lim = (-math.pi, math.pi)
             self.bounds.append((float(lim[0]), float(lim[1])))
-        self.space = ob.RealVectorStateSpace(len(self.joints))
-        b = ob.RealVectorBounds(len(self.joints))
-        for i, (lo, hi) in enumerate(self.bounds):
-            b.setLow(i, lo)
-            b.setHigh(i, hi)
-        self.space.setBounds(b)
-        for i, name in enumerate(self.joints):
-            self.space.setDimensionName(i, name)
+        self.space = joint_space(self.joints, self.bounds)
         self.si = ob.SpaceInformation(self.space)
         self.errors = []
         self.counts = {"state": [0, 0, 0.0], "motion": [0, 0, 0.0]}
