@@ -183,10 +183,16 @@ def main(argv=None):
                     row["waypoints"] = len(w)
                     exact = robot.check_path(w, plates, self_collision=False)
                     row["polyccd_collides"] = exact.segment is not None
-                    poses = (rspace.interpolate_path(w, args.dense) if method == "polyccd"
-                             else linear_path(w, args.dense))
-                    hits = [i for i, q in enumerate(poses) if fcl_side.pose_collides(q)]
-                    row["dense_poses"], row["dense_collides"] = len(poses), bool(hits)
+                    row["path"] = [[float(x) for x in q] for q in w]
+                    half = rspace.interpolate_path(w, args.dense)
+                    poses = half if method == "polyccd" else linear_path(w, args.dense)
+                    row["dense_poses"] = len(poses)
+                    row["dense_collides"] = any(fcl_side.pose_collides(q) for q in poses)
+                    # the same waypoints joined by polyccd's joint path, sampled likewise:
+                    # polyccd's verdict and FCL's on one path
+                    row["dense_half_angle_collides"] = (
+                        row["dense_collides"] if method == "polyccd"
+                        else any(fcl_side.pose_collides(q) for q in half))
                 runs.append(row)
                 print(f"  query {qi} run {run} {method:<13} "
                       + ("solved" if path is not None else "FAILED")
@@ -206,7 +212,8 @@ def main(argv=None):
 def summarize(runs, args):
     rows = []
     print(f"\n{'method':<22} {'solved':>8} {'solve s med':>11} {'mean':>7} {'max':>7} "
-          f"{'+simplify med':>13} {'colliding paths: polyccd':>24} {'dense':>6}")
+          f"{'+simplify med':>13} {'colliding paths: polyccd':>24} {'dense':>6} "
+          f"{'dense (half-angle)':>18}")
     for method in dict.fromkeys(r["method"] for r in runs):
         mine = [r for r in runs if r["method"] == method]
         ok = [r for r in mine if r["solved"]]
@@ -217,14 +224,19 @@ def summarize(runs, args):
                    solve_median=statistics.median(solve), solve_mean=statistics.mean(solve),
                    solve_max=max(solve), total_median=statistics.median(total),
                    polyccd_colliding=sum(r["polyccd_collides"] for r in ok),
-                   dense_colliding=sum(r["dense_collides"] for r in ok))
+                   dense_colliding=sum(r["dense_collides"] for r in ok),
+                   dense_half_angle=sum(r.get("dense_half_angle_collides", False) for r in ok))
         rows.append(row)
         print(f"{name:<22} {len(ok):>3} / {len(mine):<2} {row['solve_median']:11.2f} "
               f"{row['solve_mean']:7.2f} {row['solve_max']:7.2f} {row['total_median']:13.2f} "
-              f"{row['polyccd_colliding']:>18} / {len(ok):<3} {row['dense_colliding']:>4} / {len(ok)}")
+              f"{row['polyccd_colliding']:>18} / {len(ok):<3} {row['dense_colliding']:>4} / {len(ok):<3}"
+              f"{row['dense_half_angle']:>12} / {len(ok)}")
     print("solve: RRTConnect's solve() (s, failed plans included at their budget); "
           "+simplify: solve and the checked simplifiers; colliding paths: returned paths "
-          "(of the solved ones) in contact with a plate somewhere along the path executed")
+          "(of the solved ones) in contact with a plate somewhere along the path executed "
+          "(polyccd: its check of the waypoints joined by polyccd's joint path; dense: FCL "
+          "every --dense rad along the executed path; dense (half-angle): FCL along polyccd's "
+          "joint path through the same waypoints, the path polyccd's verdict is about)")
     return rows
 
 
@@ -232,7 +244,8 @@ def plot(table, path, args):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    names = [r["method"] for r in table]
+    names = [r["method"].replace("polyccd exact", "polyccd").replace("discrete ", "FCL ")
+             .replace(" rad (FCL)", " rad") for r in table]
     fig, ax = plt.subplots(1, 3, figsize=(11, 3.4))
     colors = ["tab:blue", "tab:orange", "tab:red", "tab:brown", "tab:gray"][:len(names)]
     ax[0].bar(names, [r["solve_median"] for r in table], color=colors)
@@ -242,13 +255,14 @@ def plot(table, path, args):
     ax[1].set_ylabel("success rate")
     ax[1].set_ylim(0, 1.05)
     x = np.arange(len(names))
-    ax[2].bar(x - 0.2, [r["polyccd_colliding"] / max(r["solved"], 1) for r in table], 0.4,
-              label="by polyccd")
-    ax[2].bar(x + 0.2, [r["dense_colliding"] / max(r["solved"], 1) for r in table], 0.4,
-              label=f"dense {args.dense} rad")
+    ax[2].bar(x - 0.2, [r["polyccd_colliding"] for r in table], 0.4,
+              label="by polyccd (half-angle path)")
+    ax[2].bar(x + 0.2, [r["dense_colliding"] for r in table], 0.4,
+              label=f"dense FCL {args.dense} rad (executed path)")
     ax[2].set_xticks(x, names)
-    ax[2].set_ylabel("returned paths colliding")
-    ax[2].set_ylim(0, 1.05)
+    ax[2].set_ylabel(f"returned paths colliding (of {table[0]['plans']})")
+    ax[2].set_ylim(0, max(2, max(max(r["polyccd_colliding"], r["dense_colliding"])
+                                 for r in table) + 1))
     ax[2].legend(fontsize=8)
     for a in ax:
         a.tick_params(axis="x", labelsize=8)
