@@ -56,20 +56,16 @@ import numpy as np
 
 from ._errors import InputError
 
-EXTRA = ('polyccd.ompl needs OMPL\'s Python bindings, the "ompl" extra: '
-         'pip install "polyccd[ompl]" (PyPI ompl >= 2.0.1)')
-
 # last_valid's candidate fractions: ContactTime.lo times these, each tried until the
 # path from s1 to its state is contact-free (exactly); then s1 itself.
 BACKOFF = (Fraction(15, 16), Fraction(3, 4), Fraction(1, 2), Fraction(1, 8))
 
 
 def _ompl():
-    try:
-        from ompl import base, geometric
-    except ImportError as e:
-        raise ImportError(f"{EXTRA} ({e})") from e
-    return base, geometric
+    """(ompl.base, ompl.geometric); ModuleNotFoundError naming the "ompl" extra."""
+    from ._extras import need
+    return (need("polyccd.ompl", "ompl", "ompl.base"),
+            need("polyccd.ompl", "ompl", "ompl.geometric"))
 
 
 def joint_path(revolute, q0, q1, t):
