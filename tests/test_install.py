@@ -257,6 +257,7 @@ def test_wheel_contents(wheel):
         and binaries[1].startswith("polyccd/_pccd.") and binaries[2] == "polyccd/libpolyccd.so.0", binaries
     assert re.match(r"polyccd-%s-cp3\d+-cp3\d+-manylinux_2_\d+_x86_64\.whl" % re.escape(VERSION),
                     wheel.name), wheel.name
+    assert "polyccd/py.typed" in names    # PEP 561: type checkers read the annotations
     info = f"polyccd-{VERSION}.dist-info/"
     for legal in ("LICENSE", "COPYING"):
         assert z.read(info + "licenses/" + legal) == (ROOT / legal).read_bytes()

@@ -1,8 +1,9 @@
 // pccd_step_*: whole steps of deforming meshes (lib/step), each candidate pair solved by
-// the staged linear path of pccd_solve_linear_d (solve_linear_one, api/linear.cpp).
+// the linear path of pccd_solve_linear_d (pred/solve_linear.h).
 #include <cmath>
 #include <string>
 
+#include "api/config.h"
 #include "api/guard.h"
 #include "api/handles.h"
 #include "api/limits.h"
@@ -131,19 +132,16 @@ PCCD_API int pccd_step_solve(const pccd_step *s, const pccd_config *cfg,
         throw Input_error("opt.struct_size: " + std::to_string(opt->struct_size) + " is not " +
                           std::to_string(sizeof(pccd_step_options)) +
                           " (initialise with pccd_step_options_init)");
-      if (opt->threads < 1 || opt->threads > 1024)
-        throw Input_error("opt.threads: " + std::to_string(opt->threads) + " is outside 1..1024");
+      so.threads = pccd::api::checked_threads(opt->threads, "opt.threads");
       if (opt->mode < 0 || opt->mode > 2)
         throw Input_error("opt.mode: " + std::to_string(opt->mode) +
                           " is not 0 (FIRST), 1 (DECIDE) or 2 (ALL)");
-      so.threads = opt->threads;
       so.mode = static_cast<pccd::step::Mode>(opt->mode);
     }
-    so.solve = pccd::api::read_config(cfg);
-    so.solver = &pccd::api::solve_linear_one;
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
-    pccd::api::check_bits(s->set, limits);
-    const pccd::api::Call_budget budget(limits.work);
+    const pccd::api::Call_config call = pccd::api::read_call(cfg);
+    so.solve = *call.solve;
+    pccd::api::check_bits(s->set, call.limits);
+    const pccd::api::Call_budget budget(call.limits.work);
     rep->r = pccd::step::solve_step(s->set, so);
     rep->mode = so.mode;
     rep->index.resize(4 * rep->r.contacts.size());

@@ -7,6 +7,7 @@
 
 #include "arith/convert.h"
 #include "pred/features.h"
+#include "pred/solve_linear.h"
 #include "scene/combine.h"
 #include "step/separate.h"
 #include "step/tree.h"
@@ -48,7 +49,7 @@ class Driver {
   Driver(const Step_set &s, const Step_options &opt, util::Thread_pool &pool) : s_(s), opt_(opt) {
     solve_ = opt.solve;
     solve_.want_time = opt.mode != DECIDE;
-    reach_ = boxes::reach_of(opt.solve.delta);
+    reach_ = enclose::reach_of(opt.solve.delta);
     double u[3];
     frame_velocity(s, u);
     const size_t nv = s.x0.size() / 3;
@@ -69,9 +70,9 @@ class Driver {
     eb_.resize(s.edges.size());
     for (size_t f = 0; f < fb.size(); ++f) {
       const auto &F = s.faces[f];
-      fb[f] = boxes::hull(boxes::hull(vb_[F[0]], vb_[F[1]]), vb_[F[2]]);
+      fb[f] = enclose::hull(enclose::hull(vb_[F[0]], vb_[F[1]]), vb_[F[2]]);
     }
-    for (size_t e = 0; e < eb_.size(); ++e) eb_[e] = boxes::hull(vb_[s.edges[e][0]], vb_[s.edges[e][1]]);
+    for (size_t e = 0; e < eb_.size(); ++e) eb_[e] = enclose::hull(vb_[s.edges[e][0]], vb_[s.edges[e][1]]);
     for (size_t k = 0; k < pb.size(); ++k) pb[k] = vb_[s.points[k]];
     std::vector<Box> ub(s.used.size());
     for (size_t i = 0; i < ub.size(); ++i) ub[i] = vb_[s.used[i]];
@@ -108,7 +109,7 @@ class Driver {
         ++out.by_stage[pred::STAGE_BOUNDS];
         return;
       }
-      opt_.solver(kind, p0, p1, local, r);
+      pred::solve_linear(kind, static_cast<size_t>(n), p0, p1, local, r);
       ++out.by_stage[r.stage >= 0 && r.stage < 5 ? r.stage : 0];
       if (r.collides) {
         if (opt_.mode == FIRST && r.hi < local.until) local.until = r.hi;
@@ -181,11 +182,11 @@ class Driver {
         p0[3 * i + a] = s.x0[3 * size_t(pts[i]) + a];
         p1[3 * i + a] = s.x1[3 * size_t(pts[i]) + a];
       }
-    opt_.solver(h.kind, p0, p1, o, h.r);
+    pred::solve_linear(h.kind, static_cast<size_t>(n), p0, p1, o, h.r);
   }
 
  private:
-  Box grown(const Box &b) const { return reach_ > 0 ? boxes::grow(b, reach_) : b; }
+  Box grown(const Box &b) const { return reach_ > 0 ? enclose::grow(b, reach_) : b; }
 
   const Step_set &s_;
   const Step_options &opt_;

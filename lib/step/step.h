@@ -1,6 +1,6 @@
 // The whole-step query: every primitive pair of a Step_set (step_set.h) that touches
 // during t in [0, 1], found by a swept-box broad phase (tree.h) and decided exactly by
-// the library's linear solver.
+// the library's linear solver (pred/solve_linear.h, as pccd_solve_linear_d).
 //
 // Broad phase. Each vertex's straight path lies in the box of its two end positions
 // (doubles, exact). The boxes are taken in a frame translating with a common velocity
@@ -9,7 +9,7 @@
 // is valid, and a mesh falling or sliding as a whole gets boxes of its deformation
 // only. x1 - u is rounded, so each such box is widened by one ulp on each side. A
 // primitive's box is the hull of its vertices' boxes; with a minimum separation delta
-// the query side's boxes grow by boxes::reach_of(delta) (boxes.h: why one side
+// the query side's boxes grow by enclose::reach_of(delta) (enclose.h: why one side
 // suffices). Queries (every used vertex against the face tree, every edge against the
 // edge tree, every point against the edge and point trees) run in fixed chunks on the
 // thread pool, each candidate solved as it is found (first by the separating-direction
@@ -38,16 +38,10 @@ namespace pccd::step {
 
 enum Mode : int { FIRST = 0, DECIDE = 1, ALL = 2 };
 
-// A solver of one linear query (a pccd_kind of points moving from p0 to p1), given by
-// the api: the staged path of pccd_solve_linear_d, so this layer does not depend on it.
-using Linear_solver = void (*)(int kind, const double *p0, const double *p1,
-                               const pred::Solve_options &opt, pred::Contact_result &out);
-
 struct Step_options {
   pred::Solve_options solve;
   Mode mode = FIRST;
   unsigned threads = 1;
-  Linear_solver solver = nullptr;
 };
 
 // A touching pair: VERTEX_FACE (a vertex, b face), EDGE_EDGE (edges a < b), VERTEX_EDGE

@@ -64,13 +64,13 @@ Box_tree::Box_tree(const std::vector<Box> &boxes) {
   size_t leaves = (n + kLeaf - 1) / kLeaf, width = 1;
   while (width < leaves) width *= 2;
   first_leaf_ = static_cast<uint32_t>(width - 1);
-  nodes_.assign(2 * width - 1, boxes::empty_box());
+  nodes_.assign(2 * width - 1, enclose::empty_box());
   for (size_t i = 0; i < leaves; ++i) {
     Box h = sorted_[i * kLeaf];
-    for (size_t k = i * kLeaf + 1; k < std::min(n, (i + 1) * kLeaf); ++k) h = boxes::hull(h, sorted_[k]);
+    for (size_t k = i * kLeaf + 1; k < std::min(n, (i + 1) * kLeaf); ++k) h = enclose::hull(h, sorted_[k]);
     nodes_[first_leaf_ + i] = h;
   }
-  for (size_t k = first_leaf_; k-- > 0;) nodes_[k] = boxes::hull(nodes_[2 * k + 1], nodes_[2 * k + 2]);
+  for (size_t k = first_leaf_; k-- > 0;) nodes_[k] = enclose::hull(nodes_[2 * k + 1], nodes_[2 * k + 2]);
 }
 
 }  // namespace pccd::step

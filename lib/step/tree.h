@@ -11,11 +11,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "boxes/boxes.h"
+#include "enclose/enclose.h"
 
 namespace pccd::step {
 
-using boxes::Box;
+using enclose::Box;
 
 class Box_tree {
  public:
@@ -42,12 +42,12 @@ class Box_tree {
     const uint32_t from_leaf = from / kLeaf;
     while (top) {
       const Item it = stack[--top];
-      if (it.end <= from_leaf || !boxes::boxes_meet(nodes_[it.node], q)) continue;
+      if (it.end <= from_leaf || !enclose::boxes_meet(nodes_[it.node], q)) continue;
       if (it.node >= first_leaf_) {
         const uint32_t leaf = it.node - first_leaf_;
         const uint32_t end = std::min<uint32_t>(static_cast<uint32_t>(order_.size()), (leaf + 1) * kLeaf);
         for (uint32_t j = std::max(leaf * kLeaf, from); j < end; ++j)
-          if (boxes::boxes_meet(sorted_[j], q)) visit(order_[j]);
+          if (enclose::boxes_meet(sorted_[j], q)) visit(order_[j]);
         continue;
       }
       const uint32_t mid = it.first + (it.end - it.first) / 2;

@@ -1,9 +1,17 @@
 """Batches of linear queries in numpy arrays (pccd_solve_linear_batch_d): one C call for
 n queries, so the Python call overhead is paid once per batch, not per query."""
+from __future__ import annotations
+
 from dataclasses import dataclass
 
 import numpy as np
 
+from typing import TYPE_CHECKING, Optional
+
+from ._types import Number
+
+if TYPE_CHECKING:
+    from ._limits import Limits
 from ._arrays import linear_batch
 from ._errors import InputError, check
 from ._pccd import ffi, lib
@@ -31,8 +39,10 @@ class LinearBatch:
         return len(self.collides)
 
 
-def solve_linear_many(kind, t0, t1, *, time_tolerance="1e-12", want_time=True, want_exact=True,
-                      threads=1, limits=None, min_distance=None):
+def solve_linear_many(kind: str, t0: np.ndarray, t1: np.ndarray, *,
+                      time_tolerance: Number = "1e-12", want_time: bool = True,
+                      want_exact: bool = True, threads: int = 1, limits: Optional[Limits] = None,
+                      min_distance: Optional[Number] = None) -> LinearBatch:
     """Every query k of t0[k], t1[k] (float64 arrays of shape (n, npoints, 3): points
     moving linearly from t0 to t1) solved in one call on `threads` workers; answers
     do not depend on the number of threads. Returns a LinearBatch of numpy arrays."""

@@ -15,11 +15,16 @@ number texts, and the triangles), so that it pickles (it is rebuilt from them, e
 a Dask worker: the C handle itself cannot travel) and can give its coordinates back as
 numpy arrays (Mesh.vertices, Mesh.exact_vertices(), ...).
 """
+from __future__ import annotations
+
 import numbers
 from fractions import Fraction
 
 import numpy as np
 
+from typing import Any, Sequence, Tuple
+
+from ._types import Indices, Number, Points, Vector
 from . import _handles as handles
 from ._errors import InputError, check
 from ._numbers import exact_fraction, number_text, show
@@ -142,7 +147,7 @@ class Mesh(_Body):
 
     __slots__ = ()
 
-    def __init__(self, vertices, triangles):
+    def __init__(self, vertices: Points, triangles: Indices) -> None:
         nv, doubles, texts = _points(vertices, "vertices")
         nt, tris = _indices(triangles)
         self._build(nv, doubles, None if texts is None else tuple(texts), tris)
@@ -163,7 +168,7 @@ class Mesh(_Body):
         return _rebuild, (Mesh, self._inputs)
 
     @classmethod
-    def box(cls, extents):
+    def box(cls, extents: Vector) -> Mesh:
         """The closed box [-a/2, a/2] x [-b/2, b/2] x [-c/2, c/2] of extents (a, b, c) > 0
         as 12 outward-facing triangles; halving a double is exact, so its corners are
         exactly +-extents/2."""
@@ -176,7 +181,7 @@ class Mesh(_Body):
         return cls(v, _BOX_TRIANGLES)
 
     @classmethod
-    def cylinder(cls, radius, height, sections=16):
+    def cylinder(cls, radius: float, height: float, sections: int = 16) -> Mesh:
         """A closed prism around the cylinder of this radius and height (axis z, centred at
         the origin): the regular `sections`-gon whose inscribed circle has radius at least
         `radius` (vertices at radius / cos(pi / sections), enlarged by 1e-12 relative, which
@@ -203,7 +208,7 @@ class Mesh(_Body):
         return cls(v, t)
 
     @classmethod
-    def from_trimesh(cls, mesh):
+    def from_trimesh(cls, mesh: Any) -> Mesh:
         """The Mesh of a trimesh.Trimesh (or any object with .vertices (n, 3) and .faces
         (m, 3)): its float64 vertices taken at their exact binary values, its faces as
         the triangles, as they are (no processing, merging or reorientation). A
@@ -230,7 +235,7 @@ class Mesh(_Body):
         """True when the coordinates were given as doubles (Mesh.vertices is exact)."""
         return self._inputs[1] is not None
 
-    def exact_vertices(self):
+    def exact_vertices(self) -> np.ndarray:
         """The vertices as an (n, 3) object array of Fractions, exactly as the body uses
         them (a float given is its binary value, a decimal text its decimal value)."""
         nv, doubles, texts, _ = self._inputs
@@ -265,7 +270,7 @@ class Mesh(_Body):
             out[i] = v[0], v[1]
         return out
 
-    def edge_triangles(self, i):
+    def edge_triangles(self, i: int) -> Tuple[int, ...]:
         """The indices of the triangles incident to edge i, ascending, as a tuple."""
         if isinstance(i, (bool, np.bool_)) or not isinstance(i, numbers.Integral) or i < 0:
             raise InputError(f"i: {show(i)} is not an edge index")
@@ -287,7 +292,7 @@ class Spheres(_Body):
 
     __slots__ = ()
 
-    def __init__(self, centers, radii):
+    def __init__(self, centers: Points, radii: Sequence[Number]) -> None:
         n, c_doubles, c_texts = _points(centers, "centers")
         nr, r_doubles, r_texts = _points(radii, "radii", width=None)
         if nr != n:
@@ -334,12 +339,12 @@ class Spheres(_Body):
         """True when centres and radii were given as doubles (centers, radii are exact)."""
         return self._inputs[1] is not None
 
-    def exact_centers(self):
+    def exact_centers(self) -> np.ndarray:
         """The centres as an (n, 3) object array of Fractions, exactly as the body uses them."""
         n, c, ct, _, _ = self._inputs
         return _fractions(c, ct, (n, 3))
 
-    def exact_radii(self):
+    def exact_radii(self) -> np.ndarray:
         """The radii as an (n,) object array of Fractions, exactly as the body uses them."""
         n, _, _, r, rt = self._inputs
         return _fractions(r, rt, (n,))

@@ -11,12 +11,15 @@ pccd_cancel when it is made from the main thread and SIGINT has Python's default
 handler: Ctrl-C then sets the flag, the call ends at its next work step, and Python
 raises KeyboardInterrupt as it returns. (A Cancel passed in limits is the one set.)
 """
+from __future__ import annotations
+
 import math
 import numbers
 import signal
 import threading
 import warnings
 
+from typing import Optional
 from ._errors import InputError, check
 from ._numbers import show
 from ._pccd import ffi, lib
@@ -30,17 +33,17 @@ class Cancel:
 
     __slots__ = ("_handle",)
 
-    def __init__(self):
+    def __init__(self) -> None:
         self._handle = handles.new("cancel")
 
-    def set(self):
+    def set(self) -> None:
         lib.pccd_cancel_set(self._handle)
 
-    def reset(self):
+    def reset(self) -> None:
         check(lib.pccd_cancel_reset(self._handle))
 
     @property
-    def is_set(self):
+    def is_set(self) -> bool:
         out = ffi.new("int *")
         check(lib.pccd_cancel_is_set(self._handle, out))
         return bool(out[0])
@@ -61,8 +64,9 @@ class Limits:
 
     __slots__ = ("max_seconds", "max_work", "cancel", "max_number_bits")
 
-    def __init__(self, max_seconds=None, max_work=None, cancel=None,
-                 max_number_bits=DEFAULT_MAX_NUMBER_BITS):
+    def __init__(self, max_seconds: Optional[float] = None, max_work: Optional[int] = None,
+                 cancel: Optional[Cancel] = None,
+                 max_number_bits: Optional[int] = DEFAULT_MAX_NUMBER_BITS) -> None:
         if max_seconds is not None and (isinstance(max_seconds, bool) or
                                         not isinstance(max_seconds, (int, float)) or
                                         not math.isfinite(max_seconds) or max_seconds <= 0):

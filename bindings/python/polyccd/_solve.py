@@ -4,10 +4,19 @@ No geometry here: every decision is the C library's. This module only checks sha
 converts numbers exactly (see _numbers); the C library names the place of a bad number
 (points[i][axis][coefficient], radii[which], p_t0[i][axis], config.time_tolerance).
 """
+from __future__ import annotations
+
 import threading
 
 import numpy as np
 
+from typing import TYPE_CHECKING, Optional, Sequence
+
+from ._types import Coefficients, Number, Points
+
+if TYPE_CHECKING:
+    from ._limits import Limits
+    from ._results import Result
 from ._arrays import NotDouble, linear_coords, linear_trajectories
 from . import _handles as handles
 from . import _limits
@@ -144,8 +153,10 @@ def solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limi
     return read_result(res)
 
 
-def solve(kind, points, radii=None, *, time_tolerance="1e-12", want_time=True,
-          want_exact=True, limits=None, min_distance=None):
+def solve(kind: str, points: Sequence[Sequence[Coefficients]],
+          radii: Optional[Sequence[Number]] = None, *, time_tolerance: Number = "1e-12",
+          want_time: bool = True, want_exact: bool = True, limits: Optional[Limits] = None,
+          min_distance: Optional[Number] = None) -> Result:
     """Decides exactly whether the moving primitives touch during [0, 1]; see
     docs/python.md. points: one [xs, ys, zs] per point, ascending powers of t.
     limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
@@ -154,8 +165,9 @@ def solve(kind, points, radii=None, *, time_tolerance="1e-12", want_time=True,
                        min_distance)
 
 
-def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
-                 want_exact=True, limits=None, min_distance=None):
+def solve_linear(kind: str, p_t0: Points, p_t1: Points, *, time_tolerance: Number = "1e-12",
+                 want_time: bool = True, want_exact: bool = True,
+                 limits: Optional[Limits] = None, min_distance: Optional[Number] = None) -> Result:
     """solve() for points moving linearly from p_t0 (t = 0) to p_t1 (t = 1), arrays of
     shape (npoints, 3): float64 (exact binary values), integer or object arrays (int,
     Fraction, float) or nested lists; values that are not exactly doubles take the exact
@@ -182,7 +194,7 @@ _FAST = {kind: (code, (_NPOINTS[kind], 3)) for kind, code in _CODES.items()}
 _from_buffer, _solve_linear_d = ffi.from_buffer, lib.pccd_solve_linear_d
 
 
-def collides_linear(kind, p_t0, p_t1):
+def collides_linear(kind: str, p_t0: Points, p_t1: Points) -> bool:
     """True when the primitives moving linearly from p_t0 to p_t1 touch during [0, 1].
 
     The low-overhead decide-only path for benchmarks: no Result is built, a per-thread

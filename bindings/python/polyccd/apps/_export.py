@@ -9,6 +9,8 @@ red points, touching triangles and balls red faces.
 """
 import numpy as np
 
+from .._extras import need
+
 from ._draw_geometry import BODY_COLORS, HIGHLIGHT, _arrays, _contacts, _edges_of, _float_pose, _parts
 
 
@@ -21,7 +23,8 @@ def contact_scene(bodies, t, contacts):
     (number, str or ContactTime) with the features of contacts (a SceneResult, PairResults
     or (body, (kind, k)) items) in red. Geometry node names: the body names, and
     "<name>/touching-edges", "<name>/touching-vertices" for the highlighted features."""
-    import trimesh
+    # trimesh's paths (the touching edges) import scipy.
+    trimesh = need("polyccd.apps.to_trimesh", "interop", "trimesh", "scipy.sparse")
     scene = trimesh.Scene()
     features = _contacts(contacts, len(bodies))
     red = _rgba(HIGHLIGHT)

@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import InputError
+from .._extras import need
 from ._draw_geometry import (BODY_COLORS, HIGHLIGHT, _arrays, _clip_segments, _clip_to_box,
                              _contacts, _decimate, _edges_of, _float_pose, _parts, _shade, _time)
 
@@ -268,6 +269,7 @@ def render_scene(bodies, t, contacts, path, title=None, *, geometry=None, labels
     decimated (vertex clustering); features are always drawn from the full geometry.
     trajectories: the path of each moving body's centre over [0, 1] is drawn dashed
     (a dot at t = 0, a square at t = 1) in the full view."""
+    need("polyccd.apps.to_png", "interop", "matplotlib")
     from matplotlib.figure import Figure
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 

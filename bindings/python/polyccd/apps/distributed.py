@@ -24,6 +24,7 @@ embedded cluster has a nanny that restarts it), and the broadcast body has a cop
 every worker. Needs dask.distributed (`pip install polyccd[dask]`); `import polyccd`
 never imports this module.
 """
+import dataclasses
 import os
 import threading
 import uuid
@@ -177,16 +178,27 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
 
 # ---------------------------------------------------------------------------- files ---
 
-def _check_chunk(paths, threads, limits=None):
+def _files(paths):
+    """(shown, absolute) for each path: a worker of a separately started cluster runs in
+    its own directory, so it opens the absolute path; messages and reports show the path
+    as the caller gave it (the serial run's output)."""
+    return [(str(p), os.path.abspath(p)) for p in paths]
+
+
+def _as_given(text, shown, real):
+    return text.replace(real, shown)
+
+
+def _check_chunk(files, threads, limits=None):
     from ._corpus import read_case, solve_case, solve_scene_case
     out = []
-    for path in paths:
+    for shown, real in files:
         try:
-            what, case = read_case(path)
+            what, case = read_case(real)
             out.append(solve_scene_case(case, limits=limits, threads=threads) if what == "scene"
                        else solve_case(case, limits))
         except InputError as e:
-            out.append(e)
+            out.append(type(e)(_as_given(str(e), shown, real)))
     return out
 
 
@@ -194,30 +206,31 @@ def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None, lim
     """Yields, for each scene or query file, what `polyccd check FILE` computes: the
     SceneResult or Result, or the InputError of a bad file (returned, not raised).
     limits: a polyccd.Limits without a Cancel (each worker applies it to each file)."""
-    return map_chunks(_check_chunk, [str(p) for p in paths], threads, limits, client=client,
+    return map_chunks(_check_chunk, _files(paths), threads, limits, client=client,
                       chunk_size=chunk_size, progress=progress, desc="check", unit="file")
 
 
-def _corpus_chunk(paths):
+def _corpus_chunk(files):
     from ._corpus import check_case
-    return [check_case(p) for p in paths]
+    return [[_as_given(reason, shown, real) for reason in check_case(real)]
+            for shown, real in files]
 
 
 def corpus_map(paths, *, client=None, chunk_size=None, progress=None):
     """Yields check_case(path) (the reasons a corpus case fails; empty: it passes) for
     every case file, in order."""
-    return map_chunks(_corpus_chunk, [str(p) for p in paths], client=client,
+    return map_chunks(_corpus_chunk, _files(paths), client=client,
                       chunk_size=chunk_size, progress=progress, desc="corpus", unit="case")
 
 
-def _queries_chunk(paths, kind):
+def _queries_chunk(files, kind):
     from ._queries import run_file
     out = []
-    for path in paths:
+    for shown, real in files:
         try:
-            out.append(run_file(path, kind))
+            out.append(dataclasses.replace(run_file(real, kind), file=shown))
         except InputError as e:
-            out.append(InputError(f"{path}: {e}"))
+            out.append(InputError(f"{shown}: {_as_given(str(e), shown, real)}"))
     return out
 
 
@@ -225,5 +238,5 @@ def queries_map(paths, kind=None, *, client=None, chunk_size=1, progress=None):
     """Yields run_file(path, kind) (a FileReport: counts against the truth column, the
     time per query measured on the worker) for every CSV file, in order, or the
     InputError of a bad file (returned, not raised)."""
-    return map_chunks(_queries_chunk, [str(p) for p in paths], kind, client=client,
+    return map_chunks(_queries_chunk, _files(paths), kind, client=client,
                       chunk_size=chunk_size, progress=progress, desc="queries", unit="file")
