@@ -4,7 +4,7 @@ float64 arrays taken at their exact values; every answer comes from the C librar
 import threading
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Optional
+from typing import Optional, Sequence
 
 import numpy as np
 
@@ -16,6 +16,7 @@ from ._errors import InputError, check
 from ._pccd import ffi, lib
 from ._results import ContactTime
 from ._solve import _config
+from ._types import Indices, Number, Points
 
 KIND_NAMES = {0: "vertex-face", 1: "edge-edge", 2: "vertex-edge", 3: "vertex-vertex"}
 
@@ -211,8 +212,11 @@ def _solve(V0, V1, faces, edges, points, obstacles, min_distance, mode, threads,
     return step, nmeshes, rep
 
 
-def check_step(V0, V1, faces, edges=None, *, points=None, obstacles=(), min_distance=0,
-               first_contact=True, threads=None, limits=None, all_contacts=False):
+def check_step(V0: Points, V1: Points, faces: Indices, edges: Optional[Indices] = None, *,
+               points: Optional[Sequence[int]] = None, obstacles: Sequence[tuple] = (),
+               min_distance: Number = 0, first_contact: bool = True,
+               threads: Optional[int] = None, limits: Optional[_limits.Limits] = None,
+               all_contacts: bool = False) -> StepResult:
     """Checks one simulator step exactly: vertex i moves on a straight path from V0[i]
     (t = 0) to V1[i] (t = 1), float64 (n, 3) arrays at their exact values; faces (m, 3)
     and edges (k, 2) are vertex indices (edges=None: the sides of the faces), points
@@ -243,8 +247,10 @@ def check_step(V0, V1, faces, edges=None, *, points=None, obstacles=(), min_dist
     return StepResult(bool(hit[0]), time, stepsize, _contacts(rep), stat, _edges(step, nmeshes))
 
 
-def collision_free_stepsize(V0, V1, faces, edges=None, *, points=None, obstacles=(),
-                            min_distance=0, threads=None, limits=None):
+def collision_free_stepsize(V0: Points, V1: Points, faces: Indices, edges: Optional[Indices] = None,
+                            *, points: Optional[Sequence[int]] = None, obstacles: Sequence[tuple] = (),
+                            min_distance: Number = 0, threads: Optional[int] = None,
+                            limits: Optional[_limits.Limits] = None) -> float:
     """The largest double s <= t*, the exact first contact time of the step V0 -> V1
     (check_step), 1.0 when nothing touches: moving every vertex to V0 + s (V1 - V0) is
     free of contact at every time before s. Unlike ipctk's compute_collision_free_stepsize,
