@@ -749,6 +749,66 @@ PCCD_API int pccd_report_contact(const pccd_report *rep, size_t pair, size_t con
                                  int *feature_i, size_t *index_i, int *feature_j,
                                  size_t *index_j);
 
+/* Contact geometry: a contact point and normal of feature (feature_a, index_a) of body a
+ * on motion ma and feature (feature_b, index_b) of body b on mb (NULL: stationary) that
+ * touch at a time t* in [t_lo, t_hi] (rational strings; a report's contact and its time:
+ * t_lo = t_hi when the time is exact). Positions are world positions at t*; an edge runs
+ * from its vertex v[0] to v[1] (pccd_body_edge), a triangle has the winding given.
+ * Point:  vertex-X: the vertex.  edge-edge: the crossing a0 + s d_a of the two segments,
+ *         s = ((b0 - a0) x d_b) . n / |n|^2, n = d_a x d_b (parallel segments: the first
+ *         of a0, a1, b0, b1 on the other segment).  sphere-sphere: c_a + r_a / (r_a + r_b)
+ *         (c_b - c_a) (in both balls).  sphere-X: the closest point of X to the centre.
+ *         edge-triangle, triangle-triangle (the static test at t = 0): a point of both
+ *         (lib/narrow/contact_geometry.h: which one).
+ * Normal (orientation): vertex-triangle (either order): (v1 - v0) x (v2 - v0) of the
+ *         triangle (its winding); edge-edge: d_a x d_b; sphere-sphere: c_b - c_a; sphere-X:
+ *         from a's feature towards b's (point - c_a, or c_b - point). No normal for
+ *         vertex-vertex, vertex-edge, edge-triangle, triangle-triangle, parallel edges, or
+ *         a zero vector.
+ * t_lo = t_hi: exact values, checked: PCCD_EINVAL "the features do not touch at t = ..."
+ * when the point is not on both features (e.g. a contact of a solve with
+ * config.min_distance > 0: its features are within the distance, maybe apart; no
+ * point is defined then). t_lo < t_hi (t* irrational): enclosures from the same
+ * formulas in interval arithmetic over [t_lo, t_hi], or, where those are uncertain, the
+ * intersection of the two features' boxes over [t_lo, t_hi]; they contain the true
+ * values whenever the features touch in [t_lo, t_hi] (PCCD_EINVAL when they certainly
+ * do not), and shrink with t_hi - t_lo (config.time_tolerance).
+ * PCCD_EINVAL names the argument: a, b or out NULL, out->struct_size wrong, a feature not
+ * a pccd_feature or not of the body's kind ("feature_b: triangle is not a feature of a
+ * sphere body (sphere)"), an index out of range ("index_a: 12 out of range (10
+ * vertices)"), a time unparsable or outside [0, 1] ("t_hi: 3/2 is outside [0, 1]"),
+ * t_lo > t_hi, an invalid motion ("ma: ..."). */
+typedef enum pccd_normal_state {
+  PCCD_NORMAL_NONE = 0,     /* no normal is defined for these features at t* */
+  PCCD_NORMAL_ENCLOSED = 1, /* normal_lo <= the unit normal <= normal_hi */
+  PCCD_NORMAL_UNKNOWN = 2   /* t* enclosed too loosely to decide; normal_lo/hi = -1/1 */
+} pccd_normal_state;
+
+typedef struct pccd_contact_geometry {
+  size_t struct_size;   /* the caller sets sizeof(pccd_contact_geometry) */
+  double point_lo[3], point_hi[3]; /* point_lo <= the contact point <= point_hi */
+  int normal_state;     /* a pccd_normal_state */
+  double normal_lo[3], normal_hi[3];
+  int exact;            /* 1 when t_lo = t_hi: pccd_contact_geometry_exact has the values */
+} pccd_contact_geometry;
+
+PCCD_API int pccd_contact_geometry_compute(const pccd_body *a, const pccd_motion *ma, int feature_a,
+                                   size_t index_a, const pccd_body *b, const pccd_motion *mb,
+                                   int feature_b, size_t index_b, const char *t_lo,
+                                   const char *t_hi, pccd_contact_geometry *out);
+
+/* The exact values at an exact time (t_lo = t_hi = t), same arguments: which 0 = the
+ * point, 1 = the normal (unnormalized, as defined above), written as "x y z" (rationals
+ * "p/q" or "p", single spaces) with the buffer protocol (PCCD_ERANGE, *needed).
+ * PCCD_ESTATE when t_lo != t_hi (t* not exact: use the enclosures of
+ * pccd_contact_geometry_compute) or, for which = 1, when no normal is defined;
+ * PCCD_EINVAL as pccd_contact_geometry_compute, or which not 0 or 1. */
+PCCD_API int pccd_contact_geometry_exact(const pccd_body *a, const pccd_motion *ma, int feature_a,
+                                         size_t index_a, const pccd_body *b,
+                                         const pccd_motion *mb, int feature_b, size_t index_b,
+                                         const char *t_lo, const char *t_hi, int which,
+                                         char *buf, size_t cap, size_t *needed);
+
 /* ------------------------------------------------------------------------------------
  * The on-line collision problem (the paper's section 3): one body on its motion is
  * preprocessed once (its vertices, edges and triangles, or its balls, as lifted points

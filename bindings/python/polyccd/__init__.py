@@ -39,6 +39,7 @@ from ._scene import check_scene as check  # noqa: E402
 from ._index import Index  # noqa: E402
 from ._limits import Cancel, Limits  # noqa: E402
 from ._chain import Chain  # noqa: E402
+from ._contact import ContactGeometry  # noqa: E402
 from ._step import StepContacts, StepResult, check_step, collision_free_stepsize  # noqa: E402
 
 __all__ = ["__version__", "KINDS", "BROAD_PHASES", "solve", "solve_linear", "collides_linear",
@@ -47,6 +48,6 @@ __all__ = ["__version__", "KINDS", "BROAD_PHASES", "solve", "solve_linear", "col
            "ContactTime", "Feature", "Motion", "Chain", "Mesh", "Spheres", "Body", "check",
            "Index", "Limits", "Cancel", "check_step", "collision_free_stepsize",
            "StepResult", "StepContacts",
-           "SceneResult", "PairResult", "Contact", "Error", "InputError",
+           "SceneResult", "PairResult", "Contact", "ContactGeometry", "Error", "InputError",
            "LimitError", "InternalError"]
 

@@ -8,13 +8,14 @@ applications (polyccd.apps.load_scene, to_png, to_trimesh).
 import struct
 import threading
 from dataclasses import dataclass, field
-from typing import Optional, Tuple
+from typing import Optional, Sequence, Tuple
 
 import numpy as np
 
 from . import _handles as handles
 from . import _limits
 from ._body import Mesh, Spheres
+from ._contact import ContactGeometry, contact_geometry as _contact_geometry
 from ._errors import InputError, check
 from ._motion import Motion
 from ._numbers import fraction_from_text, show
@@ -78,7 +79,7 @@ class SceneResult:
     pairs: Tuple[PairResult, ...]
     first: Tuple[PairResult, ...]
     stats: dict
-    # The bodies solved (for polyccd.apps.to_png / to_trimesh): not compared, not pickled.
+    # The bodies solved (for contact_geometry, polyccd.apps.to_png / to_trimesh): not compared, not pickled.
     bodies: tuple = field(default=(), compare=False, repr=False)
 
     def __getstate__(self):
@@ -103,8 +104,30 @@ class SceneResult:
                         found.setdefault(kind, set()).add(k)
         return {kind: np.array(sorted(ks), dtype=np.int64) for kind, ks in sorted(found.items())}
 
+    def contact_geometry(self, pair: int = 0, contact: int = 0, *,
+                         bodies: Optional[Sequence[Body]] = None) -> ContactGeometry:
+        """The contact point and normal (a polyccd.ContactGeometry: enclosures,
+        and exact Fractions when the time is exact) of contact `contact` of pair `pair`
+        (indices into self.pairs and its contacts) at that contact's first time.
+        pccd_contact_geometry_compute has the definitions; a result of a solve with
+        min_distance > 0 is refused when its features are apart. bodies: default the
+        ones this result was solved from."""
+        bodies = self.bodies if bodies is None else list(bodies)
+        if not bodies:
+            raise InputError("bodies: this result does not hold its bodies (it was "
+                             "pickled or made elsewhere); pass bodies=[...]")
+        p = _item(self.pairs, pair, "pair")
+        c = _item(p.contacts, contact, "contact")
+        return _contact_geometry(bodies[p.bodies[0]], c.a, bodies[p.bodies[1]], c.b, c.first_contact)
+
 
 _WHOLE = lib.PCCD_WHOLE
+
+
+def _item(items, k, place):
+    if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k < len(items):
+        raise InputError(f"{place}: expected an index from 0 to {len(items) - 1}, got {show(k)}")
+    return items[k]
 
 
 def _time(rep, pair, contact):
