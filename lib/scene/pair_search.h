@@ -40,6 +40,12 @@ struct Search_options {
   bool all_contacts = false;  // solve every candidate (no time pruning)
   Broad_phase phase = Broad_phase::boxes;  // resolved (not automatic)
   int stored = -1;            // range: the side (0, 1) held in the trees; -1: the larger
+  // A witness is enough where the first time is known or not wanted: without times
+  // (solve.want_time false) or once a feature pair touches at t = 0 (the static pass),
+  // candidates are solved in chunks of 64 and the search stops after the chunk that
+  // found a contact, rather than reporting every touching feature pair (a robot's
+  // overlapping links hold thousands). Not with all_contacts.
+  bool witness = false;
 };
 
 struct Solved_pair {
