@@ -65,11 +65,15 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
   ends_.resize(n);
   origin_.resize(n);
   axis2_.resize(n);
+  axis_.resize(n);
   for (size_t k = 0; k < n; ++k) {
     const Chain_link &L = c.link(k);
     ends_[k] = joint_doubles(L, q0[k], q1[k]);
     Interval a[3];
-    for (int i = 0; i < 3; ++i) a[i] = Interval(arith::nearest_double(L.axis[i]));  // exact doubles
+    for (int i = 0; i < 3; ++i) {
+      axis_[k][i] = arith::nearest_double(L.axis[i]);  // exact: the axis was given as doubles
+      a[i] = Interval(axis_[k][i]);
+    }
     axis2_[k] = sq(a[0]) + sq(a[1]) + sq(a[2]);
     Interval w = arith::nearest_double(L.origin_q[0]), x = arith::nearest_double(L.origin_q[1]),
              y = arith::nearest_double(L.origin_q[2]), z = arith::nearest_double(L.origin_q[3]);
@@ -116,8 +120,7 @@ void Chain_path::enclose(double a, double b, std::vector<Pose_bounds> &out) cons
       P.rho = Q.rho;
       add_rotated(Q.Rm, Q.eps, O.om, 0.0, P.om, P.rho);
     }
-    double ax[3];
-    for (int i = 0; i < 3; ++i) ax[i] = arith::nearest_double(L.axis[i]);
+    const double *ax = axis_[k].data();
     if (L.joint == Joint_type::prismatic) {
       const Interval e = line(d.e0, d.e1, T);
       double vm[3], s = 0;

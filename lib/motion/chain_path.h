@@ -62,7 +62,7 @@ class Chain_path {
   std::vector<Joint_doubles> ends_;
   std::vector<Pose_bounds> origin_;  // each link's origin pose (R of origin_q, p: rho = 0)
   std::vector<arith::Interval> axis2_;  // |a|^2 of each joint axis
-  std::vector<std::array<arith::Interval, 9>> origin_i_;  // R of origin_q, entrywise
+  std::vector<std::array<double, 3>> axis_;  // each joint axis (doubles, exact)
 };
 
 }  // namespace pccd::motion

@@ -35,7 +35,7 @@ class Driver final : public narrow::Candidate_sink {
 
   void run() {
     std::unique_ptr<narrow::Candidate_source> source = make_source(opt_.phase, ctx_, opt_.stored, reach_);
-    if (ctx_.side(0).is_mesh() && ctx_.side(1).is_mesh()) {
+    if (ctx_.side(0).is_mesh() && ctx_.side(1).is_mesh() && !opt_.apart_at_zero) {
       whole(source->static_candidates(pool_));
       if (found_any_ && !opt_.all_contacts) return;
     }

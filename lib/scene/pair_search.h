@@ -46,6 +46,9 @@ struct Search_options {
   // found a contact, rather than reporting every touching feature pair (a robot's
   // overlapping links hold thousands). Not with all_contacts.
   bool witness = false;
+  // The pair is known apart at t = 0 (a filter's lower bound > 0: scene/robot.h): the
+  // static pass, which looks for contacts at t = 0 only, is skipped.
+  bool apart_at_zero = false;
 };
 
 struct Solved_pair {

@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <map>
 #include <string>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 
 #include "motion/chain_path.h"
 #include "scene/link_filter.h"
@@ -45,7 +42,9 @@ class Piece_poses {
     Piece &p = at(d, i, false);
     if (!p.have_obstacle[k]) {
       const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
-      p.obstacles[k] = d == 0 ? boxes::whole_pose(obstacles_[k]) : boxes::enclose_pose(obstacles_[k], a, b);
+      // A stationary obstacle's pose is the same on every piece.
+      const bool still = obstacles_[k].mo == narrow::identity_motion();
+      p.obstacles[k] = d == 0 || still ? boxes::whole_pose(obstacles_[k]) : boxes::enclose_pose(obstacles_[k], a, b);
       p.have_obstacle[k] = true;
     }
     return p.obstacles[k];
@@ -105,7 +104,6 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     for (size_t k = 0; k < obst.size(); ++k) plans.push_back({i, nr + k, 0.0});
   }
 
-  auto T0 = std::chrono::steady_clock::now();
   if (ro.filter) {
     Piece_poses poses(path, obst);
     const double reach = boxes::reach_of(opt.solve.delta);
@@ -148,21 +146,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     }
     return *robot_mb[k];
   };
-  auto T1 = std::chrono::steady_clock::now();
-  double tb = 0;
-  auto body2 = [&](size_t k) -> const Moving_body & {
-    auto a = std::chrono::steady_clock::now();
-    const Moving_body &m = body(k);
-    tb += std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
-    return m;
-  };
-  Scene_report rep = solve_planned(body2, plans, opt, -1, true);
-  auto T2 = std::chrono::steady_clock::now();
-  if (std::getenv("PCCD_TRACE"))
-    std::fprintf(stderr, "filter %.3f ms, %zu plans, bodies %.3f ms, solve %.3f ms\n",
-                 std::chrono::duration<double>(T1 - T0).count() * 1e3, plans.size(), tb * 1e3,
-                 std::chrono::duration<double>(T2 - T1).count() * 1e3 - tb * 1e3);
-  return rep;
+  return solve_planned(body, plans, opt, -1, true);
 }
 
 }  // namespace pccd::scene

@@ -110,6 +110,7 @@ Scene_report solve_planned(const std::function<const Moving_body &(size_t)> &bod
     w->i = plan.i;
     w->j = plan.j;
     w->ctx = std::make_unique<Pair_ctx>(body(w->i), body(w->j));
+    so.apart_at_zero = plan.lower > 0;
     w->out = search_pair(*w->ctx, so, pool);
     rep.stats.add(w->out.stats);
     bool hit = !w->out.solved.empty();
@@ -139,6 +140,10 @@ Scene_report solve_planned(const std::function<const Moving_body &(size_t)> &bod
     if (at_zero) break;  // a contact at t = 0 is first
   }
 
+  // Reported in ascending (i, j), whatever order the plans were solved in.
+  std::sort(work.begin(), work.end(), [](const auto &x, const auto &y) {
+    return std::make_pair(x->i, x->j) < std::make_pair(y->i, y->j);
+  });
   std::vector<std::pair<Pair_work *, size_t>> everything;
   for (auto &w : work) {
     if (w->out.solved.empty()) continue;
