@@ -29,7 +29,7 @@
 
 namespace pccd::scene {
 
-constexpr int kMax_depth = 12;         // pieces of 1/4096 at the finest
+constexpr int kMax_depth = 14;         // pieces of 1/16384 at the finest
 constexpr size_t kMax_front = 4096;    // node pairs per piece (then: not separated)
 constexpr double kNever = 2.0;         // first_uncleared: no contact on [0, 1]
 
