@@ -164,7 +164,12 @@ PCCD_API int pccd_report_free_until(const pccd_report *rep, char *buf, size_t ca
       if (dq > f) d = pccd::arith::round_down(d);
       *below = d;
     }
-    return pccd::api::write_text(pccd::arith::to_string(f), buf, cap, needed);
+    const std::string text = pccd::arith::to_string(f);
+    if (!buf && cap == 0) {  // only *below (or the size) wanted
+      if (needed) *needed = text.size() + 1;
+      return PCCD_OK;
+    }
+    return pccd::api::write_text(text, buf, cap, needed);
   });
 }
 
