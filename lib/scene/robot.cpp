@@ -83,15 +83,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
                          const std::vector<Scene_body> &obstacles, const Scene_options &opt,
                          const Robot_options &ro) {
   const motion::Chain_path path(r.chain, q0, q1);  // Input_error for a rejected segment
-  std::vector<Moving_body> obst;
-  obst.reserve(obstacles.size());
-  for (size_t k = 0; k < obstacles.size(); ++k) {
-    try {
-      obst.push_back(prepare_body(obstacles[k]));
-    } catch (const arith::Input_error &e) {
-      throw arith::Input_error("obstacles[" + std::to_string(k) + "].motion: " + e.what());
-    }
-  }
+  const std::vector<Moving_body> obst = prepare_bodies(obstacles, "obstacles");
   const size_t nr = r.bodies.size();
   if (nr + obst.size() < 2) throw arith::Input_error("obstacles: nothing to check (one body, no obstacle)");
   std::vector<Pair_plan> plans;

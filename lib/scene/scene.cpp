@@ -54,18 +54,23 @@ Moving_body prepare_body(const Scene_body &b) {
   return narrow::prepare_body(b.body, narrow::identity_motion());
 }
 
-Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt,
-                         const Pair_set &skipped) {
-  if (bodies.size() < 2) throw arith::Input_error("bodies: a scene needs at least 2 bodies");
+std::vector<Moving_body> prepare_bodies(const std::vector<Scene_body> &bodies, const std::string &name) {
   std::vector<Moving_body> mb;
   mb.reserve(bodies.size());
   for (size_t k = 0; k < bodies.size(); ++k) {
     try {
       mb.push_back(prepare_body(bodies[k]));
     } catch (const arith::Input_error &e) {
-      throw arith::Input_error("bodies[" + std::to_string(k) + "].motion: " + e.what());
+      throw arith::Input_error(name + "[" + std::to_string(k) + "].motion: " + e.what());
     }
   }
+  return mb;
+}
+
+Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt,
+                         const Pair_set &skipped) {
+  if (bodies.size() < 2) throw arith::Input_error("bodies: a scene needs at least 2 bodies");
+  const std::vector<Moving_body> mb = prepare_bodies(bodies, "bodies");
   std::vector<std::pair<size_t, size_t>> pairs;
   for (size_t i = 0; i < mb.size(); ++i)
     for (size_t j = i + 1; j < mb.size(); ++j)

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -26,6 +27,8 @@ struct Scene_body {
 // The body on its motion (prepared or derived now; Input_error when the motion is
 // invalid).
 Moving_body prepare_body(const Scene_body &b);
+// Every body prepared, in order; Input_error "<name>[k].motion: ..." for an invalid motion.
+std::vector<Moving_body> prepare_bodies(const std::vector<Scene_body> &bodies, const std::string &name);
 
 struct Scene_options {
   pred::Solve_options solve;
