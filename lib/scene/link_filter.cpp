@@ -157,7 +157,11 @@ double first_uncleared(const narrow::Body_data &A, const Pose_of &pose_a, const 
       if (la && lb && leaves_apart(A, ha, ka, pa, B, hb, kb, pb, reach)) continue;
       if (std::max(sa, sb) <= spread || (la && lb)) {
         next.push_back({ka, kb});  // waits for the halves of the piece
-        if (next.size() > kMax_front) return std::ldexp(static_cast<double>(it.i), -it.d);
+        if (next.size() > kMax_front) {  // the rest waits unrefined (kMax_front)
+          if (next.size() + work.size() > 16 * kMax_front) return std::ldexp(static_cast<double>(it.i), -it.d);
+          next.insert(next.end(), work.begin(), work.end());
+          work.clear();
+        }
       } else if (sb > sa) {
         const uint32_t c = hb.nodes[kb].first;
         work.push_back({ka, c + 1});

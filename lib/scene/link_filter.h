@@ -16,8 +16,10 @@
 // motion adds to a box), else waits for the halves. A piece whose front empties is
 // separated: no element pair touches at any t of it (a touching pair of elements lies
 // in leaves whose boxes, and whose ancestors' boxes, all meet on every piece holding
-// that t). The first piece that is still not separated at depth kMax_depth, or whose
-// front outgrows kMax_front, gives its start: a certified lower bound of the pair's
+// that t). A front that outgrows kMax_front on a piece hands its unprocessed pairs to
+// the halves as they are (each may still meet: nothing is dropped unseparated). The
+// first piece that is still not separated at depth kMax_depth, or whose front outgrows
+// 16 kMax_front, gives its start: a certified lower bound of the pair's
 // contact times (every earlier time lies in a separated piece). kNever (> 1) when every
 // piece is separated: the pair never touches on [0, 1].
 // Minimum separation: side A's boxes grow by reach (boxes::reach_of), so "touch" reads
