@@ -111,6 +111,18 @@ void require_solved(const H *h, const char *where) {
                       ": holds no answer (nothing was solved into it, or the last solve failed)");
 }
 
+// The body of a getter pccd_X_Y(h, out): h checked (Solved: it must hold an answer,
+// require_solved), out not NULL, then *out = value().
+template <bool Solved = false, class H, class T, class F>
+int getter(const char *fn, const H *h, const char *h_name, T *out, const char *out_name, F &&value) {
+  return guard(fn, [&] {
+    if constexpr (Solved) require_solved(h, h_name); else require(h, h_name);
+    require(out, out_name);
+    *out = value();
+    return PCCD_OK;
+  });
+}
+
 // The body of pccd_X_new for a default-constructed handle: *out is NULL on failure.
 template <class T>
 int new_handle(const char *fn, T **out) {

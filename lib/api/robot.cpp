@@ -9,6 +9,7 @@
 
 #include "api/body_handle.h"
 #include "api/chain_handle.h"
+#include "api/config.h"
 #include "api/guard.h"
 #include "api/handles.h"
 #include "api/motion_handle.h"
@@ -109,8 +110,8 @@ PCCD_API int pccd_robot_check(const pccd_robot *r, const double *q0, const doubl
       ro.self_collision = ropt->self_collision == 1;
       ro.filter = ropt->filter == 1;
     }
-    const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    const pccd::api::Call_config call = pccd::api::read_scene_call(cfg, opt, false);
+    const pccd::api::Call_limits &limits = call.limits;
     for (size_t k = 0; k < r->biggest.size(); ++k)
       limits.check(r->biggest[k], pccd::api::place("bodies", {k}) + ".");
     std::vector<pccd::scene::Scene_body> obst;
@@ -122,7 +123,7 @@ PCCD_API int pccd_robot_check(const pccd_robot *r, const double *q0, const doubl
       obst.push_back(pccd::api::scene_body(obstacles[k], m));
     }
     const pccd::api::Call_budget budget(limits.work);
-    rep->r = pccd::scene::check_robot(r->m, q0, q1, obst, so, ro);
+    rep->r = pccd::scene::check_robot(r->m, q0, q1, obst, call.scene_options(), ro);
     rep->solved = true;
     return PCCD_OK;
   });

@@ -14,9 +14,9 @@ namespace {
 
 using Front = std::vector<std::pair<uint32_t, uint32_t>>;
 
-// What the piece's motion adds to a box of the body (boxes::Pose_piece::spread's bound,
+// What the piece's motion adds to a box of the body (enclose::Pose_piece::spread's bound,
 // recomputed here for poses made without it): |R(t) - Rm| |x| + orad over the body.
-double spread_of(const boxes::Pose_piece &p, const narrow::Body_data &d) {
+double spread_of(const enclose::Pose_piece &p, const narrow::Body_data &d) {
   if (!p.finite) return HUGE_VAL;
   double rr = 0, orad = 0;
   for (int i = 0; i < 3; ++i) {
@@ -29,17 +29,17 @@ double spread_of(const boxes::Pose_piece &p, const narrow::Body_data &d) {
 // The world boxes over the piece of an element's points (a triangle's three vertices;
 // a ball's centre grown by its radius), side A's grown by reach.
 int element_boxes(const narrow::Body_data &d, const bvh::Hierarchy &h, uint32_t node,
-                  const boxes::Pose_piece &p, double reach, boxes::Box out[3]) {
+                  const enclose::Pose_piece &p, double reach, enclose::Box out[3]) {
   const uint32_t e = h.elems[h.nodes[node].first];
   if (!d.mesh) {
-    out[0] = boxes::grow(boxes::point_box(p, d.pts[e], d.pt_err), d.radius_up[e]);
-    if (reach > 0) out[0] = boxes::grow(out[0], reach);
+    out[0] = enclose::grow(enclose::point_box(p, d.pts[e], d.pt_err), d.radius_up[e]);
+    if (reach > 0) out[0] = enclose::grow(out[0], reach);
     return 1;
   }
   const auto &t = d.mesh->triangles()[e];
   for (int v = 0; v < 3; ++v) {
-    out[v] = boxes::point_box(p, d.pts[t[v]], d.pt_err);
-    if (reach > 0) out[v] = boxes::grow(out[v], reach);
+    out[v] = enclose::point_box(p, d.pts[t[v]], d.pt_err);
+    if (reach > 0) out[v] = enclose::grow(out[v], reach);
   }
   return 3;
 }
@@ -48,7 +48,7 @@ int element_boxes(const narrow::Body_data &d, const bvh::Hierarchy &h, uint32_t 
 // products in doubles; in any rounding mode each operation errs by at most 2u = 2^-52
 // relative, so the sum errs by at most 10u times the sum M of the products' magnitudes;
 // both bounds move out by M 2^-48 (> 10u M) + 1e-300 (underflow), as boxes.h does.
-void project(const double n[3], const boxes::Box *b, int count, double &lo, double &hi) {
+void project(const double n[3], const enclose::Box *b, int count, double &lo, double &hi) {
   lo = HUGE_VAL;
   hi = -HUGE_VAL;
   for (int k = 0; k < count; ++k) {
@@ -76,10 +76,10 @@ void project(const double n[3], const boxes::Box *b, int count, double &lo, doub
 // double vectors serve: the projections are certified): the difference of the two
 // sets' box centres, each triangle's normal and, for two triangles, the cross products
 // of their edges, directions taken at the piece's pose midpoints.
-bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t ka, const boxes::Pose_piece &pa,
-                  const narrow::Body_data &B, const bvh::Hierarchy &hb, uint32_t kb, const boxes::Pose_piece &pb,
+bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t ka, const enclose::Pose_piece &pa,
+                  const narrow::Body_data &B, const bvh::Hierarchy &hb, uint32_t kb, const enclose::Pose_piece &pb,
                   double reach) {
-  boxes::Box ba[3], bb[3];
+  enclose::Box ba[3], bb[3];
   const int na = element_boxes(A, ha, ka, pa, reach, ba), nb = element_boxes(B, hb, kb, pb, 0, bb);
   double axes[12][3];
   int n_axes = 0;
@@ -94,7 +94,7 @@ bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t
   for (int s = 0; s < 2; ++s) {
     const narrow::Body_data &d = s == 0 ? A : B;
     const bvh::Hierarchy &h = s == 0 ? ha : hb;
-    const boxes::Pose_piece &p = s == 0 ? pa : pb;
+    const enclose::Pose_piece &p = s == 0 ? pa : pb;
     if (!d.mesh) continue;
     const auto &t = d.mesh->triangles()[h.elems[h.nodes[s == 0 ? ka : kb].first]];
     const auto &x = d.pts[t[0]], &y = d.pts[t[1]], &z = d.pts[t[2]];
@@ -141,7 +141,7 @@ double first_uncleared(const narrow::Body_data &A, const Pose_of &pose_a, const 
   while (!stack.empty()) {
     Item it = std::move(stack.back());
     stack.pop_back();
-    const boxes::Pose_piece &pa = pose_a(it.d, it.i), &pb = pose_b(it.d, it.i);
+    const enclose::Pose_piece &pa = pose_a(it.d, it.i), &pb = pose_b(it.d, it.i);
     const double spread = std::max(spread_of(pa, A), spread_of(pb, B));
     util::work_step(1 + it.front.size() / 1024);
     next.clear();
@@ -149,9 +149,9 @@ double first_uncleared(const narrow::Body_data &A, const Pose_of &pose_a, const 
     while (!work.empty()) {
       const auto [ka, kb] = work.back();
       work.pop_back();
-      boxes::Box x = boxes::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h);
-      if (reach > 0) x = boxes::grow(x, reach);
-      if (!boxes::boxes_meet(x, boxes::frame_box(pb, hb.nodes[kb].c, hb.nodes[kb].h))) continue;
+      enclose::Box x = enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h);
+      if (reach > 0) x = enclose::grow(x, reach);
+      if (!enclose::boxes_meet(x, enclose::frame_box(pb, hb.nodes[kb].c, hb.nodes[kb].h))) continue;
       const bool la = ha.nodes[ka].leaf(), lb = hb.nodes[kb].leaf();
       const double sa = la ? -1 : ha.size(ka), sb = lb ? -1 : hb.size(kb);
       if (la && lb && leaves_apart(A, ha, ka, pa, B, hb, kb, pb, reach)) continue;

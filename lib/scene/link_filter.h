@@ -2,10 +2,10 @@
 // segment, and from when, decided on pose enclosures alone, before any exact motion is
 // built.
 //
-// A body on a time piece [a, b] is given by a boxes::Pose_piece: for a robot link the
+// A body on a time piece [a, b] is given by a enclose::Pose_piece: for a robot link the
 // interval pose of motion/chain_path.h (straight from the joint path) in midpoint-radius
-// form, for an obstacle boxes::enclose_pose of its exact motion. A node's world box over
-// the piece is boxes::frame_box of its body-frame box (hierarchy.h): it holds the node's
+// form, for an obstacle enclose::enclose_pose of its exact motion. A node's world box over
+// the piece is enclose::frame_box of its body-frame box (hierarchy.h): it holds the node's
 // elements at every t of the piece.
 //
 // first_uncleared: a swept traversal of the two hierarchies over dyadic pieces of
@@ -22,12 +22,12 @@
 // 16 kMax_front, gives its start: a certified lower bound of the pair's
 // contact times (every earlier time lies in a separated piece). kNever (> 1) when every
 // piece is separated: the pair never touches on [0, 1].
-// Minimum separation: side A's boxes grow by reach (boxes::reach_of), so "touch" reads
+// Minimum separation: side A's boxes grow by reach (enclose::reach_of), so "touch" reads
 // "come within delta" throughout.
 #pragma once
 #include <functional>
 
-#include "boxes/boxes.h"
+#include "enclose/enclose.h"
 
 namespace pccd::scene {
 
@@ -37,7 +37,7 @@ constexpr double kNever = 2.0;         // first_uncleared: no contact on [0, 1]
 
 // The pose of one side on the dyadic piece (depth, index): [index / 2^depth,
 // (index + 1) / 2^depth].
-using Pose_of = std::function<const boxes::Pose_piece &(int depth, long index)>;
+using Pose_of = std::function<const enclose::Pose_piece &(int depth, long index)>;
 
 double first_uncleared(const narrow::Body_data &A, const Pose_of &pose_a, const narrow::Body_data &B,
                        const Pose_of &pose_b, double reach);

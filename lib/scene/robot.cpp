@@ -11,11 +11,11 @@ namespace pccd::scene {
 
 namespace {
 
-// The link's ball (motion/chain_path.h) in the form boxes::frame_box maps boxes with
+// The link's ball (motion/chain_path.h) in the form enclose::frame_box maps boxes with
 // (pivot 0): every entry of R(t) - Rm is at most ||R(t) - Rm||_2 <= eps, every
 // coordinate of o(t) - om at most |o(t) - om|_2 <= rho.
-boxes::Pose_piece pose_piece(const motion::Pose_bounds &p) {
-  boxes::Pose_piece out;
+enclose::Pose_piece pose_piece(const motion::Pose_bounds &p) {
+  enclose::Pose_piece out;
   bool finite = std::isfinite(p.eps) && std::isfinite(p.rho);
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
@@ -37,14 +37,14 @@ class Piece_poses {
   Piece_poses(const motion::Chain_path &path, const std::vector<Moving_body> &obstacles)
       : path_(path), obstacles_(obstacles) {}
 
-  const boxes::Pose_piece &link(size_t k, int d, long i) { return at(d, i, true).links[k]; }
-  const boxes::Pose_piece &obstacle(size_t k, int d, long i) {
+  const enclose::Pose_piece &link(size_t k, int d, long i) { return at(d, i, true).links[k]; }
+  const enclose::Pose_piece &obstacle(size_t k, int d, long i) {
     Piece &p = at(d, i, false);
     if (!p.have_obstacle[k]) {
       const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
       // A stationary obstacle's pose is the same on every piece.
       const bool still = obstacles_[k].mo == narrow::identity_motion();
-      p.obstacles[k] = d == 0 || still ? boxes::whole_pose(obstacles_[k]) : boxes::enclose_pose(obstacles_[k], a, b);
+      p.obstacles[k] = d == 0 || still ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], a, b);
       p.have_obstacle[k] = true;
     }
     return p.obstacles[k];
@@ -52,8 +52,8 @@ class Piece_poses {
 
  private:
   struct Piece {
-    std::vector<boxes::Pose_piece> links;
-    std::vector<boxes::Pose_piece> obstacles;
+    std::vector<enclose::Pose_piece> links;
+    std::vector<enclose::Pose_piece> obstacles;
     std::vector<bool> have_obstacle;
   };
   Piece &at(int d, long i, bool links) {
@@ -98,12 +98,12 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
 
   if (ro.filter) {
     Piece_poses poses(path, obst);
-    const double reach = boxes::reach_of(opt.solve.delta);
+    const double reach = opt.reach;
     auto side = [&](size_t k) -> Pose_of {
-      if (k < nr) return [&, link = r.bodies[k].link](int d, long i) -> const boxes::Pose_piece & {
+      if (k < nr) return [&, link = r.bodies[k].link](int d, long i) -> const enclose::Pose_piece & {
         return poses.link(link, d, i);
       };
-      return [&, k](int d, long i) -> const boxes::Pose_piece & { return poses.obstacle(k - nr, d, i); };
+      return [&, k](int d, long i) -> const enclose::Pose_piece & { return poses.obstacle(k - nr, d, i); };
     };
     auto data = [&](size_t k) -> const Body_data & { return k < nr ? *r.bodies[k].body : *obst[k - nr].data; };
     std::vector<Pair_plan> kept;

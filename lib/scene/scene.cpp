@@ -69,7 +69,9 @@ std::vector<Moving_body> prepare_bodies(const std::vector<Scene_body> &bodies, c
 
 Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt,
                          const Pair_set &skipped) {
-  if (bodies.size() < 2) throw arith::Input_error("bodies: a scene needs at least 2 bodies");
+  if (bodies.size() < 2)  // the one check (Python converts and raises this message)
+    throw arith::Input_error("bodies: a scene needs at least 2 bodies, got " +
+                             std::to_string(bodies.size()));
   const std::vector<Moving_body> mb = prepare_bodies(bodies, "bodies");
   std::vector<std::pair<size_t, size_t>> pairs;
   for (size_t i = 0; i < mb.size(); ++i)
@@ -98,7 +100,8 @@ Scene_report solve_planned(const std::function<const Moving_body &(size_t)> &bod
   Search_options so;
   so.solve = opt.solve;
   so.all_contacts = opt.all_contacts;
-  so.phase = resolve(opt.broad_phase, stored >= 0, sgn(opt.solve.delta) > 0);
+  so.phase = opt.broad_phase;
+  so.reach = opt.reach;
   so.stored = stored;
   so.witness = decide || witness;
 

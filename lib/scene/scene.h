@@ -30,11 +30,13 @@ Moving_body prepare_body(const Scene_body &b);
 // Every body prepared, in order; Input_error "<name>[k].motion: ..." for an invalid motion.
 std::vector<Moving_body> prepare_bodies(const std::vector<Scene_body> &bodies, const std::string &name);
 
+// Read once by the api (api/config.h, Call_config::scene_options).
 struct Scene_options {
   pred::Solve_options solve;
   bool all_contacts = false;
-  Broad_phase broad_phase = Broad_phase::automatic;
+  Broad_phase broad_phase = Broad_phase::bvh;  // resolved (resolve(), broad_phase.h)
   unsigned threads = 1;
+  double reach = 0;  // enclose::reach_of(solve.delta): 0 without a minimum separation
 };
 
 struct Contact_report {
