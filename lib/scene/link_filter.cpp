@@ -138,12 +138,15 @@ double first_uncleared(const narrow::Body_data &A, const Pose_of &pose_a, const 
   std::vector<Item> stack;
   stack.push_back({0, 0, Front{{0, 0}}});
   Front next, work;
+  size_t tests = 0;  // node pairs taken from fronts (kMax_tests)
   while (!stack.empty()) {
     Item it = std::move(stack.back());
     stack.pop_back();
     const enclose::Pose_piece &pa = pose_a(it.d, it.i), &pb = pose_b(it.d, it.i);
     const double spread = std::max(spread_of(pa, A), spread_of(pb, B));
     util::work_step(1 + it.front.size() / 1024);
+    tests += it.front.size();
+    if (tests > kMax_tests) return std::ldexp(static_cast<double>(it.i), -it.d);  // this piece's start
     next.clear();
     work = std::move(it.front);
     while (!work.empty()) {

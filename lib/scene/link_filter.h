@@ -19,7 +19,9 @@
 // that t). A front that outgrows kMax_front on a piece hands its unprocessed pairs to
 // the halves as they are (each may still meet: nothing is dropped unseparated). The
 // first piece that is still not separated at depth kMax_depth, or whose front outgrows
-// 16 kMax_front, gives its start: a certified lower bound of the pair's
+// 16 kMax_front, or that starts after kMax_tests front pairs were taken for the body
+// pair (overlapping links hold a front of thousands at t = 0 on every depth), gives its
+// start: a certified lower bound of the pair's
 // contact times (every earlier time lies in a separated piece). kNever (> 1) when every
 // piece is separated: the pair never touches on [0, 1].
 // Minimum separation: side A's boxes grow by reach (enclose::reach_of), so "touch" reads
@@ -33,6 +35,7 @@ namespace pccd::scene {
 
 constexpr int kMax_depth = 14;         // pieces of 1/16384 at the finest
 constexpr size_t kMax_front = 4096;    // node pairs per piece (then: not separated)
+constexpr size_t kMax_tests = 1 << 16;  // front pairs per body pair (then: the piece's start)
 constexpr double kNever = 2.0;         // first_uncleared: no contact on [0, 1]
 
 // The pose of one side on the dyadic piece (depth, index): [index / 2^depth,
