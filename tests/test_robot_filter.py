@@ -44,7 +44,6 @@ def box_mesh(lo, hi):
 def boxed(robot):
     """The robot with each geometry replaced by its bounding box (same link frame)."""
     out = copy.copy(robot)
-    out.__dict__.pop("_c_robot", None)
     out.shapes = [(link, i, k, box_mesh(np.min(s.vertices, axis=0), np.max(s.vertices, axis=0)))
                   for link, i, k, s in robot.shapes]
     return out

@@ -1,10 +1,11 @@
 """Robot checks in one C call (pccd_robot_check, include/polyccd.h "Robots"): the robot's
-chain and link bodies are attached to a pccd_robot once and kept with the Robot (rebuilt
+chain and link bodies are attached to a pccd_robot once and kept for the Robot (rebuilt
 when Robot.shapes changes); the allowed group pairs are handed over in one call when
 they change. Only conversion here: the pair matrix, the filter, the lazy exact link
 motions and the decide mode are the C library's. SRDF files are read here (XML only).
 """
 import os
+import weakref
 import xml.etree.ElementTree as ET
 from fractions import Fraction
 
@@ -15,6 +16,11 @@ from . import _limits
 from ._errors import InputError, check
 from ._pccd import ffi, lib
 from ._scene import Body, _options, _read, _scratch
+
+
+# Robot -> (shapes key, (pccd_robot, bodies, groups, last allowed), shapes): kept beside
+# the Robot rather than in it, so that a Robot still pickles (a cffi handle does not).
+_HANDLES = weakref.WeakKeyDictionary()
 
 
 def read_srdf(path, robot):
@@ -50,7 +56,7 @@ def _handle(robot):
     """(pccd_robot, robot Bodies for the report's names, group of each URDF link): built
     on the first check and kept while robot.shapes holds the same geometry."""
     key = tuple((link, i, k, id(shape)) for link, i, k, shape in robot.shapes)
-    cached = robot.__dict__.get("_c_robot")
+    cached = _HANDLES.get(robot)
     if cached is not None and cached[0] == key:
         return cached[1]
     r = handles.new("robot", robot.chain._handle)
@@ -59,7 +65,7 @@ def _handle(robot):
         check(lib.pccd_robot_add_body(r, k, groups[link], shape._handle, ffi.NULL))
     bodies = [Body(shape, None, name=name) for (_, _, _, shape), name in zip(robot.shapes, _names(robot))]
     made = (r, bodies, groups, [None])  # [None]: the allowed set last handed to C
-    robot.__dict__["_c_robot"] = (key, made, [s for *_, s in robot.shapes])  # keeps ids valid
+    _HANDLES[robot] = (key, made, [s for *_, s in robot.shapes])  # the list keeps the ids valid
     return made
 
 
