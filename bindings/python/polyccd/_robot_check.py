@@ -138,10 +138,7 @@ def check_robot(robot, q0, q1, obstacles, *, self_collision, allowed, time_toler
     rc = _limits.run(cfg, lib.pccd_robot_check, made[0], ffi.from_buffer("double[]", a0),
                      ffi.from_buffer("double[]", a1), len(a0), obs, mot, n, cfg, opt, ropt, rep)
     if rc:
-        try:
-            check(rc)
-        except InputError as e:
-            raise type(e)(robot._joint_place(str(e))) from None
+        check(rc)  # the chain names the joint: "q1[2] (elbow): ..."
     bodies = made[1] + [Body(o.shape, o.motion, name=o.name if o.name is not None else f"obstacle{i}")
                         for i, o in enumerate(obstacles)]
     return _read(rep, bodies), free_until(rep)
