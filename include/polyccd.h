@@ -173,7 +173,12 @@ typedef struct pccd_config {
                                  rational string; NULL means "1e-12". Copied. */
   int want_time;              /* 1 (default): enclose the first contact time;
                                  0: decide only whether there is a contact (the
-                                 reported enclosure is then some enclosure, maybe [0,1]) */
+                                 reported enclosure is then some enclosure, maybe [0,1]).
+                                 Scenes, pair solves, index queries and robots: decide
+                                 mode, the solve stops at the first body pair found in
+                                 contact and reports it alone with a witness (features,
+                                 an enclosure of one of its contact times);
+                                 pccd_report_free_until. */
   int want_exact;             /* 1 (default): when the first contact time is rational,
                                  report it exactly (pccd_result_time_is_exact). Only
                                  used when want_time is 1. */
@@ -850,6 +855,77 @@ PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const 
                                    const pccd_motion *const *motions, size_t n,
                                    const pccd_config *cfg, const pccd_scene_options *opt,
                                    pccd_report *const *reports);
+
+/* A certified contact-free prefix of a solved report: no checked pair touches at any
+ * t < free_until (as text, like pccd_report_time; buf NULL with cap 0: only *needed and
+ * *below), and *below (when not NULL) a double <= free_until. Without a contact free_until is 1 (then nothing touches on [0, 1]).
+ * First-contact mode: the first contact's lo. Decide mode (cfg->want_time = 0): the
+ * certified lower bound of the pair that stopped the solve (a robot check's filter
+ * bound, pccd_robot_check; 0 for a scene). For a planner's last valid state (OMPL's
+ * checkMotion(s1, s2, lastValid)): every state at t < free_until is contact-free. */
+PCCD_API int pccd_report_free_until(const pccd_report *rep, char *buf, size_t cap, size_t *needed,
+                                    double *below);
+
+/* ------------------------------------------------------------------------------------
+ * Robots: a kinematic chain (pccd_chain) with bodies fixed to its links, kept across
+ * segments (bodies and their hierarchies are made once), checked over one joint-space
+ * segment q0 -> q1 against obstacles and itself.
+ *
+ * Each robot body belongs to a group (e.g. its URDF link): bodies of one group are never
+ * checked against each other, nor two groups whose pair is allowed
+ * (pccd_robot_set_allowed: adjacency, SRDF disable_collisions). Before any exact link
+ * motion is built, every body pair is tested by a certified filter: each link's pose is
+ * enclosed over time pieces in outward-rounded interval arithmetic straight from the
+ * joint path, and the link's hierarchy against the other body's; the exact link motions
+ * (those of pccd_chain_segment_motions) are built only for the links of pairs the filter
+ * cannot separate, and those pairs are solved in the order of the filter's lower bound.
+ * The answer is that of the exact solve of every pair.
+ *
+ * Report (a pccd_report, body indices: the robot's bodies in order of
+ * pccd_robot_add_body, then the obstacles):
+ *  - first-contact mode (default): collides, the first contact time and the pairs and
+ *    features touching first, as a scene's; the pairs listed are those found in contact
+ *    on the way (pairs that cannot touch before the best bound so far are not solved),
+ *    and a start pose with touching bodies answers with one touching triangle pair
+ *    per pair found at t = 0 rather than every one. With all_contacts every pair in
+ *    contact with every touching feature pair.
+ *  - decide mode (cfg->want_time = 0): stops at the first pair found in contact; the
+ *    report holds that pair with a witness (some touching features, some enclosure of
+ *    one of its contact times), and pccd_report_free_until a certified contact-free
+ *    prefix.
+ * ---------------------------------------------------------------------------------- */
+typedef struct pccd_robot pccd_robot;
+
+/* A robot of the chain (copied: later changes to chain do not reach it). */
+PCCD_API int pccd_robot_new(pccd_robot **out, const pccd_chain *chain);
+PCCD_API void pccd_robot_free(pccd_robot *r);
+/* Fixes body to chain link `link` (in the link's frame), in group `group`; *index (when
+ * not NULL) receives its body index. PCCD_EINVAL: link out of range, NULL r or body. */
+PCCD_API int pccd_robot_add_body(pccd_robot *r, size_t link, size_t group, const pccd_body *body,
+                                 size_t *index);
+/* Replaces the allowed group pairs: (groups[2k], groups[2k + 1]) for k < n, either order. */
+PCCD_API int pccd_robot_set_allowed(pccd_robot *r, const size_t *groups, size_t n);
+
+typedef struct pccd_robot_options {
+  size_t struct_size;  /* set by pccd_robot_options_init */
+  int self_collision;  /* 1 (default): robot body pairs too (groups, allowed pairs); 0: none */
+  int filter;          /* 1 (default): the certified filter first; 0: every pair exactly
+                          (the same answers; for tests) */
+} pccd_robot_options;
+PCCD_API int pccd_robot_options_init(pccd_robot_options *opt);
+
+/* Checks the segment q0 -> q1 (n = the chain's link count, values as
+ * pccd_chain_segment_motions) against obstacles[k] on motions[k] (motions NULL or
+ * motions[k] NULL: stationary) into rep. cfg, opt, ropt may be NULL (defaults).
+ * PCCD_EINVAL: a rejected segment ("q1[3]: ..."), an obstacle motion whose quaternion
+ * vanishes ("obstacles[1].motion: ..."), fewer than two bodies ("obstacles: nothing to
+ * check ..."), bad options. PCCD_ELIMIT as pccd_scene_solve (input numbers: the bodies
+ * as "bodies[k]", obstacles as "obstacles[k]"). On any error rep holds no answer. */
+PCCD_API int pccd_robot_check(const pccd_robot *r, const double *q0, const double *q1, size_t n,
+                              const pccd_body *const *obstacles, const pccd_motion *const *motions,
+                              size_t n_obstacles, const pccd_config *cfg,
+                              const pccd_scene_options *opt, const pccd_robot_options *ropt,
+                              pccd_report *rep);
 
 /* Work counters of the last solve (for benchmarks). */
 typedef struct pccd_scene_stats {

@@ -171,33 +171,34 @@ _OPTIONS_MAX = 64
 
 
 def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None,
-             min_distance=None):
-    """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query.
+             min_distance=None, want_time=True):
+    """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query
+    (want_time False: decide mode, pccd_config.want_time = 0).
     Only conversions are cached, by value (the library reads and checks cfg and opt on
     every call); a call with limits converts them each time (a Limits holds a Cancel
     and a clock, so it is no cache key)."""
     key = (time_tolerance, type(time_tolerance), all_contacts, type(all_contacts), threads,
            type(threads), broad_phase, want_exact, type(want_exact),
-           min_distance, type(min_distance))
+           min_distance, type(min_distance), want_time, type(want_time))
     if limits is not None:
         return _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
-                            limits, min_distance)
+                            limits, min_distance, want_time)
     try:
         return _OPTIONS[key]
     except KeyError:
         pass
     except TypeError:  # an unhashable argument: built each time (and checked there)
         return _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
-                            limits, min_distance)
+                            limits, min_distance, want_time)
     out = _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits,
-                       min_distance)
+                       min_distance, want_time)
     if len(_OPTIONS) < _OPTIONS_MAX:
         _OPTIONS[key] = out
     return out
 
 
 def _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None,
-                 min_distance=None):
+                 min_distance=None, want_time=True):
     if broad_phase not in BROAD_PHASES:
         raise InputError("broad_phase: expected \"auto\", \"boxes\", \"brute\", \"bvh\" or \"range\", "
                          f"got {show(broad_phase)}")
@@ -205,7 +206,9 @@ def _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
     _limits.warn_threads(threads)
     if all_contacts not in (True, False):
         raise InputError(f"all_contacts: expected True or False, got {show(all_contacts)}")
-    cfg, keep = _config(time_tolerance, True, want_exact, limits, min_distance)
+    if want_time not in (True, False):
+        raise InputError(f"first_contact: expected True or False, got {show(want_time)}")
+    cfg, keep = _config(time_tolerance, want_time, want_exact, limits, min_distance)
     opt = ffi.new("pccd_scene_options *")
     check(lib.pccd_scene_options_init(opt))
     opt.threads = threads
@@ -237,14 +240,17 @@ def _pair_index(x, names, place):
 
 def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
                 broad_phase="auto", want_exact=True, limits=None, min_distance=None,
-                skip_pairs=()):
+                skip_pairs=(), first_contact=True):
     """Every body pair in contact and the scene's first contact (docs/python.md, "Scenes").
     limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
     min_distance: delta >= 0: contacts are times when bodies are within delta.
-    skip_pairs: body pairs (i, j) (indices or names) not to check."""
+    skip_pairs: body pairs (i, j) (indices or names) not to check.
+    first_contact=False: decide mode (pccd_config.want_time = 0): the solve stops at the
+    first pair found in contact, reported alone with a witness (some touching features,
+    an enclosure of one of its contact times, not necessarily the first)."""
     bodies = _bodies_list(bodies)  # fewer than 2: pccd_scene_solve says so
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
-                               limits, min_distance)
+                               limits, min_distance, first_contact)
     rep = _scratch.report
     if len(bodies) == 2 and not skip_pairs:  # one call, no scene (pccd_pair_solve: the same)
         a, b = bodies

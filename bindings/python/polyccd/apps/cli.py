@@ -62,13 +62,14 @@ def _check_json(result):
     return out
 
 
-def _check_serial(files, threads, progress, limits=None):
+def _check_serial(files, threads, progress, limits=None, decide=False):
     """(SceneResult | Result | InputError) per file, solved here in order."""
     with bar(len(files), "check", "file", progress if len(files) > 1 else False) as b:
         for path in files:
             try:
                 what, case = read_case(path)
-                yield (solve_scene_case(case, limits=limits, threads=threads) if what == "scene"
+                yield (solve_scene_case(case, limits=limits, threads=threads,
+                                        first_contact=not decide) if what == "scene"
                        else solve_case(case, limits))
             except InputError as e:
                 yield e
@@ -81,13 +82,17 @@ def cmd_check(args):
     files = args.file
     status = OK
     with contextlib.ExitStack() as stack:
+        if _distributed(args) and args.decide:
+            _error("--decide: not with a cluster (--scheduler / --workers)")
+            return BAD_INPUT
         if _distributed(args):
             distributed, client = stack.enter_context(_cluster(args))
             results = distributed.check_map(files, threads=args.threads, client=client,
                                             limits=_limits(args),
                                             progress=_progress(args))
         else:
-            results = _check_serial(files, args.threads, _progress(args), _limits(args))
+            results = _check_serial(files, args.threads, _progress(args), _limits(args),
+                                    args.decide)
         stack.callback(results.close)  # the bar ends (and the cluster's tasks) before more output
         for path, result in zip(files, results):
             if isinstance(result, InputError):
@@ -374,6 +379,10 @@ def parser():
                        "(several files: one JSON line per file, with \"file\")")
     c.add_argument("file", nargs="+", metavar="FILE.json")
     c.add_argument("--threads", type=int, default=1, help="worker threads for scenes (default 1)")
+    c.add_argument("--decide", action="store_true",
+                   help="scene files: decide mode (does anything touch on [0, 1]?), stopping "
+                   "at the first pair found in contact; its first_contact is then an "
+                   "enclosure of one of its contact times, not necessarily the first")
     _limit_flags(c)
     _cluster_flags(c)
     c.set_defaults(run=cmd_check)
