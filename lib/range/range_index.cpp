@@ -209,8 +209,9 @@ std::vector<Prim_pair> Range_index::static_candidates(Thread_pool &pool) const {
   const size_t n = ctx_.side(1 - s_).mesh->triangles().size();
   return collect(n, pool, [&](size_t i, auto &part, auto &ids) {
     const uint32_t t = static_cast<uint32_t>(i);
-    const Cnf<kDimTriangle> q = pq.triangle_vs_triangles_boxes(t);
+    Cnf<kDimTriangle> q = pq.triangle_vs_triangles_boxes(t);
     if (!trees_.triangles->may_hit(q)) return;
+    pq.add_triangle_vs_triangle_planes(t, q);
     ids.clear();
     trees_.triangles->search(q, ids);
     for (uint32_t f : ids) part.push_back(pair(TT, TT, f, t));
