@@ -25,7 +25,7 @@ Stored_trees::Stored_trees(const Body_data &d) {
   if (d.mesh) {
     vertices = std::make_unique<Range_tree<kDimVertex>>(lift_vertices(d, d.surface_vertices), 0x7u);
     triangles = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d), 0x3f0u);
-    edges = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d), 0xfc0u);
+    edges = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d), 0xfc7u);
     triangle_sides = lift_triangle_sides(d);
     edge_ends = lift_edge_ends(d);
   } else {
