@@ -10,20 +10,25 @@ namespace pccd::scene {
 // The values of pccd_broad_phase (polyccd.h; checked in lib/api/constants.cpp).
 enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3, bvh = 4 };
 
-// The default (automatic), chosen by measurement (README, "Broad phases";
-// tests/bench/bench_bvh.py, tests/bench/bench_online.py). online: the pair comes from an
-// on-line index (the stored side's trees exist already and are shared by every query):
-// range; otherwise a scene's body pair: bvh (the hierarchies are built with the bodies).
-// min_distance: the solve has a minimum separation delta > 0 (pred::Solve_options):
-// bvh, online too. Boxes and bvh grow one side's bounds by delta (boxes/boxes.h,
-// reach_of); the range phase's linearized contact conditions have no delta (its
-// halfspaces would need the distance conditions of pred/delta_systems.h), so the api
-// refuses range with delta > 0, and an index query takes the stored body's hierarchy
-// (kept with the body like the trees, thread-safe) rather than brute force.
-inline Broad_phase resolve(Broad_phase p, bool online, bool min_distance = false) {
-  if (p != Broad_phase::automatic) return p;
-  return online && !min_distance ? Broad_phase::range : Broad_phase::bvh;
-}
+// The default (automatic) is chosen per body pair (choose, below). With a minimum
+// separation delta > 0 (pred::Solve_options) it is bvh, online too: boxes and bvh grow
+// one side's bounds by delta (boxes/boxes.h, reach_of); the range phase's linearized
+// contact conditions have no delta (its halfspaces would need the distance conditions
+// of pred/delta_systems.h), so the api refuses range with delta > 0, and an index query
+// takes the stored body's hierarchy (kept with the body like the trees, thread-safe).
+
+// The automatic phase of one body pair, chosen by evidence (the rule and the
+// measurements it rests on: docs/benchmarks.md, "Where boxes cannot help"): p itself
+// unless it is automatic; bvh with a minimum separation (range has no delta) or when
+// either body has fewer than kEvidenceMin elements (hierarchies are cheap there and
+// building trees is not; an index resolves automatic once for all its queries,
+// scene/online_index.h); otherwise the sampled box degree
+// (range::box_degree: stored elements whose box meets a query element's box swept over
+// [0, 1], 64 query elements sampled): range from kRangeDegree on, bvh below.
+// Speed only: every phase gives the same answers.
+constexpr size_t kEvidenceMin = 256;
+constexpr double kRangeDegree = 64;
+Broad_phase choose(Broad_phase p, const narrow::Pair_ctx &ctx, bool min_distance, int stored);
 
 // The source of a resolved phase. stored: the range phase's stored side (-1: the
 // larger). reach: boxes::reach_of of the minimum separation (0: none); range takes

@@ -26,6 +26,18 @@ std::unique_ptr<narrow::Candidate_source> make_source(Broad_phase p, const Pair_
   throw arith::Internal_error("make_source: the broad phase is not resolved");
 }
 
+Broad_phase choose(Broad_phase p, const Pair_ctx &ctx, bool min_distance, int stored) {
+  if (p != Broad_phase::automatic) return p;
+  if (min_distance) return Broad_phase::bvh;
+  auto elements = [&](int s) {
+    const Moving_body &b = ctx.side(s);
+    return b.is_mesh() ? b.mesh->triangles().size() : b.spheres->centers().size();
+  };
+  if (std::min(elements(0), elements(1)) < kEvidenceMin) return Broad_phase::bvh;
+  const double degree = range::box_degree(ctx, stored, 64);
+  return degree >= kRangeDegree ? Broad_phase::range : Broad_phase::bvh;
+}
+
 namespace {
 
 class Driver final : public narrow::Candidate_sink {

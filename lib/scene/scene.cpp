@@ -82,7 +82,6 @@ Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
   Search_options so;
   so.solve = opt.solve;
   so.all_contacts = opt.all_contacts;
-  so.phase = resolve(opt.broad_phase, stored >= 0, sgn(opt.solve.delta) > 0);
   so.stored = stored;
 
   std::vector<std::unique_ptr<Pair_work>> work;
@@ -92,7 +91,9 @@ Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
     w->i = ij.first;
     w->j = ij.second;
     w->ctx = std::make_unique<Pair_ctx>(*mb[w->i], *mb[w->j]);
-    w->out = search_pair(*w->ctx, so, pool);
+    Search_options pair_so = so;  // the automatic phase is chosen per pair, by evidence
+    pair_so.phase = choose(opt.broad_phase, *w->ctx, sgn(opt.solve.delta) > 0, stored);
+    w->out = search_pair(*w->ctx, pair_so, pool);
     rep.stats.add(w->out.stats);
     work.push_back(std::move(w));
   }
