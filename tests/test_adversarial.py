@@ -5,11 +5,12 @@ contact, pairs, touching features and their times) in first-contact and all-cont
 modes, with the apart and the hitting motions of each family. The families' docstring
 states which pairs cannot touch (hit=False); there the answer must be "no contact".
 
-auto chooses per body pair by evidence (lib/scene/broad_phase.h, choose): bodies of at
-least 256 elements each in a scene, any index query. The larger cases below reach that
-branch (where brute force is too slow, they are compared with boxes, itself compared
-with brute force above), and the index cases take it at every size: answers must not
-depend on the choice.
+auto chooses per body pair by evidence (lib/scene/broad_phase.h, choose): range when
+either body's self box degree is at least 32, which these families reach from 32
+elements per body on (every box meets every other), bvh below. The small cases take
+bvh, the larger ones (compared with bvh, itself compared with brute force above) and the
+index cases (a stored body of 40 or more) take range: answers must not depend on the
+choice.
 """
 import os
 import sys
@@ -36,21 +37,19 @@ def answers(bodies, method, all_contacts):
 def test_every_method_equals_brute_force(family, hit, all_contacts):
     bodies = af.make(P, family, 24, hit)
     want = answers(bodies, "brute", all_contacts)
-    if not hit:
-        assert want[0] is False, f"{family}: the apart motion touches: {want}"
+    assert want[0] is hit, f"{family}, hit={hit}: brute force says {want}"
     for m in METHODS:
         assert answers(bodies, m, all_contacts) == want, f"{family}, hit={hit}: {m} != brute force"
 
 
 @pytest.mark.parametrize("family", ["slivers", "plates", "balls"])
 @pytest.mark.parametrize("hit", [False, True])
-def test_auto_by_evidence_equals_boxes(family, hit):
-    bodies = af.make(P, family, 600, hit)  # >= 256 elements per body: the evidence branch
-    want = answers(bodies, "boxes", False)
-    if not hit:
-        assert want[0] is False
-    for m in ("auto", "range", "bvh"):
-        assert answers(bodies, m, False) == want, f"{family}, hit={hit}: {m} != boxes"
+def test_auto_by_evidence_equals_bvh(family, hit):
+    bodies = af.make(P, family, 160, hit)  # >= 32 elements per body: auto takes range
+    want = answers(bodies, "bvh", False)
+    assert want[0] is hit
+    for m in ("auto", "range"):
+        assert answers(bodies, m, False) == want, f"{family}, hit={hit}: {m} != bvh"
 
 
 def query_bodies(family, n):
@@ -69,10 +68,22 @@ def query_bodies(family, n):
 
 @pytest.mark.parametrize("family", af.FAMILIES)
 def test_index_auto_equals_brute_force(family):
-    stored, queries = query_bodies(family, 40)
+    stored, queries = query_bodies(family, 80)
     ix = P.Index(stored)
     for m in METHODS:
         got = [summary(r) for r in ix.query_many(queries, broad_phase=m, time_tolerance=TOL)]
         for q, g in zip(queries, got):
             assert g == summary(P.check([stored, q], broad_phase="brute", time_tolerance=TOL)), (
                 f"{family}: index {m} != brute force")
+
+
+@pytest.mark.parametrize("family", sorted(af.NORMAL))
+@pytest.mark.parametrize("motion", ["axis", "general"])
+def test_rotations_equal_brute_force(family, motion):
+    """Body 1 turning about its planes' normal (apart by construction): range's exact
+    fixed-axis conditions ("axis") and its general clauses ("general")."""
+    bodies = af.make(P, family, 24, motion=motion)
+    want = answers(bodies, "brute", False)
+    assert want[0] is False, f"{family}, {motion}: touches: {want}"
+    for m in METHODS:
+        assert answers(bodies, m, False) == want, f"{family}, {motion}: {m} != brute force"

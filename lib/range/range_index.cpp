@@ -37,41 +37,6 @@ const Stored_trees &stored_trees(const Body_data &d) {
   return d.attached<Stored_trees>([&] { return std::make_shared<const Stored_trees>(d); });
 }
 
-double self_degree(const Body_data &d, size_t samples) {
-  const Stored_trees &t = stored_trees(d);
-  const size_t n = d.mesh ? t.triangles->size() : t.balls->size();
-  const size_t m = std::min(n, samples);
-  if (m == 0) return 0;
-  std::vector<uint32_t> ids;
-  for (size_t k = 0; k < m; ++k) {
-    const uint32_t i = static_cast<uint32_t>(k * n / m);
-    if (d.mesh) {  // lo_j <= hi_i and hi_j >= lo_i (coordinates 4..6, 7..9), outward
-      const auto &x = t.triangles->lifted(i);
-      Cnf<kDimTriangle> q;
-      for (int a = 0; a < 3; ++a) {
-        q.bounds.push_back({static_cast<uint8_t>(4 + a), true, x[7 + a].hi});
-        q.bounds.push_back({static_cast<uint8_t>(7 + a), false, x[4 + a].lo});
-      }
-      t.triangles->search(q, ids);
-    } else {  // |c_j - c_i| <= r_j + r_i per axis: (c_i + r_i) - c_j + r_j >= 0, and back
-      const auto &x = t.balls->lifted(i);
-      Cnf<kDimBall> q;
-      for (int a = 0; a < 3; ++a)
-        for (int sgn : {+1, -1}) {
-          Halfspace<kDimBall> h;
-          for (Interval &c : h.a) c = Interval(0.0);
-          h.a[a] = Interval(-sgn);
-          h.a[4] = Interval(1.0);
-          h.a0 = sgn > 0 ? x[a] + x[4] : x[4] - x[a];
-          q.hs.push_back(h);
-          q.end_clause();
-        }
-      t.balls->search(q, ids);
-    }
-  }
-  return double(ids.size()) / double(m);
-}
-
 Range_index::Range_index(const Pair_ctx &ctx, int stored)
     : ctx_(ctx), s_(stored), rel_(ctx.side(stored), ctx.side(1 - stored)),
       trees_(stored_trees(*ctx.side(stored).data)) {
@@ -251,23 +216,6 @@ std::vector<Prim_pair> Range_index::static_candidates(Thread_pool &pool) const {
     trees_.triangles->search(q, ids);
     for (uint32_t f : ids) part.push_back(pair(TT, TT, f, t));
   });
-}
-
-double Range_index::box_degree(size_t samples) const {
-  const Moving_body &S = ctx_.side(s_), &Q = ctx_.side(1 - s_);
-  const Piece_query pq(rel_, Q, 0.0, 1.0);
-  const size_t n = Q.is_mesh() ? Q.mesh->triangles().size() : Q.spheres->centers().size();
-  const size_t m = std::min(n, samples);
-  if (m == 0) return 0;
-  std::vector<uint32_t> ids;
-  for (size_t k = 0; k < m; ++k) {
-    const uint32_t i = static_cast<uint32_t>(k * n / m);
-    if (S.is_mesh() && Q.is_mesh()) trees_.triangles->search(pq.triangle_vs_triangles_boxes(i), ids);
-    else if (S.is_mesh()) trees_.triangles->search(pq.ball_vs_triangles_boxes(i), ids);
-    else if (Q.is_mesh()) trees_.balls->search(pq.triangle_vs_balls_boxes(i), ids);
-    else trees_.balls->search(pq.ball_vs_balls_boxes(i), ids);
-  }
-  return double(ids.size()) / double(m);
 }
 
 }  // namespace pccd::range

@@ -49,13 +49,6 @@ struct Stored_trees : narrow::Body_attachment {
 // (Body_data::attached).
 const Stored_trees &stored_trees(const Body_data &d);
 
-// The evidence for an index's automatic broad phase (scene/online_index.h): the mean
-// number of the body's elements (triangles or balls, itself included) whose box meets
-// the box of one of them, over at most `samples` elements at a fixed stride. Parallel
-// slivers, fans, needles: every box meets every other (the number of elements); a
-// terrain or a molecule: a few neighbours (docs/benchmarks.md).
-double self_degree(const Body_data &d, size_t samples);
-
 class Range_index {
  public:
   // stored: 0 or 1, the side whose primitives go into the trees.
@@ -68,12 +61,6 @@ class Range_index {
   // Two meshes: the triangle pairs (TT) whose boxes meet at t = 0 and whose planes do
   // not leave one triangle strictly on one side (for the static test).
   std::vector<Prim_pair> static_candidates(Thread_pool &pool) const;
-  // The evidence for the automatic broad phase (scene/broad_phase.h): the mean number of
-  // stored elements (triangles or balls) whose box meets the box of a query element
-  // (triangle or ball) swept over all of [0, 1], over at most `samples` query elements
-  // taken at a fixed stride (the same ones every run). Box clauses only: the count the
-  // box phases would have to solve, which range's contact clauses avoid.
-  double box_degree(size_t samples) const;
 
  private:
   const Pair_ctx &ctx_;

@@ -37,18 +37,11 @@ class Range_source final : public narrow::Candidate_source {
   Range_index index_;
 };
 
-int stored_side(const Pair_ctx &ctx, int stored) {
-  return stored >= 0 ? stored : n_elements(ctx.side(0)) >= n_elements(ctx.side(1)) ? 0 : 1;
-}
-
 }  // namespace
 
 std::unique_ptr<narrow::Candidate_source> range_source(const Pair_ctx &ctx, int stored) {
-  return std::make_unique<Range_source>(ctx, stored_side(ctx, stored));
-}
-
-double box_degree(const Pair_ctx &ctx, int stored, size_t samples) {
-  return Range_index(ctx, stored_side(ctx, stored)).box_degree(samples);
+  if (stored < 0) stored = n_elements(ctx.side(0)) >= n_elements(ctx.side(1)) ? 0 : 1;
+  return std::make_unique<Range_source>(ctx, stored);
 }
 
 }  // namespace pccd::range

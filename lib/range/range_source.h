@@ -14,8 +14,4 @@ namespace pccd::range {
 // more elements (triangles or balls), side 0 on a tie.
 std::unique_ptr<narrow::Candidate_source> range_source(const narrow::Pair_ctx &ctx, int stored);
 
-// Range_index::box_degree of the pair (stored: as for range_source; builds the stored
-// side's trees if they are not built yet).
-double box_degree(const narrow::Pair_ctx &ctx, int stored, size_t samples);
-
 }  // namespace pccd::range

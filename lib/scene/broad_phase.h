@@ -19,16 +19,20 @@ enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3, bvh = 4
 
 // The automatic phase of one body pair, chosen by evidence (the rule and the
 // measurements it rests on: docs/benchmarks.md, "Where boxes cannot help"): p itself
-// unless it is automatic; bvh with a minimum separation (range has no delta) or when
-// either body has fewer than kEvidenceMin elements (hierarchies are cheap there and
-// building trees is not; an index resolves automatic once for all its queries,
-// scene/online_index.h); otherwise the sampled box degree
-// (range::box_degree: stored elements whose box meets a query element's box swept over
-// [0, 1], 64 query elements sampled): range from kRangeDegree on, bvh below.
+// unless it is automatic; bvh with a minimum separation (range has no delta); else
+// range when either body's self box degree is at least kRangeDegree, bvh below.
 // Speed only: every phase gives the same answers.
-constexpr size_t kEvidenceMin = 256;
-constexpr double kRangeDegree = 64;
-Broad_phase choose(Broad_phase p, const narrow::Pair_ctx &ctx, bool min_distance, int stored);
+constexpr double kRangeDegree = 32;
+Broad_phase choose(Broad_phase p, const narrow::Pair_ctx &ctx, bool min_distance);
+
+// The self box degree of a body: the mean number of its elements (triangles or balls,
+// itself included) whose box meets the box of one of them, over at most 64 elements at
+// a fixed stride, each against all n (O(64 n) double comparisons, taken once per body
+// and kept with it). Parallel slivers, plates, fans, needles, large overlapping balls:
+// every box meets every other (n); a terrain, a molecule, a scanned mesh: a few
+// neighbours. The boxes are rounded outward from the body's doubles, but they decide
+// only the choice of a broad phase, never a contact.
+double self_degree(const narrow::Body_data &d);
 
 // The source of a resolved phase. stored: the range phase's stored side (-1: the
 // larger). reach: boxes::reach_of of the minimum separation (0: none); range takes

@@ -21,18 +21,12 @@ Moving_body prepare(const Scene_body &b, const std::string &where = "") {
 
 Online_index::Online_index(const Scene_body &stored) : stored_(prepare(stored)) {
   range::stored_trees(*stored_.data);  // the preprocessing: built here, not by the first query
-  if (range::self_degree(*stored_.data, 256) >= kRangeDegree) auto_ = Broad_phase::range;
-}
-
-Scene_options Online_index::resolved(const Scene_options &opt) const {
-  Scene_options o = opt;
-  if (o.broad_phase == Broad_phase::automatic && sgn(o.solve.delta) == 0) o.broad_phase = auto_;
-  return o;
+  self_degree(*stored_.data);          // the evidence for automatic (broad_phase.h), once
 }
 
 Scene_report Online_index::query(const Scene_body &q, const Scene_options &opt) const {
   const Moving_body query = prepare(q);
-  return solve_prepared({&stored_, &query}, {{0, 1}}, resolved(opt), 0);
+  return solve_prepared({&stored_, &query}, {{0, 1}}, opt, 0);
 }
 
 void Online_index::query_many(const std::vector<Scene_body> &qs, const Scene_options &opt,
@@ -41,7 +35,7 @@ void Online_index::query_many(const std::vector<Scene_body> &qs, const Scene_opt
   prepared.reserve(qs.size());
   for (size_t k = 0; k < qs.size(); ++k)
     prepared.push_back(prepare(qs[k], "bodies[" + std::to_string(k) + "]."));
-  Scene_options one = resolved(opt);
+  Scene_options one = opt;
   one.threads = 1;
   out.assign(qs.size(), Scene_report());
   Thread_pool pool(std::max(1u, opt.threads));

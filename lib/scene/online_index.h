@@ -9,13 +9,12 @@
 //
 // query() only reads the index, so several threads may query one index at once.
 // Answers equal those of solve_scene on the same two bodies with any broad phase;
-// opt.broad_phase chooses how candidates are found. automatic is chosen once per index,
-// when it is built, by evidence (docs/benchmarks.md, "Where boxes cannot help"): range
-// (the stored trees) when the stored body's self box degree (range::self_degree, 256
-// elements sampled) is at least scene::kRangeDegree, so that a query's box meets
-// most stored boxes (parallel slivers, fans, needles), else bvh (the stored body's
-// hierarchy: a terrain, a molecule). With a minimum separation delta > 0 automatic is
-// bvh (range has no delta: broad_phase.h).
+// opt.broad_phase chooses how candidates are found. automatic is chosen by evidence
+// (scene::choose, broad_phase.h): range (the stored trees) when the stored or the query
+// body has a high self box degree (parallel slivers, fans, needles: a query's box meets
+// most stored boxes), else bvh (the stored body's hierarchy: a terrain, a molecule);
+// the stored body's degree is taken once, when the index is built. With a minimum
+// separation delta > 0 automatic is bvh (range has no delta).
 #pragma once
 #include "scene/scene.h"
 
@@ -36,14 +35,10 @@ class Online_index {
                   std::vector<Scene_report> &out) const;
 
   const Moving_body &stored() const { return stored_; }
-  // What automatic means for this index without a minimum separation (range or bvh).
-  Broad_phase automatic() const { return auto_; }
 
  private:
   Moving_body stored_;
-  Broad_phase auto_ = Broad_phase::bvh;
-  // opt with automatic resolved for this index (a minimum separation: left to choose()).
-  Scene_options resolved(const Scene_options &opt) const;
+
 };
 
 }  // namespace pccd::scene

@@ -92,7 +92,7 @@ Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
     w->j = ij.second;
     w->ctx = std::make_unique<Pair_ctx>(*mb[w->i], *mb[w->j]);
     Search_options pair_so = so;  // the automatic phase is chosen per pair, by evidence
-    pair_so.phase = choose(opt.broad_phase, *w->ctx, sgn(opt.solve.delta) > 0, stored);
+    pair_so.phase = choose(opt.broad_phase, *w->ctx, sgn(opt.solve.delta) > 0);
     w->out = search_pair(*w->ctx, pair_so, pool);
     rep.stats.add(w->out.stats);
     work.push_back(std::move(w));

@@ -16,7 +16,8 @@ Families (k = the number of primitives per body):
   slivers  k long thin triangles on the parallel planes z = x + 2i (body 0) and
            z = x + 2i + 1 (body 1), each (0, 0, c) (L, 0, L + c) (0, 1/2, c) with
            L = 2k + 8: every box meets every other. Body 1 runs along y (in its planes):
-           the planes stay 1 apart / 1/sqrt(2) in distance. hit: it also drops by 3/2 in z.
+           the planes stay 1 apart / 1/sqrt(2) in distance. hit: it runs 1/4 along y and drops
+           by 3/2 in z (crossing the plane below at t = 2/3).
   plates   k/2 square plates (two triangles sharing a diagonal) on the planes
            z = (x + y) / 2 + 2i / body 1 + 2i + 1, side L = 2k + 8; body 1 runs along
            (1, -1, 0) within its planes. hit: it also drops by 3/2 in z.
@@ -53,9 +54,26 @@ def _grid(x):
     return np.round(np.asarray(x, dtype=float) * 65536.0) / 65536.0
 
 
+# The planes' normal (slivers, plates, needles) or the slab's (balls): rotations about
+# it, through the origin, keep every body-1 feature in its own plane (MOTIONS).
+NORMAL = {"slivers": (-1, 0, 1), "plates": (-1, -1, 2), "needles": (1, 0, -1), "balls": (1, 1, 1)}
+MOTIONS = ("translation", "axis", "general")
+_motion = {"kind": "translation", "axis": None}
+
+
 def _body(polyccd, shape, translation=None):
-    m = None if translation is None else polyccd.Motion(translation=[[0.0, float(c)] for c in translation])
-    return polyccd.Body(shape, m)
+    """Body 1's motion: the family's translation ("translation"), or r(t) = (1, t a / 4)
+    about the family's normal a through the origin alone ("axis": a rotation about a
+    fixed axis, range's exact rotation conditions) or with the translation ("general":
+    the axis travels, range's general clauses)."""
+    if translation is None:
+        return polyccd.Body(shape)
+    kind, a = _motion["kind"], _motion["axis"]
+    trans = [[0.0, 0.0 if kind == "axis" else float(c)] for c in translation]
+    if kind == "translation":
+        return polyccd.Body(shape, polyccd.Motion(translation=trans))
+    rot = [[1.0, 0.0]] + [[0.0, c / 4] for c in a]
+    return polyccd.Body(shape, polyccd.Motion(translation=trans, rotation=rot))
 
 
 def _mesh(polyccd, V, F):
@@ -73,7 +91,7 @@ def slivers(polyccd, n, hit):
             V += [[0, 0, c], [L, 0, L + c], [0, 0.5, c]]
             F.append([3 * i, 3 * i + 1, 3 * i + 2])
         bodies.append(_mesh(polyccd, V, F))
-    return [_body(polyccd, bodies[0]), _body(polyccd, bodies[1], [0, 4, -1.5 if hit else 0])]
+    return [_body(polyccd, bodies[0]), _body(polyccd, bodies[1], [0, 1 / 4, -1.5] if hit else [0, 4, 0])]
 
 
 def plates(polyccd, n, hit):
@@ -146,6 +164,13 @@ def balls(polyccd, n, hit, rng=None):
     return [_body(polyccd, bodies[0]), _body(polyccd, bodies[1], _grid(move))]
 
 
-def make(polyccd, family, n, hit=False):
-    """Two bodies of family with about n primitives in all (module docstring)."""
-    return globals()[family](polyccd, n, hit)
+def make(polyccd, family, n, hit=False, motion="translation"):
+    """Two bodies of family with about n primitives in all (module docstring); motion:
+    one of MOTIONS (_body; the rotations only for the families of NORMAL, apart)."""
+    if motion != "translation" and (family not in NORMAL or hit):
+        raise ValueError(f"{family}: no {motion} motion (hit={hit})")
+    _motion.update(kind=motion, axis=NORMAL.get(family))
+    try:
+        return globals()[family](polyccd, n, hit)
+    finally:
+        _motion.update(kind="translation", axis=None)

@@ -19,7 +19,8 @@ families use the "linear" motions of bench_online.py.
 
 Usage: python tests/bench/bench_adversarial.py [--sizes 1k,2k,4k,8k,16k]
            [--families slivers,plates,fans,needles,balls,terrain,mol]
-           [--methods range,bvh,boxes,auto] [--budget-seconds 60] [--json FILE]
+           [--methods range,bvh,boxes,auto] [--motion translation|axis|general]
+           [--budget-seconds 60] [--json FILE]
 """
 
 import argparse
@@ -58,7 +59,7 @@ def timed(fn):
         gc.enable()
 
 
-def case_runner(polyccd, family, n):
+def case_runner(polyccd, family, n, motion):
     """fn(method) -> (seconds, answers, stats) for one family and size."""
     if family in ONLINE:
         import bench_online as bo
@@ -72,7 +73,7 @@ def case_runner(polyccd, family, n):
             cand = sum(r.stats["candidates"] for r in res)
             return dt, [answer(r) for r in res], {"candidates": cand}
         return run
-    bodies = af.make(polyccd, family, n)
+    bodies = af.make(polyccd, family, n, motion=motion)
 
     def run(method):
         dt, r = timed(lambda: polyccd.check(bodies, broad_phase=method, threads=1))
@@ -86,18 +87,21 @@ def main():
     ap.add_argument("--families", default=",".join(af.FAMILIES + tuple(ONLINE)))
     ap.add_argument("--methods", default=",".join(METHODS))
     ap.add_argument("--budget-seconds", type=float, default=60.0)
+    ap.add_argument("--motion", default="translation", choices=af.MOTIONS,
+                    help="body 1's motion in the two-body families (adversarial_families.py)")
     ap.add_argument("--json", default=None, help="write every measurement here")
     opts = ap.parse_args()
     import polyccd
     sizes = [parse_size(s) for s in opts.sizes.split(",")]
     methods = opts.methods.split(",")
     out = {}
-    print(f"bench_adversarial: sizes {sizes}, methods {methods}, budget {opts.budget_seconds} s, threads 1")
+    print(f"bench_adversarial: sizes {sizes}, methods {methods}, motion {opts.motion}, "
+          f"budget {opts.budget_seconds} s, threads 1")
     for family in opts.families.split(","):
         times = {m: {} for m in methods}
         last = {}
         for n in sizes:
-            run = case_runner(polyccd, family, n)
+            run = case_runner(polyccd, family, n, opts.motion)
             ref = None
             for m in methods:
                 if m in last and last[m][1] * (n / last[m][0]) ** 2 > opts.budget_seconds:
