@@ -90,10 +90,17 @@ def main():
     ap.add_argument("--motion", default="translation", choices=af.MOTIONS,
                     help="body 1's motion in the two-body families (adversarial_families.py)")
     ap.add_argument("--json", default=None, help="write every measurement here")
+    ap.add_argument("--fit-from", default="1k", help="the second exponent column fits N >= this")
+    ap.add_argument("--tables-of", default=None, help="only print the tables of a --json file")
     opts = ap.parse_args()
-    import polyccd
     sizes = [parse_size(s) for s in opts.sizes.split(",")]
     methods = opts.methods.split(",")
+    if opts.tables_of:
+        with open(opts.tables_of) as f:
+            out = json.load(f)
+        sizes = sorted({int(n) for res in out.values() for m in methods for n in res.get(m, {})})
+        return print_tables(out, sizes, methods, parse_size(opts.fit_from))
+    import polyccd
     out = {}
     print(f"bench_adversarial: sizes {sizes}, methods {methods}, motion {opts.motion}, "
           f"budget {opts.budget_seconds} s, threads 1")
@@ -118,37 +125,42 @@ def main():
                     sys.exit(1)
                 print(f"  {family:8s} N = {n:6d}  {m:5s} {dt:9.3f} s  {st}", flush=True)
         out[family] = {m: {str(n): t for n, t in times[m].items()} for m in methods}
-        out[family]["exponent"] = {m: fit_exponent(sorted(times[m].items())) for m in methods}
-    print_tables(out, sizes, methods)
+    print_tables(out, sizes, methods, parse_size(opts.fit_from))
     if opts.json:
         with open(opts.json, "w") as f:
             json.dump(out, f, indent=1)
 
 
-def print_tables(out, sizes, methods):
+def exponent(res, m, lo=0):
+    return fit_exponent(sorted((int(n), t) for n, t in res.get(m, {}).items() if int(n) >= lo))
+
+
+def print_tables(out, sizes, methods, fit_from):
     print("\nTime (s) per family, method and N; '-': over budget (not run)")
-    head = "| family | method | " + " | ".join(f"N={n}" for n in sizes) + " | exponent |"
+    head = "| family | method | " + " | ".join(f"N={n}" for n in sizes) + " |"
     print(head)
     print("|" + "---|" * (head.count("|") - 1))
     for family, res in out.items():
         for m in methods:
-            cells = [f"{res[m][str(n)]:.3f}" if str(n) in res[m] else "-" for n in sizes]
-            e = res["exponent"][m]
-            print(f"| {family} | {m} | " + " | ".join(cells) + f" | {'-' if e is None else f'{e:.2f}'} |")
-    print("\nFitted exponents (least squares of log time on log N, measured sizes only)")
+            cells = [f"{res[m][str(n)]:.3f}" if str(n) in res.get(m, {}) else "-" for n in sizes]
+            print(f"| {family} | {m} | " + " | ".join(cells) + " |")
+    print(f"\nFitted exponents (least squares of log time on log N over the measured sizes: "
+          f"all / N >= {fit_from}; '-': fewer than two sizes)")
     print("| family | " + " | ".join(methods) + " | auto / fastest (worst size) |")
     print("|" + "---|" * (len(methods) + 2))
+
+    def fmt(e):
+        return "-" if e is None else f"{e:.2f}"
     for family, res in out.items():
-        ex = [res["exponent"][m] for m in methods]
+        ex = [f"{fmt(exponent(res, m))} / {fmt(exponent(res, m, fit_from))}" for m in methods]
         worst = None
         if "auto" in methods:
             for n in sizes:
-                ts = [res[m][str(n)] for m in methods if str(n) in res[m]]
-                if str(n) in res["auto"] and ts:
+                ts = [res[m][str(n)] for m in methods if str(n) in res.get(m, {})]
+                if str(n) in res.get("auto", {}) and ts:
                     r = res["auto"][str(n)] / min(ts)
                     worst = r if worst is None else max(worst, r)
-        print(f"| {family} | " + " | ".join("-" if e is None else f"{e:.2f}" for e in ex)
-              + f" | {'-' if worst is None else f'{worst:.2f}'} |")
+        print(f"| {family} | " + " | ".join(ex) + f" | {fmt(worst)} |")
 
 
 if __name__ == "__main__":
