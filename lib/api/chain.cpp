@@ -61,6 +61,18 @@ PCCD_API int pccd_chain_size(const pccd_chain *c, size_t *n) {
   });
 }
 
+PCCD_API int pccd_chain_set_value_place(pccd_chain *c, size_t k, const char *place) {
+  return guard(__func__, [&] {
+    require(c, "c");
+    require(place, "place");
+    if (k >= c->c.size())
+      throw Input_error("k: " + std::to_string(k) + " out of range (the chain has " +
+                        std::to_string(c->c.size()) + " links)");
+    c->c.set_value_place(k, place);
+    return PCCD_OK;
+  });
+}
+
 PCCD_API int pccd_chain_segment_motions(const pccd_chain *c, const double *q0, const double *q1,
                                         size_t n, pccd_motion **motions) {
   return guard(__func__, [&] {

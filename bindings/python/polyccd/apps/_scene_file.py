@@ -6,10 +6,7 @@ import dataclasses
 from dataclasses import dataclass
 from typing import Optional
 
-from .._body import Mesh, Spheres
-from .._errors import InputError
-from .._motion import Motion
-from .._scene import Body
+from .. import Body, InputError, Mesh, Motion, Spheres
 from ._json import (SCENE_FORMAT, _expect_at, _list_at, _object_at, _string_at, describe, load,
                     min_distance_option, number_at, options_and_labels)
 
