@@ -80,32 +80,33 @@ def _mesh(polyccd, V, F):
     return polyccd.Mesh(np.asarray(V, dtype=float), np.asarray(F, dtype=np.int64))
 
 
-def slivers(polyccd, n, hit):
-    k = max(1, n // 2)
-    L = 2 * k + 8
+def _stacks(polyccd, k, layer):
+    """Two meshes of k layers each, layer(c) -> (vertices, triangles) at offset c = 2i
+    (body 0) or 2i + 1 (body 1): interleaved parallel planes."""
     bodies = []
     for side in range(2):
         V, F = [], []
         for i in range(k):
-            c = 2 * i + side
-            V += [[0, 0, c], [L, 0, L + c], [0, 0.5, c]]
-            F.append([3 * i, 3 * i + 1, 3 * i + 2])
+            v, f = layer(2 * i + side)
+            F += [[len(V) + j for j in t] for t in f]
+            V += v
         bodies.append(_mesh(polyccd, V, F))
+    return bodies
+
+
+def slivers(polyccd, n, hit):
+    k = max(1, n // 2)
+    L = 2 * k + 8
+    bodies = _stacks(polyccd, k, lambda c: ([[0, 0, c], [L, 0, L + c], [0, 0.5, c]], [[0, 1, 2]]))
     return [_body(polyccd, bodies[0]), _body(polyccd, bodies[1], [0, 1 / 4, -1.5] if hit else [0, 4, 0])]
 
 
 def plates(polyccd, n, hit):
     k = max(1, n // 4)
     L = 2 * k + 8
-    bodies = []
-    for side in range(2):
-        V, F = [], []
-        for i in range(k):
-            c = 2 * i + side
-            corners = [[0, 0], [L, 0], [L, L], [0, L]]
-            V += [[x, y, (x + y) / 2 + c] for x, y in corners]
-            F += [[4 * i, 4 * i + 1, 4 * i + 2], [4 * i, 4 * i + 2, 4 * i + 3]]
-        bodies.append(_mesh(polyccd, V, F))
+    corners = [[0, 0], [L, 0], [L, L], [0, L]]
+    bodies = _stacks(polyccd, k, lambda c: ([[x, y, (x + y) / 2 + c] for x, y in corners],
+                                            [[0, 1, 2], [0, 2, 3]]))
     return [_body(polyccd, bodies[0]), _body(polyccd, bodies[1], [3, -3, -1.5 if hit else 0])]
 
 

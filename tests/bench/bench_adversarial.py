@@ -20,7 +20,7 @@ families use the "linear" motions of bench_online.py.
 Usage: python tests/bench/bench_adversarial.py [--sizes 1k,2k,4k,8k,16k]
            [--families slivers,plates,fans,needles,balls,terrain,mol]
            [--methods range,bvh,boxes,auto] [--motion translation|axis|general]
-           [--budget-seconds 60] [--json FILE]
+           [--budget-seconds 60] [--repeat 1] [--json FILE] [--tables-of FILE]
 """
 
 import argparse
@@ -90,6 +90,7 @@ def main():
     ap.add_argument("--motion", default="translation", choices=af.MOTIONS,
                     help="body 1's motion in the two-body families (adversarial_families.py)")
     ap.add_argument("--json", default=None, help="write every measurement here")
+    ap.add_argument("--repeat", type=int, default=1, help="each cell: the minimum of this many runs")
     ap.add_argument("--fit-from", default="1k", help="the second exponent column fits N >= this")
     ap.add_argument("--tables-of", default=None, help="only print the tables of a --json file")
     opts = ap.parse_args()
@@ -114,6 +115,8 @@ def main():
                 if m in last and last[m][1] * (n / last[m][0]) ** 2 > opts.budget_seconds:
                     continue
                 dt, ans, st = run(m)
+                for _ in range(opts.repeat - 1):      # the minimum over --repeat runs
+                    dt = min(dt, run(m)[0])
                 last[m] = (n, dt)
                 times[m][n] = dt
                 if ref is None:
