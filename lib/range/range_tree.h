@@ -43,7 +43,10 @@ class Range_tree {
     mid_.resize(n);
     for (uint32_t i = 0; i < n; ++i) {
       order_[i] = i;
-      for (int k = 0; k < D; ++k) mid_[i][k] = 0.5 * lifted_[i][k].lo + 0.5 * lifted_[i][k].hi;
+      for (int k = 0; k < D; ++k) {  // NaN (an infinite box): 0, so the splits stay ordered
+        const double m = 0.5 * lifted_[i][k].lo + 0.5 * lifted_[i][k].hi;
+        mid_[i][k] = m == m ? m : 0.0;
+      }
     }
     if (n == 0) return;
     nodes_.reserve(2 * (n / kLeaf + 1));
