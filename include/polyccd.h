@@ -110,6 +110,9 @@ typedef enum pccd_stage {
 /* The default of pccd_config.max_number_bits: no double (at most 1,127 bits as an exact
  * fraction, subnormals included) and no decimal of fewer than ~4,900 digits exceeds it. */
 #define PCCD_DEFAULT_MAX_NUMBER_BITS 16384
+/* The most worker threads a call takes (pccd_scene_options.threads,
+ * pccd_batch_options.threads, pccd_threads_usable): 1 to PCCD_MAX_THREADS. */
+#define PCCD_MAX_THREADS 1024
 
 /* Version of the library as "major.minor.patch"; never NULL. */
 PCCD_API const char *pccd_version(void);
@@ -137,10 +140,11 @@ PCCD_API int pccd_cancel_reset(pccd_cancel *c);
 /* *is_set = 1 when the flag is set. */
 PCCD_API int pccd_cancel_is_set(const pccd_cancel *c, int *is_set);
 
-/* How many worker threads a call asking for `requested` (1 to 1024: pccd_scene_options,
- * pccd_batch_options) starts: min(requested, the hardware's thread count), at least 1.
+/* How many worker threads a call asking for `requested` (1 to PCCD_MAX_THREADS:
+ * pccd_scene_options, pccd_batch_options) starts: min(requested, the hardware's thread
+ * count), at least 1.
  * Threads beyond the hardware's only add switching; no answer depends on the count.
- * PCCD_EINVAL when usable is NULL or requested is outside 1..1024. */
+ * PCCD_EINVAL when usable is NULL or requested is outside 1..PCCD_MAX_THREADS. */
 PCCD_API int pccd_threads_usable(unsigned requested, unsigned *usable);
 
 /* Options of a solve. Initialise with pccd_config_init, then change fields.
@@ -251,8 +255,9 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
 /* Options of pccd_solve_linear_batch_d; initialise with pccd_batch_options_init. */
 typedef struct pccd_batch_options {
   size_t struct_size;  /* sizeof(pccd_batch_options), set by pccd_batch_options_init */
-  unsigned threads;    /* worker threads, 1 to 1024 (default 1); answers do not depend on it;
-                          at most the hardware's thread count are started */
+  unsigned threads;    /* worker threads, 1 to PCCD_MAX_THREADS (default 1); answers do
+                          not depend on it; at most the hardware's thread count are
+                          started */
 } pccd_batch_options;
 PCCD_API int pccd_batch_options_init(pccd_batch_options *opt);
 
@@ -688,8 +693,9 @@ PCCD_API int pccd_scene_set_pair_check(pccd_scene *s, size_t i, size_t j, int ch
 
 typedef struct pccd_scene_options {
   size_t struct_size;     /* set by pccd_scene_options_init */
-  unsigned threads;       /* worker threads, >= 1 (default 1); answers do not depend on it;
-                             at most the hardware's thread count are started */
+  unsigned threads;       /* worker threads, 1 to PCCD_MAX_THREADS (default 1); answers do
+                             not depend on it; at most the hardware's thread count are
+                             started */
   int all_contacts;       /* 0 (default): the feature pairs touching first;
                              1: every touching feature pair with its own first time */
   int broad_phase;        /* a pccd_broad_phase (default PCCD_BROAD_AUTO) */

@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 LIB = Path(__file__).resolve().parent.parent / "lib"
-ORDER = ["util", "arith", "poly", "motion", "pred", "narrow", "boxes", "bvh", "range", "scene", "api"]
+ORDER = ["util", "arith", "poly", "motion", "pred", "narrow", "enclose", "boxes", "bvh", "range", "scene", "api"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 

@@ -53,12 +53,8 @@ PCCD_API int pccd_chain_add_link(pccd_chain *c, long parent, int joint, const do
 }
 
 PCCD_API int pccd_chain_size(const pccd_chain *c, size_t *n) {
-  return guard(__func__, [&] {
-    require(c, "c");
-    require(n, "n");
-    *n = c->c.size();
-    return PCCD_OK;
-  });
+  return pccd::api::getter(__func__, c, "c", n, "n",
+                                [&] { return c->c.size(); });
 }
 
 PCCD_API int pccd_chain_set_value_place(pccd_chain *c, size_t k, const char *place) {
