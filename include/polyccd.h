@@ -798,6 +798,117 @@ typedef struct pccd_scene_stats {
 } pccd_scene_stats;
 PCCD_API int pccd_report_stats(const pccd_report *rep, pccd_scene_stats *stats);
 
+/* ------------------------------------------------------------------------------------
+ * Steps of deforming meshes (a simulator's time step): every vertex moves on its own
+ * straight path from its position at t = 0 to its position at t = 1 (doubles at their
+ * exact values). A step holds one or more meshes (triangles, edges, isolated points);
+ * pccd_step_solve checks every primitive pair exactly over t in [0, 1]:
+ *   VERTEX_FACE    every vertex used by a face, edge or point against every face not
+ *                  holding it,
+ *   EDGE_EDGE      every edge against every edge with no common vertex,
+ *   VERTEX_EDGE, VERTEX_VERTEX   every isolated point against every edge not ending at
+ *                  it and every other point,
+ * within a mesh (self-collision) and between meshes, for the mesh pairs checked
+ * (pccd_step_set_pair_check; all by default). Pairs sharing a vertex are left out (they
+ * touch from the start), as in every simulator's CCD. A static obstacle is a mesh with
+ * v_t1 = v_t0. config.min_distance > 0 makes a contact "within delta" (pccd_config).
+ * The broad phase (swept boxes in a translating frame, a bounding-volume hierarchy
+ * rebuilt per step, on opt.threads threads) never changes an answer.
+ * ---------------------------------------------------------------------------------- */
+typedef struct pccd_step pccd_step;
+typedef struct pccd_step_report pccd_step_report;
+
+PCCD_API int pccd_step_new(pccd_step **out);
+PCCD_API void pccd_step_free(pccd_step *s);
+
+/* Appends a mesh of nv vertices: vertex i moves from v_t0[3i..3i+2] to v_t1[3i..3i+2].
+ * faces: nf index triples (may be 0); edges: ne index pairs, or edges = NULL to derive
+ * them from the faces (every side once; ne is then ignored); points: np isolated points (vertex indices:
+ * particles, or rod ends). *index (when not NULL) receives the mesh's position.
+ * PCCD_EINVAL, naming the place: s NULL, a NULL array with a nonzero count, a non-finite
+ * coordinate ("v_t1[4][2]"), an index out of range ("faces[3][1]: index 12 out of range
+ * (10 vertices)"), a face or edge repeating a vertex ("faces[3]: repeats vertex 5 (a
+ * degenerate face)"); PCCD_ELIMIT: a count above PCCD_MAX_BODY_ELEMENTS. On error the
+ * step is unchanged. */
+PCCD_API int pccd_step_add_mesh_d(pccd_step *s, const double *v_t0, const double *v_t1, size_t nv,
+                                  const unsigned int *faces, size_t nf, const unsigned int *edges,
+                                  size_t ne, const unsigned int *points, size_t np, size_t *index);
+
+/* Replaces the positions of mesh `mesh` (the next step of a simulation: same topology,
+ * nv its vertex count). Errors as pccd_step_add_mesh_d, and "mesh", "nv" out of range. */
+PCCD_API int pccd_step_set_positions_d(pccd_step *s, size_t mesh, const double *v_t0,
+                                       const double *v_t1, size_t nv);
+
+/* Whether the mesh pair (i, j) is checked: check = 1 (default) or 0; i == j is mesh i's
+ * self-collision. PCCD_EINVAL: i or j not a mesh ("j: 4 out of range (3 meshes)"),
+ * check not 0 or 1. */
+PCCD_API int pccd_step_set_pair_check(pccd_step *s, size_t i, size_t j, int check);
+
+/* What pccd_step_solve answers. */
+typedef enum pccd_step_mode {
+  PCCD_STEP_FIRST = 0,  /* the exact first contact time, the pairs touching first and the
+                           step size (pccd_step_report_stepsize) */
+  PCCD_STEP_DECIDE = 1, /* only whether anything touches: stops at the first contacts
+                           found (reported without times) */
+  PCCD_STEP_ALL = 2     /* FIRST, and every touching pair with its own first time */
+} pccd_step_mode;
+
+typedef struct pccd_step_options {
+  size_t struct_size; /* set by pccd_step_options_init */
+  unsigned threads;   /* worker threads, 1 to 1024 (default 1); answers do not depend on it */
+  int mode;           /* a pccd_step_mode (default PCCD_STEP_FIRST) */
+} pccd_step_options;
+PCCD_API int pccd_step_options_init(pccd_step_options *opt);
+
+/* Solves the step into rep (cfg, opt: NULL for the defaults; cfg->want_time is ignored:
+ * the mode says what is computed). PCCD_EINVAL on bad options; PCCD_ELIMIT when a work
+ * limit or the input limit of cfg is reached. On error rep holds no answer. */
+PCCD_API int pccd_step_solve(const pccd_step *s, const pccd_config *cfg,
+                             const pccd_step_options *opt, pccd_step_report *rep);
+
+PCCD_API int pccd_step_report_new(pccd_step_report **out);
+PCCD_API void pccd_step_report_free(pccd_step_report *rep);
+PCCD_API int pccd_step_report_collides(const pccd_step_report *rep, int *collides);
+/* The first contact time t* (modes FIRST, ALL) as text; which: 0 = lo, 1 = hi, 2 = exact.
+ * PCCD_ESTATE without contact, in mode DECIDE, or (2) when t* is not known exactly. */
+PCCD_API int pccd_step_report_time(const pccd_step_report *rep, int which, char *buf, size_t cap,
+                                   size_t *needed);
+/* *exact = 1 when t* is known exactly; lo, hi: t*'s enclosure rounded outward to doubles.
+ * Any pointer may be NULL. PCCD_ESTATE as pccd_step_report_time. */
+PCCD_API int pccd_step_report_time_info(const pccd_step_report *rep, int *exact, double *lo,
+                                        double *hi);
+/* The largest double <= t* (modes FIRST, ALL), 1.0 when nothing touches: the step may
+ * be scaled by it and every position strictly before it is contact-free (at it, the
+ * first contact when t* is a double). PCCD_ESTATE in mode DECIDE. */
+PCCD_API int pccd_step_report_stepsize(const pccd_step_report *rep, double *stepsize);
+PCCD_API int pccd_step_report_contact_count(const pccd_step_report *rep, size_t *count);
+/* Contacts first .. first + n - 1 into caller arrays (any may be NULL), sorted by (kind,
+ * mesh and index of a, mesh and index of b):
+ *   kind[k]          a pccd_kind: VERTEX_FACE (a vertex, b face), EDGE_EDGE (two edges),
+ *                    VERTEX_EDGE (a point's vertex, b edge), VERTEX_VERTEX (two vertices);
+ *   index[4k..4k+3]  mesh of a, index of a in its mesh, mesh of b, index of b (edges
+ *                    numbered as pccd_step_edge gives them);
+ *   lo[k], hi[k]     the pair's first contact time rounded outward (NaN in mode DECIDE);
+ *   exact[k]         1 when that time is exact.
+ * PCCD_EINVAL when first + n exceeds the count. */
+PCCD_API int pccd_step_report_contacts(const pccd_step_report *rep, size_t first, size_t n,
+                                       int *kind, size_t *index, double *lo, double *hi,
+                                       unsigned char *exact);
+/* Edges first .. first + n - 1 of mesh `mesh` into v[2k], v[2k + 1] (given or derived
+ * edges as (a, b) with a < b, sorted, each once). PCCD_EINVAL: beyond the edge count. */
+PCCD_API int pccd_step_edges(const pccd_step *s, size_t mesh, size_t first, size_t n, size_t *v);
+/* Sizes of mesh `mesh`: vertices, faces, edges, isolated points (pointers may be NULL). */
+PCCD_API int pccd_step_mesh_counts(const pccd_step *s, size_t mesh, size_t *nv, size_t *nf,
+                                   size_t *ne, size_t *np);
+
+typedef struct pccd_step_stats {
+  unsigned long long queries;    /* broad-phase queries run (vertices, edges, points) */
+  unsigned long long candidates; /* primitive pairs whose boxes met: each solved exactly */
+  unsigned long long refined;    /* re-solves with a finer time tolerance */
+  unsigned long long by_stage[5]; /* solved pairs by the pccd_stage that decided */
+} pccd_step_stats;
+PCCD_API int pccd_step_report_stats(const pccd_step_report *rep, pccd_step_stats *stats);
+
 #ifdef __cplusplus
 }
 #endif

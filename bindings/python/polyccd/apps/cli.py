@@ -281,12 +281,15 @@ def cmd_queries(args):
 
 def cmd_demo(args):
     from ._demo_bodies import run_demo_scenes  # needs trimesh, gemmi, matplotlib
-    print(f"polyccd {__version__} demo: real scenes and a robot arm, checked exactly\n")
+    print(f"polyccd {__version__} demo: real scenes, a robot arm and a simulator step, checked exactly\n")
     results = run_demo_scenes(args.out, threads=args.threads)
     status = OK if all(r[0].collides for r in results.values()) else FAILED
     from ._demo_robot import run_robot_demo  # skips itself without yourdfpy / robot data
     print()
     status = max(status, OK if run_robot_demo(args.out)[2] else FAILED)
+    from ._demo_step import run_step_demo
+    print()
+    status = max(status, OK if run_step_demo(args.out, threads=args.threads)[0].collides else FAILED)
     print(f"\nexact answers for degenerate moving primitives\n")
     status = max(status, OK if run_cases(print) else FAILED)
     folder = query_dir()
