@@ -183,24 +183,42 @@ pred::Contact_result Pair_ctx::solve(const Prim_pair &p, const pred::Solve_optio
 }
 
 bool Pair_ctx::triangles_meet_at_zero(uint32_t a, uint32_t b) const {
-  // Positions at t = 0 times D(0) > 0: the constant coefficients of the trajectories.
-  auto corners = [&](auto tag, int s, uint32_t t) {
-    using NT = decltype(tag);
+  // Positions at t = 0 times D(0) > 0: N_s(0) + M_s(0) p, the constant coefficients of
+  // the trajectories (traj_q / traj_i), taken without making the polynomials.
+  const Common &c = init();
+  auto at0 = [](const auto &poly, auto zero) { return poly.c.empty() ? zero : poly.c[0]; };
+  auto corners = [&](auto zero, int s, uint32_t t) {
+    using NT = decltype(zero);
     std::array<pred::Vec3<NT>, 3> x;
     const auto tri = triangle(s, t);
     for (int v = 0; v < 3; ++v) {
-      Point_traj<NT> tr;
-      if constexpr (std::is_same_v<NT, Rational>) tr = traj_q(s, tri[v]);
-      else tr = traj_i(s, tri[v]);
-      for (int i = 0; i < 3; ++i) x[v][i] = tr[i].c.empty() ? arith::from_int<NT>(0) : tr[i].c[0];
+      const motion::Point3_q &p = side(s).point(tri[v]);
+      for (int i = 0; i < 3; ++i) {
+        if constexpr (std::is_same_v<NT, Rational>) {
+          NT y = at0(c.N[s][i], zero);
+          for (int j = 0; j < 3; ++j)
+            if (sgn(p[j]) != 0) y += at0(c.M[s][i][j], zero) * p[j];
+          x[v][i] = y;
+        } else {  // p_j within pt_err of its double (Body_data), rounded outward
+          const Body_data &d = *side(s).data;
+          NT y = at0(c.Ni[s][i], zero);
+          for (int j = 0; j < 3; ++j) {
+            if (sgn(p[j]) == 0) continue;
+            const double m = d.pts[tri[v]][j];
+            const NT pj = d.pt_err == 0 ? NT(m) : NT(arith::round_down(m - d.pt_err), arith::round_up(m + d.pt_err));
+            y += at0(c.Mi[s][i][j], zero) * pj;
+          }
+          x[v][i] = y;
+        }
+      }
     }
     return x;
   };
   const arith::Nearest_scope nearest;
   try {
-    return pred::triangles_meet(corners(Interval(), 0, a), corners(Interval(), 1, b));
+    return pred::triangles_meet(corners(Interval(0.0), 0, a), corners(Interval(0.0), 1, b));
   } catch (const arith::Uncertain &) {
-    return pred::triangles_meet(corners(Rational(), 0, a), corners(Rational(), 1, b));
+    return pred::triangles_meet(corners(Rational(0), 0, a), corners(Rational(0), 1, b));
   }
 }
 

@@ -330,6 +330,19 @@ Cnf<kDimTriangle> Piece_query::triangle_vs_triangles_boxes(uint32_t tri) const {
   return q;
 }
 
+void Piece_query::add_triangle_vs_triangle_planes(uint32_t tri, Cnf<kDimTriangle> &q) const {
+  const auto &t = q_.mesh->triangles()[tri];
+  for (int sign : {+1, -1}) {
+    for (uint32_t v : t) {
+      Lin<kDimTriangle> f;  // n . H_v - (n . a0) w, as in add_vertex_vs_triangles
+      for (int k = 0; k < 3; ++k) f.c[k] = H(v)[k];
+      f.c[3] = sb_neg(w_);
+      add_halfspaces(q, f, sign);
+    }
+    q.end_clause();
+  }
+}
+
 Cnf<kDimTriangle> Piece_query::vertex_vs_triangles_boxes(uint32_t v) const {
   Cnf<kDimTriangle> q;
   box_conditions(q, {v}, 4, 7);

@@ -109,6 +109,10 @@ class Piece_query {
 
   // query triangle, stored triangles: their boxes meet (for the static test at t = 0)
   Cnf<kDimTriangle> triangle_vs_triangles_boxes(uint32_t tri) const;
+  // A piece of one instant (a = b): the query triangle's corners are not all strictly on
+  // one side of the stored triangle's plane, "some n . H_i - (n . a0) w >= 0" and "some
+  // <= 0" (linear in the lifted n, n . a0; necessary for two closed triangles to meet).
+  void add_triangle_vs_triangle_planes(uint32_t tri, Cnf<kDimTriangle> &q) const;
 
   // ball and triangle: boxes only (the distance to a plane is not linear in it)
   Cnf<kDimBall> triangle_vs_balls_boxes(uint32_t tri) const;

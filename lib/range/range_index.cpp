@@ -25,7 +25,7 @@ Stored_trees::Stored_trees(const Body_data &d) {
   if (d.mesh) {
     vertices = std::make_unique<Range_tree<kDimVertex>>(lift_vertices(d, d.surface_vertices), 0x7u);
     triangles = std::make_unique<Range_tree<kDimTriangle>>(lift_triangles(d), 0x3f0u);
-    edges = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d), 0xfc0u);
+    edges = std::make_unique<Range_tree<kDimEdge>>(lift_edges(d), 0xfc7u);
     triangle_sides = lift_triangle_sides(d);
     edge_ends = lift_edge_ends(d);
   } else {
@@ -209,8 +209,9 @@ std::vector<Prim_pair> Range_index::static_candidates(Thread_pool &pool) const {
   const size_t n = ctx_.side(1 - s_).mesh->triangles().size();
   return collect(n, pool, [&](size_t i, auto &part, auto &ids) {
     const uint32_t t = static_cast<uint32_t>(i);
-    const Cnf<kDimTriangle> q = pq.triangle_vs_triangles_boxes(t);
+    Cnf<kDimTriangle> q = pq.triangle_vs_triangles_boxes(t);
     if (!trees_.triangles->may_hit(q)) return;
+    pq.add_triangle_vs_triangle_planes(t, q);
     ids.clear();
     trees_.triangles->search(q, ids);
     for (uint32_t f : ids) part.push_back(pair(TT, TT, f, t));

@@ -58,7 +58,8 @@ class Range_index {
   int pieces() const { return pieces_; }
   // The candidates of piece [a, b], sorted and unique.
   std::vector<Prim_pair> candidates(double a, double b, Thread_pool &pool) const;
-  // Two meshes: the triangle pairs (TT) whose boxes meet at t = 0 (for the static test).
+  // Two meshes: the triangle pairs (TT) whose boxes meet at t = 0 and whose planes do
+  // not leave one triangle strictly on one side (for the static test).
   std::vector<Prim_pair> static_candidates(Thread_pool &pool) const;
 
  private:

@@ -1,134 +1,147 @@
-// The range structure: lifted points of stored primitives in a CGAL Kd_tree, searched
-// with conjunctions of clauses of closed halfspaces (range/halfspaces.h).
+// The range structure: lifted points of stored primitives in a kd-tree whose every node
+// keeps the interval hull of ALL the lifted coordinates below it, searched with
+// conjunctions of clauses of closed halfspaces (range/halfspaces.h).
 //
 // Each stored primitive i has an exact lifted point enclosed by the interval box
-// lifted[i] (computed in interval arithmetic from the exact body coordinates). The tree
-// holds the box midpoints; a tree cell, which bounds the midpoints below it, is widened
-// by the largest box radius per coordinate (rounded up) before it is tested, so the
-// widened cell contains every exact lifted point below it. A leaf point is tested with
-// its own interval box. The search is a CGAL fuzzy query whose cell tests are
-// cnf_possible / cnf_certain: it reports a superset of the stored primitives whose
-// exact lifted point satisfies the query, never fewer (closed halfspaces, outward
-// rounding). CGAL builds the tree in O(n log n); build() is called before any search so
-// that searches from several threads only read it.
+// lifted[i] (computed in interval arithmetic from the exact body coordinates). A node's
+// hull is the union of the boxes below it, so it contains every exact lifted point below
+// it; the search enters a node only if cnf_possible(hull), reports it whole if
+// cnf_certain(hull), and tests a leaf's points with their own boxes. It reports a
+// superset of the stored primitives whose exact lifted point satisfies the query, never
+// fewer (closed halfspaces, outward rounding).
+//
+// Splits: median of the box midpoints along the split coordinate (bit k of `split`)
+// whose spread below the node is the largest relative to its spread over the whole tree
+// (scale-free: box corners, normals and moments have different units). Only the box
+// coordinates are split on (the queries' cheap bounds are on them), but the hulls are
+// tight in every coordinate: where the plane offset n . a0 or an edge's moment follows
+// the position (parallel slivers, needles, fans: tests/bench/bench_adversarial.py), the
+// contact clauses prune whole subtrees. The CGAL Kd_tree used before kept only the split
+// coordinates' cells, testing the others with the hull of the whole tree, so those
+// clauses pruned nothing above the leaves and a query with no candidate still visited
+// every stored primitive whose box met its own (quadratic on those families).
+// Build O(n log n); searches only read the tree (several threads at once).
 #pragma once
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
-
-#define CGAL_DISABLE_ROUNDING_MATH_CHECK  // the tree uses only double comparisons
-#include <CGAL/Kd_tree.h>
-#include <CGAL/Search_traits.h>
 
 #include "range/halfspaces.h"
 
 namespace pccd::range {
 
 template <int D>
-struct Lifted_point {
-  std::array<double, D> x;
-  uint32_t id;
-};
-
-template <int D>
-struct Lifted_coords {
-  using result_type = const double *;
-  const double *operator()(const Lifted_point<D> &p) const { return p.x.data(); }
-  const double *operator()(const Lifted_point<D> &p, int) const { return p.x.data() + D; }
-};
-
-template <int D>
 class Range_tree {
  public:
-  using Traits = CGAL::Search_traits<double, Lifted_point<D>, const double *, Lifted_coords<D>,
-                                     CGAL::Dimension_tag<D>>;
-  using Tree = CGAL::Kd_tree<Traits>;
-  using Rect = CGAL::Kd_tree_rectangle<double, CGAL::Dimension_tag<D>>;
-
   // lifted[i]: the interval box of stored primitive i's lifted point. split: the
-  // coordinates the tree may split on (bit k for coordinate k). The others are set to 0
-  // in the tree's points (no spread, so CGAL's sliding midpoint never cuts them) and a
-  // cell is tested with the hull of all lifted points there: coordinates like n . a0 or
-  // |c|^2 - r^2 spread far more than the box coordinates and would take the cuts, while
-  // the queries' bounds are on the box coordinates (measured: tests/bench/bench_online.py).
+  // coordinates the tree may split on (bit k for coordinate k).
   Range_tree(std::vector<std::array<Interval, D>> lifted, uint32_t split)
       : lifted_(std::move(lifted)), split_(split) {
-    std::vector<Lifted_point<D>> pts(lifted_.size());
-    radius_.fill(0.0);
-    if (!lifted_.empty()) all_ = lifted_[0];
-    for (size_t i = 0; i < lifted_.size(); ++i) {
-      pts[i].id = static_cast<uint32_t>(i);
-      for (int k = 0; k < D; ++k) {
-        const Interval &v = lifted_[i][k];
-        const double m = 0.5 * v.lo + 0.5 * v.hi;  // inside [lo, hi] in any rounding mode
-        pts[i].x[k] = (split_ >> k) & 1 ? m : 0.0;
-        radius_[k] = std::max(radius_[k], arith::round_up(std::max(m - v.lo, v.hi - m)));
-        all_[k] = Interval(std::min(all_[k].lo, v.lo), std::max(all_[k].hi, v.hi));
+    const uint32_t n = static_cast<uint32_t>(lifted_.size());
+    order_.resize(n);
+    mid_.resize(n);
+    for (uint32_t i = 0; i < n; ++i) {
+      order_[i] = i;
+      for (int k = 0; k < D; ++k) {  // NaN (an infinite box): 0, so the splits stay ordered
+        const double m = 0.5 * lifted_[i][k].lo + 0.5 * lifted_[i][k].hi;
+        mid_[i][k] = m == m ? m : 0.0;
       }
     }
-    tree_.insert(pts.begin(), pts.end());
-    if (!pts.empty()) tree_.build();
+    if (n == 0) return;
+    nodes_.reserve(2 * (n / kLeaf + 1));
+    build(0, n, nullptr);
+    mid_.clear();
+    mid_.shrink_to_fit();
   }
 
   size_t size() const { return lifted_.size(); }
   // The interval box of stored primitive id's lifted point.
   const std::array<Interval, D> &lifted(uint32_t id) const { return lifted_[id]; }
 
-  // Whether some stored point may satisfy q (q tested on the box of all lifted points).
-  bool may_hit(const Cnf<D> &q) const { return !lifted_.empty() && cnf_possible(q, all_.data()); }
+  // Whether some stored point may satisfy q (q tested on the hull of all lifted points).
+  bool may_hit(const Cnf<D> &q) const { return !nodes_.empty() && cnf_possible(q, nodes_[0].hull.data()); }
 
   // Appends to out the ids of the stored primitives that may satisfy q.
   void search(const Cnf<D> &q, std::vector<uint32_t> &out) const {
-    if (lifted_.empty()) return;
-    Query query{this, &q};
-    Out_it it{&out};
-    tree_.search(it, query);
+    if (nodes_.empty()) return;
+    uint32_t stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node &nd = nodes_[stack[--top]];
+      if (!cnf_possible(q, nd.hull.data())) continue;
+      if (nd.left == 0) {  // leaf: each point with its own box
+        for (uint32_t i = nd.begin; i < nd.end; ++i)
+          if (cnf_possible(q, lifted_[order_[i]].data())) out.push_back(order_[i]);
+        continue;
+      }
+      if (cnf_certain(q, nd.hull.data())) {
+        out.insert(out.end(), order_.begin() + nd.begin, order_.begin() + nd.end);
+        continue;
+      }
+      stack[top++] = nd.left + 1;
+      stack[top++] = nd.left;
+    }
   }
 
  private:
+  static constexpr uint32_t kLeaf = 8;
+  struct Node {
+    std::array<Interval, D> hull;
+    uint32_t begin, end;
+    uint32_t left;  // index of the left child (the right one follows it); 0: a leaf
+  };
   std::vector<std::array<Interval, D>> lifted_;
   uint32_t split_;
-  std::array<double, D> radius_;
-  std::array<Interval, D> all_;  // hull of every lifted box
-  Tree tree_;
+  std::vector<uint32_t> order_;              // primitive ids, each node's a range of it
+  std::vector<std::array<double, D>> mid_;   // box midpoints (building only)
+  std::vector<Node> nodes_;                  // nodes_[0]: the root
+  std::array<double, D> root_spread_{};
 
-  struct Query {
-    using Point_d = Lifted_point<D>;
-    using FT = double;
-    using Dimension = CGAL::Dimension_tag<D>;
-    const Range_tree *t;
-    const Cnf<D> *q;
-
-    bool contains(const Point_d &p) const { return cnf_possible(*q, t->lifted_[p.id].data()); }
-    void cell(const Rect &r, Interval *x) const {
-      for (int k = 0; k < D; ++k)
-        x[k] = (t->split_ >> k) & 1 ? Interval(arith::round_down(r.min_coord(k) - t->radius_[k]),
-                                               arith::round_up(r.max_coord(k) + t->radius_[k]))
-                                    : t->all_[k];
+  // Builds the node of order_[begin, end) at nodes_[at] (appended when at is null).
+  void build(uint32_t begin, uint32_t end, uint32_t *at) {
+    const uint32_t me = at ? *at : static_cast<uint32_t>(nodes_.size());
+    if (!at) nodes_.push_back(Node());
+    Node nd;
+    nd.begin = begin;
+    nd.end = end;
+    nd.left = 0;
+    nd.hull = lifted_[order_[begin]];
+    std::array<double, D> lo, hi;
+    for (int k = 0; k < D; ++k) lo[k] = hi[k] = mid_[order_[begin]][k];
+    for (uint32_t i = begin; i < end; ++i) {
+      const auto &b = lifted_[order_[i]];
+      for (int k = 0; k < D; ++k) {
+        nd.hull[k] = Interval(std::min(nd.hull[k].lo, b[k].lo), std::max(nd.hull[k].hi, b[k].hi));
+        lo[k] = std::min(lo[k], mid_[order_[i]][k]);
+        hi[k] = std::max(hi[k], mid_[order_[i]][k]);
+      }
     }
-    bool inner_range_intersects(const Rect &r) const {
-      Interval x[D];
-      cell(r, x);
-      return cnf_possible(*q, x);
+    if (me == 0)
+      for (int k = 0; k < D; ++k) root_spread_[k] = hi[k] - lo[k];
+    int best = -1;
+    double best_rel = 0;
+    for (int k = 0; k < D; ++k) {
+      if (!((split_ >> k) & 1) || !(root_spread_[k] > 0)) continue;
+      const double rel = (hi[k] - lo[k]) / root_spread_[k];
+      if (rel > best_rel) best_rel = rel, best = k;
     }
-    bool outer_range_contains(const Rect &r) const {
-      Interval x[D];
-      cell(r, x);
-      return cnf_certain(*q, x);
+    if (end - begin <= kLeaf || best < 0) {  // small, or every split coordinate constant
+      nodes_[me] = nd;
+      return;
     }
-  };
-
-  // Output iterator collecting ids.
-  struct Out_it {
-    std::vector<uint32_t> *out;
-    Out_it &operator*() { return *this; }
-    Out_it &operator++() { return *this; }
-    Out_it operator++(int) { return *this; }
-    Out_it &operator=(const Lifted_point<D> &p) {
-      out->push_back(p.id);
-      return *this;
-    }
-  };
+    const uint32_t half = begin + (end - begin) / 2;
+    std::nth_element(order_.begin() + begin, order_.begin() + half, order_.begin() + end,
+                     [&](uint32_t a, uint32_t b) { return mid_[a][best] < mid_[b][best]; });
+    nd.left = static_cast<uint32_t>(nodes_.size());
+    nodes_.push_back(Node());
+    nodes_.push_back(Node());
+    nodes_[me] = nd;
+    uint32_t l = nd.left, r = nd.left + 1;
+    build(begin, half, &l);
+    build(half, end, &r);
+  }
 };
 
 }  // namespace pccd::range

@@ -10,20 +10,38 @@ namespace pccd::scene {
 // The values of pccd_broad_phase (polyccd.h; checked in lib/api/constants.cpp).
 enum class Broad_phase { boxes = 0, brute = 1, range = 2, automatic = 3, bvh = 4 };
 
-// The default (automatic), chosen by measurement (docs/design.md, "Broad phases";
-// tests/bench/bench_bvh.py, tests/bench/bench_online.py). online: the pair comes from an
-// on-line index (the stored side's trees exist already and are shared by every query):
-// range; otherwise a scene's body pair: bvh (the hierarchies are built with the bodies).
-// min_distance: the solve has a minimum separation delta > 0 (pred::Solve_options):
-// bvh, online too. Boxes and bvh grow one side's bounds by delta (enclose/enclose.h,
-// reach_of); the range phase's linearized contact conditions have no delta (its
-// halfspaces would need the distance conditions of pred/delta_systems.h), so the api
-// refuses range with delta > 0 (api/config.cpp, the one caller), and an index query takes the stored body's hierarchy
-// (kept with the body like the trees, thread-safe) rather than brute force.
-inline Broad_phase resolve(Broad_phase p, bool online, bool min_distance) {
+// The default (automatic) is chosen per body pair (choose, below). With a minimum
+// separation delta > 0 (pred::Solve_options) it is bvh, online too: boxes and bvh grow
+// one side's bounds by delta (enclose/enclose.h, reach_of); the range phase's linearized
+// contact conditions have no delta (its halfspaces would need the distance conditions
+// of pred/delta_systems.h), so the api refuses range with delta > 0 (api/config.cpp),
+// and an index query takes the stored body's hierarchy (kept with the body like the
+// trees, thread-safe).
+
+// What can be resolved before the bodies are known (api/config.cpp, the one caller):
+// with a minimum separation automatic is bvh; otherwise it stays automatic, for choose()
+// per body pair (online or not: an index's stored body is one side of every pair).
+inline Broad_phase resolve(Broad_phase p, bool /*online*/, bool min_distance) {
   if (p != Broad_phase::automatic) return p;
-  return online && !min_distance ? Broad_phase::range : Broad_phase::bvh;
+  return min_distance ? Broad_phase::bvh : Broad_phase::automatic;
 }
+
+// The automatic phase of one body pair, chosen by evidence (the rule and the
+// measurements it rests on: docs/benchmarks.md, "Where boxes cannot help"): p itself
+// unless it is automatic; bvh with a minimum separation (range has no delta); else
+// range when either body's self box degree is at least kRangeDegree, bvh below.
+// Speed only: every phase gives the same answers.
+constexpr double kRangeDegree = 32;
+Broad_phase choose(Broad_phase p, const narrow::Pair_ctx &ctx, bool min_distance);
+
+// The self box degree of a body: the mean number of its elements (triangles or balls,
+// itself included) whose box meets the box of one of them, over at most 64 elements at
+// a fixed stride, each against all n (O(64 n) double comparisons, taken once per body
+// and kept with it). Parallel slivers, plates, fans, needles, large overlapping balls:
+// every box meets every other (n); a terrain, a molecule, a scanned mesh: a few
+// neighbours. The boxes are rounded outward from the body's doubles, but they decide
+// only the choice of a broad phase, never a contact.
+double self_degree(const narrow::Body_data &d);
 
 // The source of a resolved phase. stored: the range phase's stored side (-1: the
 // larger). reach: enclose::reach_of of the minimum separation (0: none); range is

@@ -118,8 +118,10 @@ Scene_report solve_planned(const std::function<const Moving_body &(size_t)> &bod
     w->i = plan.i;
     w->j = plan.j;
     w->ctx = std::make_unique<Pair_ctx>(body(w->i), body(w->j));
-    so.apart_at_zero = plan.lower > 0;
-    w->out = search_pair(*w->ctx, so, pool);
+    Search_options pair_so = so;  // the automatic phase is chosen per pair, by evidence
+    pair_so.phase = choose(opt.broad_phase, *w->ctx, opt.solve.min_distance());
+    pair_so.apart_at_zero = plan.lower > 0;
+    w->out = search_pair(*w->ctx, pair_so, pool);
     rep.stats.add(w->out.stats);
     bool hit = !w->out.solved.empty();
     bool at_zero = false;

@@ -34,7 +34,7 @@ std::vector<Moving_body> prepare_bodies(const std::vector<Scene_body> &bodies, c
 struct Scene_options {
   pred::Solve_options solve;
   bool all_contacts = false;
-  Broad_phase broad_phase = Broad_phase::bvh;  // resolved (resolve(), broad_phase.h)
+  Broad_phase broad_phase = Broad_phase::bvh;  // resolve(); automatic: choose() per pair (broad_phase.h)
   unsigned threads = 1;
   double reach = 0;  // enclose::reach_of(solve.delta): 0 without a minimum separation
 };

@@ -51,3 +51,13 @@ bench-min-distance: $(BUILD)/bench_min_distance
 	$(BUILD)/bench_min_distance $(BENCH_MD_ARGS)
 
 -include $(BENCH_LINEAR_OBJS:.o=.d) $(BENCH_MD_OBJS:.o=.d) $(TI_OBJS:.o=.d)
+
+# bench_adversarial: the broad phases where boxes cannot help, and auto's choice
+# (tests/bench/bench_adversarial.py); `make bench` runs it and prints its exponents
+# table, `make bench-adversarial` alone. Arguments: BENCH_ADV_ARGS, e.g.
+# make bench-adversarial BENCH_ADV_ARGS="--sizes 1k,2k --families slivers".
+BENCH_ADV_ARGS ?=
+.PHONY: bench-adversarial
+bench-adversarial: all
+	$(VPY) tests/bench/bench_adversarial.py $(BENCH_ADV_ARGS)
+bench: bench-adversarial
