@@ -8,11 +8,14 @@ import typing
 import pytest
 
 import polyccd
-from polyccd import _batch, _body, _index, _limits, _motion, _solve, _step, _types
+import polyccd.robot
+from polyccd import _batch, _body, _chain, _index, _limits, _motion, _scene, _solve, _step, _types
+from polyccd import robot as _robot
 
 PUBLIC = [polyccd.solve, polyccd.solve_linear, polyccd.collides_linear, polyccd.solve_linear_many,
           polyccd.Motion, polyccd.Mesh, polyccd.Spheres, polyccd.Index, polyccd.Limits,
-          polyccd.Cancel, polyccd.check_step, polyccd.collision_free_stepsize]
+          polyccd.Cancel, polyccd.check_step, polyccd.collision_free_stepsize,
+          polyccd.check, polyccd.Body, polyccd.Chain, polyccd.robot.Robot, polyccd.robot.load_urdf]
 
 
 def callables():
@@ -36,7 +39,8 @@ def test_public_callables_are_annotated(name, fn):
     assert sig.return_annotation is not inspect.Signature.empty, f"{name}: no return type"
 
 
-@pytest.mark.parametrize("module", [_batch, _body, _index, _limits, _motion, _solve, _step])
+@pytest.mark.parametrize("module", [_batch, _body, _chain, _index, _limits, _motion, _scene, _solve,
+                                    _step, _robot])
 def test_annotations_resolve(module):
     """Every annotation evaluates in its module (names imported for type checking only
     included), as a type checker would read it."""
@@ -44,6 +48,7 @@ def test_annotations_resolve(module):
     ns.update(vars(_types))
     ns.update({n: getattr(polyccd, n) for n in ("Limits", "Result", "SceneResult", "Motion",
                                                 "Mesh", "Spheres", "Body", "LinearBatch", "Cancel")})
+    ns.update({n: getattr(_robot, n) for n in ("Robot", "RobotResult", "PathResult")})
     for name, fn in callables():
         if fn.__module__ == module.__name__:
             typing.get_type_hints(fn, globalns=ns)

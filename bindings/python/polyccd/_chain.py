@@ -5,9 +5,16 @@ values into exact rigid motions (include/polyccd.h, "Kinematic chains"). A Chain
 grows (add_link); the motions it gives are ordinary Motions (they pickle as the chain's
 links and the segment's joint values, rebuilt by the C library).
 """
+from __future__ import annotations
 
 import numpy as np
 
+from typing import TYPE_CHECKING, List, Optional, Sequence
+
+from ._types import Number
+
+if TYPE_CHECKING:
+    from ._motion import Motion
 from . import _handles as handles
 from ._errors import InputError, check
 from ._motion import RECIPE_BUILDERS, Motion, _number
@@ -35,11 +42,12 @@ class Chain:
 
     __slots__ = ("_handle", "_links")
 
-    def __init__(self):
+    def __init__(self) -> None:
         self._handle = handles.new("chain")
         self._links = []
 
-    def add_link(self, parent=-1, joint="fixed", axis=None, xyz=(0, 0, 0), rpy=(0, 0, 0)):
+    def add_link(self, parent: int = -1, joint: str = "fixed", axis: Optional[Sequence[float]] = None,
+                 xyz: Sequence[float] = (0, 0, 0), rpy: Sequence[float] = (0, 0, 0)) -> int:
         """Appends a link hung from `parent` (an earlier link's index, or -1: the world)
         by a joint of type `joint` with origin (xyz, rpy) and axis; returns its index."""
         if not isinstance(joint, str) or joint not in JOINTS:
@@ -57,7 +65,7 @@ class Chain:
                             tuple(map(float, p)), tuple(map(float, r))))
         return index[0]
 
-    def set_value_place(self, k, place):
+    def set_value_place(self, k: int, place: str) -> None:
         """Errors about link k's joint value name it "q0" / "q1" followed by place
         instead of "[k]" (pccd_chain_set_value_place): e.g. a robot says "[2] (elbow)"
         for its joint 2, and a bad value reads "q1[2] (elbow): ..."."""
@@ -76,7 +84,7 @@ class Chain:
         n = len(self._links)
         return _doubles(q0, "q0", n), _doubles(q1, "q1", n)
 
-    def motions(self, q0, q1):
+    def motions(self, q0: Sequence[float], q1: Sequence[float]) -> List[Motion]:
         """The world Motion of every link over the segment q0 -> q1 (q[k]: link k's joint
         value, ignored for fixed joints)."""
         a0, a1 = self._segment(q0, q1)
@@ -88,7 +96,7 @@ class Chain:
         return [Motion._wrap(ffi.gc(out[k], lib.pccd_motion_free), ("chain", (links, t0, t1, k)))
                 for k in range(n)]
 
-    def joint_values(self, q0, q1, t):
+    def joint_values(self, q0: Sequence[float], q1: Sequence[float], t: Number) -> np.ndarray:
         """The joint values (float64 array, by link) at time t in [0, 1] of the segment:
         outputs, computed from the exact motion (fixed joints: 0)."""
         a0, a1 = self._segment(q0, q1)

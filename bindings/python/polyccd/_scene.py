@@ -8,7 +8,7 @@ applications (polyccd.apps.load_scene, to_png, to_trimesh).
 import struct
 import threading
 from dataclasses import dataclass, field
-from typing import Optional, Sequence, Tuple
+from typing import Iterable, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -22,6 +22,7 @@ from ._numbers import fraction_from_text, show
 from ._pccd import ffi, lib
 from ._results import ContactTime
 from ._solve import _config, _items
+from ._types import Number
 
 FEATURES = ("vertex", "edge", "triangle", "sphere")
 BROAD_PHASES = {"auto": lib.PCCD_BROAD_AUTO, "boxes": lib.PCCD_BROAD_BOXES,
@@ -34,7 +35,8 @@ class Body:
 
     __slots__ = ("shape", "motion", "name")
 
-    def __init__(self, shape, motion=None, name=None):
+    def __init__(self, shape: Union[Mesh, Spheres], motion: Optional[Motion] = None,
+                 name: Optional[str] = None) -> None:
         if not isinstance(shape, (Mesh, Spheres)):
             raise InputError(f"shape: expected a polyccd.Mesh or polyccd.Spheres, got {show(shape)}")
         if motion is not None and not isinstance(motion, Motion):
@@ -238,16 +240,41 @@ def _pair_index(x, names, place):
     return x
 
 
-def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-                broad_phase="auto", want_exact=True, limits=None, min_distance=None,
-                skip_pairs=(), first_contact=True):
-    """Every body pair in contact and the scene's first contact (docs/python.md, "Scenes").
-    limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
-    min_distance: delta >= 0: contacts are times when bodies are within delta.
+def check_scene(bodies: Iterable[Body], *, time_tolerance: Number = "1e-12",
+                all_contacts: bool = False, threads: int = 1, broad_phase: str = "auto",
+                want_exact: bool = True, limits: Optional[_limits.Limits] = None,
+                min_distance: Optional[Number] = None,
+                skip_pairs: Iterable[Tuple[Union[int, str], Union[int, str]]] = (),
+                first_contact: bool = True) -> SceneResult:
+    """Every body pair in contact during t in [0, 1] and the scene's first contact,
+    decided exactly (polyccd.check; docs/python.md, "Scenes").
+
+    bodies: two or more polyccd.Body (a Mesh or Spheres on a Motion, None: stationary).
+    Meshes touch when their surfaces share a point, balls when two balls of different
+    bodies do; touching, grazing and contacts at t = 0 or 1 count.
+
+    time_tolerance: the widest enclosure of an irrational first contact time (a rational
+    one is reported exactly when want_exact). all_contacts: every touching feature pair
+    with its own first time, instead of the pairs touching first. threads: workers
+    (answers never depend on them). broad_phase: "auto" (chosen from the bodies: see
+    docs/design.md), "bvh", "boxes", "range" or "brute"; the answers are the same.
+    limits: a polyccd.Limits (time, work steps, cancellation, input size) or None.
+    min_distance: delta >= 0: a contact is a time when bodies come within delta.
     skip_pairs: body pairs (i, j) (indices or names) not to check.
     first_contact=False: decide mode (pccd_config.want_time = 0): the solve stops at the
     first pair found in contact, reported alone with a witness (some touching features,
-    an enclosure of one of its contact times, not necessarily the first)."""
+    an enclosure of one of its contact times, not necessarily the first).
+
+    Returns a SceneResult: collides, first_contact (a ContactTime: lo <= t* <= hi, exact
+    when rational), pairs (PairResult per body pair in contact, with its contacts and
+    time), first (the pairs that may touch first), feature_indices(body) (numpy arrays),
+    contact_geometry(pair, contact) (contact point and normal). Raises InputError (or
+    LimitError) with the library's message, which names the bad argument.
+
+    Example: a unit box sliding from x = -3 to 3 into a box at the origin first
+    touches it at t = 1/3 exactly:
+    ``polyccd.check([polyccd.Body(box, polyccd.Motion.linear((-3, 0, 0), (3, 0, 0))),
+    polyccd.Body(box)]).first_contact.exact == Fraction(1, 3)``."""
     bodies = _bodies_list(bodies)  # fewer than 2: pccd_scene_solve says so
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
                                limits, min_distance, first_contact)

@@ -31,10 +31,13 @@ Policies (stated once, checked here or by the C library):
   - each geometry with a nonzero origin is one more chain link under its URDF link, on
     a fixed joint (named "<link>#<i>"), so the origin rotation is exact as well.
 """
+from __future__ import annotations
+
 import os
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
-from typing import Optional
+from typing import (TYPE_CHECKING, Any, Dict, FrozenSet, Iterable, List, Optional, Sequence, Set,
+                    Tuple, Union)
 
 import numpy as np
 
@@ -42,6 +45,12 @@ from ._body import Mesh, Spheres
 from ._chain import Chain
 from ._errors import InputError
 from ._extras import need
+from ._types import Number
+
+if TYPE_CHECKING:
+    from ._limits import Limits
+    from ._motion import Motion
+    from ._scene import Body
 
 SUPPORTED = ("fixed", "revolute", "continuous", "prismatic")
 
@@ -91,7 +100,8 @@ class Robot:
     joint_types: {joint: type}; mimic_joints: {joint: (leader, multiplier, offset)};
     limits: {actuated joint: (lower, upper) or None}."""
 
-    def __init__(self, name, links, joints, chain, shapes, joint_link, mimic, limits, tree):
+    def __init__(self, name: str, links: List[str], joints: List[str], chain: Chain, shapes: list,
+                 joint_link: Dict[str, int], mimic: dict, limits: dict, tree: dict) -> None:
         self.name, self.links, self.joints = name, links, joints
         self.tree = tree                # URDF link -> (parent link, joint type); root: None
         self.chain, self.shapes = chain, shapes
@@ -100,7 +110,7 @@ class Robot:
         self.limits = limits            # joint name -> (lower, upper) or None
         self.link_index = {n: i for i, n in enumerate(links)}  # URDF link -> chain index
 
-    def chain_values(self, q):
+    def chain_values(self, q: Sequence[float]) -> np.ndarray:
         """The chain's joint values (by chain link) of the actuated joint values q."""
         q = np.asarray(q, dtype=np.float64)
         if q.shape != (len(self.joints),):
@@ -113,23 +123,24 @@ class Robot:
             out[k] = mult * q[self.joints.index(leader)] + off
         return out
 
-    def motions(self, q0, q1):
+    def motions(self, q0: Sequence[float], q1: Sequence[float]) -> List[Motion]:
         """The exact world Motion of every chain link over the segment q0 -> q1. A bad
         joint value is named by the C library in q's terms ("q1[2] (elbow): ...": load_urdf
         gives the chain each value's place, Chain.set_value_place)."""
         return self.chain.motions(self.chain_values(q0), self.chain_values(q1))
 
-    def link_motions(self, q0, q1):
+    def link_motions(self, q0: Sequence[float], q1: Sequence[float]) -> Dict[str, Motion]:
         """{URDF link name: Motion} over the segment q0 -> q1."""
         m = self.motions(q0, q1)
         return {n: m[i] for i, n in enumerate(self.links)}
 
-    def joint_values(self, q0, q1, t):
+    def joint_values(self, q0: Sequence[float], q1: Sequence[float], t: Number) -> Dict[str, float]:
         """{actuated joint name: value at time t} of the segment (floats; outputs)."""
         v = self.chain.joint_values(self.chain_values(q0), self.chain_values(q1), t)
         return {name: float(v[self._joint_link[name]]) for name in self.joints}
 
-    def check_joint_limits(self, q0, q1, joint_limits="error"):
+    def check_joint_limits(self, q0: Sequence[float], q1: Sequence[float],
+                           joint_limits: str = "error") -> None:
         """The joint-limit policy of check() (see the module comment): InputError
         "q0[j] (joint): value is outside the joint limits [lower, upper]" unless
         joint_limits is "ignore". Non-finite values are left to the chain's check."""
@@ -151,7 +162,7 @@ class Robot:
                                      f"[{lo!r}, {hi!r}] of the URDF (joint_limits=\"ignore\" "
                                      f"allows it)")
 
-    def adjacent_pairs(self):
+    def adjacent_pairs(self) -> Set[FrozenSet[str]]:
         """The default allowed link pairs: URDF links joined by a path of joints with at
         most one moving joint (fixed joints merge links into one rigid group; a group and
         the group it hangs from by one moving joint are adjacent)."""
@@ -172,7 +183,7 @@ class Robot:
                     out.add(frozenset((a, b)))
         return out
 
-    def bodies(self, q0, q1):
+    def bodies(self, q0: Sequence[float], q1: Sequence[float]) -> Tuple[List[Body], List[str]]:
         """The robot's geometry as polyccd Bodies on their exact motions over q0 -> q1,
         named "<link>" (or "<link>[i]" for a link with several geometries), with the URDF
         link of each."""
@@ -185,10 +196,12 @@ class Robot:
                  for link, i, k, shape in self.shapes],
                 [link for link, _, _, _ in self.shapes])
 
-    def check(self, q0, q1, obstacles=(), *, self_collision=True, allowed=None,
-              time_tolerance="1e-12", all_contacts=False, threads=1, broad_phase="auto",
-              min_distance=None, limits=None, first_contact=True, filter=True,
-              joint_limits="error"):
+    def check(self, q0: Sequence[float], q1: Sequence[float], obstacles: Iterable[Body] = (), *,
+              self_collision: bool = True, allowed: Optional[Iterable[Tuple[str, str]]] = None,
+              time_tolerance: Number = "1e-12", all_contacts: bool = False, threads: int = 1,
+              broad_phase: str = "auto", min_distance: Optional[Number] = None,
+              limits: Optional[Limits] = None, first_contact: bool = True, filter: bool = True,
+              joint_limits: str = "error") -> RobotResult:
         """The exact first contact over the segment q0 -> q1 of the robot with the
         obstacles (polyccd.Body, stationary or moving) and, when self_collision, of its
         links with each other except the allowed pairs (an iterable of link-name pairs;
@@ -215,13 +228,14 @@ class Robot:
                               limits=limits, first_contact=first_contact, filter=filter)
         return RobotResult.of(r, self, q0, q1, free)
 
-    def allowed_from_srdf(self, path):
+    def allowed_from_srdf(self, path: Union[str, os.PathLike]) -> Set[FrozenSet[str]]:
         """The link pairs of an SRDF file's disable_collisions elements (frozensets of
         link names); e.g. allowed=robot.adjacent_pairs() | robot.allowed_from_srdf(p)."""
         from ._robot_check import read_srdf
         return read_srdf(path, self)
 
-    def check_path(self, waypoints, obstacles=(), **options):
+    def check_path(self, waypoints: Sequence[Sequence[float]], obstacles: Iterable[Body] = (),
+                   **options: Any) -> PathResult:
         """Checks the segments waypoints[0] -> waypoints[1] -> ... in order and stops at
         the first that collides: a PathResult (segment index and its RobotResult, or
         segment None when no segment collides). Options as check()."""
@@ -271,7 +285,8 @@ class PathResult:
     segment: Optional[int]   # the first colliding segment (waypoints[s] -> [s + 1]), or None
     result: Optional[RobotResult]
 
-def load_urdf(path, *, geometry="collision", srdf=None):
+def load_urdf(path: Union[str, os.PathLike], *, geometry: str = "collision",
+              srdf: Optional[Union[str, os.PathLike]] = None) -> Robot:
     """A Robot from the URDF file at path; geometry: "collision" (default) or "visual";
     srdf: an SRDF file whose disable_collisions pairs Robot.check allows by default (with
     the adjacent pairs).
