@@ -81,6 +81,42 @@ Vec3_q vec_s(const char *const *values, const char *name, size_t k = kNo_point) 
   return v;
 }
 
+// pccd_motion_validate (cfg NULL: no limits) and pccd_motion_validate_cfg.
+int validate(const char *fn, const pccd_motion *m, const pccd_config *cfg) {
+  return guard(fn, [&] {
+    require(m, "m");
+    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    if (cfg) limits.check(*pccd::api::motion_biggest(m), "m.");
+    const pccd::api::Call_budget budget(limits.work);
+    m->m.validate();
+    return PCCD_OK;
+  });
+}
+
+// pccd_motion_position_s (cfg NULL: no limits at all, as before the limits existed) and
+// pccd_motion_position_cfg_s.
+int position(const char *fn, const pccd_motion *m, const char *const p[3], const char *t,
+             const pccd_config *cfg, char *buf, size_t cap, size_t *needed) {
+  return guard(fn, [&] {
+    require(m, "m");
+    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    const Vec3_q point = vec_s(p, "p");
+    const Rational time = number_s(t, "t");
+    if (cfg) {  // the input limit: the point, the time and the motion
+      pccd::api::Biggest_number big;
+      for (size_t k = 0; k < 3; ++k) big.see(point[k], [&] { return place("p", {k}); });
+      big.see(time, [] { return std::string("t"); });
+      big.see(*pccd::api::motion_biggest(m), "m.");
+      limits.check(big);
+    }
+    const pccd::api::Call_budget budget(limits.work);
+    const Vec3_q x = m->m.position(point, time);
+    std::string text;
+    for (int i = 0; i < 3; ++i) text += (i ? " " : "") + pccd::arith::to_string(x[i]);
+    return pccd::api::write_text(text, buf, cap, needed);
+  });
+}
+
 }  // namespace
 
 extern "C" {
@@ -272,23 +308,20 @@ PCCD_API int pccd_motion_compose(pccd_motion **out, const pccd_motion *outer,
   });
 }
 
-PCCD_API int pccd_motion_validate(const pccd_motion *m) {
-  return guard(__func__, [&] {
-    require(m, "m");
-    m->m.validate();
-    return PCCD_OK;
-  });
+PCCD_API int pccd_motion_validate(const pccd_motion *m) { return validate(__func__, m, nullptr); }
+
+PCCD_API int pccd_motion_validate_cfg(const pccd_motion *m, const pccd_config *cfg) {
+  return validate(__func__, m, cfg);
 }
 
 PCCD_API int pccd_motion_position_s(const pccd_motion *m, const char *const p[3], const char *t,
                                     char *buf, size_t cap, size_t *needed) {
-  return guard(__func__, [&] {
-    require(m, "m");
-    const Vec3_q x = m->m.position(vec_s(p, "p"), number_s(t, "t"));
-    std::string text;
-    for (int i = 0; i < 3; ++i) text += (i ? " " : "") + pccd::arith::to_string(x[i]);
-    return pccd::api::write_text(text, buf, cap, needed);
-  });
+  return position(__func__, m, p, t, nullptr, buf, cap, needed);
+}
+
+PCCD_API int pccd_motion_position_cfg_s(const pccd_motion *m, const char *const p[3], const char *t,
+                                        const pccd_config *cfg, char *buf, size_t cap, size_t *needed) {
+  return position(__func__, m, p, t, cfg, buf, cap, needed);
 }
 
 }  // extern "C"

@@ -103,6 +103,17 @@ def apply(cfg, limits):
     cfg.max_number_bits = limits.max_number_bits or 0
 
 
+def config(limits):
+    """A pccd_config of limits for the calls that had none before (Index, Motion.position,
+    Motion.validate): None is no limit at all, not even the input limit."""
+    cfg = ffi.new("pccd_config *")
+    check(lib.pccd_config_init(cfg))
+    if limits is None:
+        cfg.max_number_bits = 0
+    apply(cfg, limits)
+    return cfg
+
+
 def warn_threads(threads, place="threads"):
     """Warns (RuntimeWarning, once per count) when threads exceeds what the library
     starts on this machine (pccd_threads_usable): the answers are the same, and the
@@ -133,14 +144,14 @@ def _install():
     return True
 
 
-def run(cfg, fn, *args):
-    """fn(*args), a C call that takes cfg, interruptible by Ctrl-C (see the top). On the
+def run(cfg, fn, *args, **kwargs):
+    """fn(*args, **kwargs), a C call that takes cfg, interruptible by Ctrl-C (see the top). On the
     main thread the call gets the shim's flag in cfg.cancel (or, when the caller gave a
     Cancel, the shim sets that one too). The shim is installed on the first call made
     while SIGINT has Python's default handler; a handler the program installs later
     replaces it (Ctrl-C then waits for the call, as without polyccd's help)."""
     if _get_ident() != _main_ident or (not _shim and not _install()):
-        return fn(*args)
+        return fn(*args, **kwargs)
     own, seen = _shim
     hits = lib.polyccd_py_hit_count()
     if hits != seen:  # a Ctrl-C since the last call: its KeyboardInterrupt has been raised
@@ -149,11 +160,11 @@ def run(cfg, fn, *args):
     if cfg.cancel == _NULL:
         cfg.cancel = own
         try:
-            return fn(*args)
+            return fn(*args, **kwargs)
         finally:
             cfg.cancel = _NULL
     lib.polyccd_py_target_set(ffi.cast("pccd_cancel *", cfg.cancel))
     try:
-        return fn(*args)
+        return fn(*args, **kwargs)
     finally:
         lib.polyccd_py_target_set(_NULL)

@@ -11,6 +11,7 @@ texts), so that it pickles: unpickling replays the recipe in the C library (the 
 itself cannot travel, e.g. to a Dask worker).
 """
 from . import _handles as handles
+from . import _limits
 from ._errors import InputError, check
 from ._numbers import fraction_from_text, number_text, show
 from ._pccd import ffi, lib
@@ -184,22 +185,29 @@ class Motion:
             raise InputError(f"outer: expected a Motion, got {show(outer)}")
         return _composed(outer, self)
 
-    def validate(self):
+    def validate(self, *, limits=None):
         """Returns self when r(t) vanishes nowhere on [0, 1]; else InputError with the
-        first vanishing time (exact, or an enclosure when irrational)."""
-        check(lib.pccd_motion_validate(self._handle))
+        first vanishing time (exact, or an enclosure when irrational). limits: a
+        polyccd.Limits (None: no limits, Ctrl-C still ends the call)."""
+        cfg = _limits.config(limits)
+        check(_limits.run(cfg, lib.pccd_motion_validate_cfg, self._handle, cfg))
         return self
 
-    def position(self, p, t):
-        """The exact position of body point p at time t in [0, 1]: 3 Fractions."""
+    def position(self, p, t, *, limits=None):
+        """The exact position of body point p at time t in [0, 1]: 3 Fractions. limits: a
+        polyccd.Limits (None: no limits, Ctrl-C still ends the call)."""
         point, _keep = _texts(_vector(p, "p"))
         time = _number(t, "t")
+        cfg = _limits.config(limits)
         needed = ffi.new("size_t *")
-        buf = ffi.new("char[]", 256)
-        rc = lib.pccd_motion_position_s(self._handle, point, time, buf, 256, needed)
+        cap = 4096 + 4 * len(ffi.string(time))  # most answers fit: the work is done once
+        buf = ffi.new("char[]", cap)
+        rc = _limits.run(cfg, lib.pccd_motion_position_cfg_s, self._handle, point, time, cfg,
+                         buf, cap, needed)
         if rc == lib.PCCD_ERANGE:
             buf = ffi.new("char[]", needed[0])
-            rc = lib.pccd_motion_position_s(self._handle, point, time, buf, needed[0], needed)
+            rc = _limits.run(cfg, lib.pccd_motion_position_cfg_s, self._handle, point, time, cfg,
+                             buf, needed[0], needed)
         check(rc)
         return tuple(fraction_from_text(x) for x in ffi.string(buf).decode().split(" "))
 

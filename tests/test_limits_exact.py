@@ -1,0 +1,147 @@
+"""Limits that hold inside long exact computations (issue 23, item 1).
+
+Each case is one the audit of issue 23 reproduced: before the work steps counted by cost
+(util/work_budget.h, work_cost) these calls ran for minutes before their first check of
+the limits. The timing bounds are the issue's (a limit of 1 s ends the call within 2 s,
+a cancellation or Ctrl-C within 0.5 s), with the margins stated at each; the cases are
+seeded, so the same inputs run every time. tests/cpp/test_work_cost.cpp makes one
+polynomial product long on purpose and checks the limit holding inside it.
+"""
+import random
+import signal
+import subprocess
+import sys
+import threading
+import time
+from fractions import Fraction as F
+
+import pytest
+
+import polyccd as P
+
+BUILD = r"""
+import random
+from fractions import Fraction as F
+import polyccd as P
+
+
+def edge_edge_48(seed=48):
+    # Edge a along x at z = 0, edge b along y falling from z = 1 to z = -1 (they cross
+    # near t = 1/2), every coordinate of degree 48: its coefficients up from t^1 are
+    # fractions of two 30-digit numbers (/ 1000: small perturbations of that motion)
+    rng = random.Random(seed)
+    def r30():
+        return F(rng.randrange(10 ** 29, 10 ** 30) * rng.choice([-1, 1]),
+                 rng.randrange(10 ** 29, 10 ** 30) * 1000)
+    base = [[-1, 0, 0], [1, 0, 0], [0, -1, 1], [0, 1, 1]]
+    points = [[[c] + [r30() for _ in range(48)] for c in p] for p in base]
+    for p in points[2:]:
+        p[2][1] += -2  # z = 1 - 2t
+    return points
+
+
+def rotation_64(seed=64):
+    # a degree-64 rotation whose coefficients are fractions of two 1,200-digit numbers
+    # (2,400 digits, 7,970 bits: inside the default input limit of 16,384 bits)
+    rng = random.Random(seed)
+    big = lambda: rng.randrange(10 ** 1199, 10 ** 1200)
+    return P.Motion(rotation=[[F(big(), big()) for _ in range(65)] for _ in range(4)])
+
+
+def two_balls(motion):
+    return [P.Body(P.Spheres([[0, 0, 0]], [1]), name="still"),
+            P.Body(P.Spheres([[3, 0, 0]], [1]), motion, name="turning")]
+"""
+exec(BUILD)
+
+
+def ends_within(call, seconds, **limits):
+    """Runs call(limits) and returns its seconds; it must raise LimitError."""
+    start = time.perf_counter()
+    with pytest.raises(P.LimitError) as e:
+        call(P.Limits(**limits))
+    took = time.perf_counter() - start
+    assert took < seconds, (took, str(e.value))
+    return e.value
+
+
+def test_degree_48_edge_edge_ends_within_the_limit():
+    points = edge_edge_48()
+    e = ends_within(lambda lim: P.solve("edge-edge", points, limits=lim), 2.0, max_seconds=1)
+    assert "config.max_seconds: the time limit of 1 s was reached" in str(e)
+    # A work limit ends it after the same count every time (the count is the input's).
+    messages = {str(ends_within(lambda lim: P.solve("edge-edge", points, limits=lim), 30,
+                                max_work=2000)).split(" and ")[0] for _ in range(2)}
+    assert messages == {"config.max_work: the limit of 2000 work steps was reached (after 2000 work steps"}
+
+
+def test_long_rotation_scene_index_and_position_end_within_the_limit():
+    motion = rotation_64()
+    bodies = two_balls(motion)
+    ends_within(lambda lim: P.check(bodies, limits=lim), 2.0, max_seconds=1)
+    ends_within(lambda lim: P.check(bodies, threads=2, all_contacts=True, limits=lim), 2.0,
+                max_seconds=1)
+    # Index construction and Motion.position take limits too (they took none: 11.5 s and
+    # more than 300 s on the audit's inputs). A fresh motion: the scene above may have
+    # kept the first one's derivation.
+    ends_within(lambda lim: P.Index(P.Body(bodies[1].shape, rotation_64()), limits=lim),
+                2.0, max_seconds=1)
+    t = F(1, 2 ** 63000 + 1)  # a time of 63,000 bits: beyond the default input limit
+    with pytest.raises(P.LimitError, match=r"^t: a number of 6300\d bits .* exceeds config.max_number_bits"):
+        motion.position([1, 2, 3], t, limits=P.Limits())
+    # One evaluation at such a time ends with a gcd of millions of bits (about a second
+    # on its own, not divisible): the bound allows for it.
+    ends_within(lambda lim: motion.position([1, 2, 3], t, limits=lim), 5.0, max_seconds=1,
+                max_number_bits=None)
+    # Validation: the primitive parts of the components (lcms of 65 denominators of
+    # 4,000 bits) are counted by cost, then coprimality is proved modulo a prime.
+    ends_within(lambda lim: motion.validate(limits=lim), 30, max_work=1)
+    assert motion.validate(limits=P.Limits(max_seconds=60)) is motion
+    assert P.Motion.linear([0, 0, 0], [2, 4, 6]).position([1, 1, 1], F(1, 2), limits=P.Limits(max_work=10)) \
+        == (2, 3, 4)
+
+
+def test_cancel_ends_a_long_exact_step_at_once():
+    bodies = two_balls(rotation_64())
+    cancel = P.Cancel()
+    timer = threading.Timer(0.5, cancel.set)
+    timer.start()
+    start = time.perf_counter()
+    with pytest.raises(P.LimitError, match="config.cancel: the call was cancelled"):
+        P.check(bodies, limits=P.Limits(cancel=cancel))
+    after_set = time.perf_counter() - start - 0.5
+    timer.join()
+    assert after_set < 0.5, after_set
+
+
+CHILD = BUILD + r"""
+import signal, sys, time
+signal.signal(signal.SIGINT, signal.default_int_handler)
+bodies = two_balls(rotation_64())
+print("started", flush=True)
+try:
+    P.check(bodies)
+except KeyboardInterrupt:
+    print("interrupted", flush=True)
+    sys.exit(3)
+print("finished", flush=True)
+"""
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+def test_ctrl_c_ends_a_long_exact_step_at_once():
+    child = subprocess.Popen([sys.executable, "-c", CHILD], stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
+    try:
+        assert child.stdout.readline().strip() == "started"
+        time.sleep(0.5)  # inside the motion's preparation by now
+        sent = time.perf_counter()
+        child.send_signal(signal.SIGINT)
+        line = child.stdout.readline().strip()
+        reacted = time.perf_counter() - sent
+        child.communicate(timeout=30)
+    finally:
+        if child.poll() is None:
+            child.kill()
+    assert line == "interrupted" and child.returncode == 3
+    assert reacted < 0.5, reacted
