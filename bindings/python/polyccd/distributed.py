@@ -29,7 +29,7 @@ import threading
 import uuid
 from contextlib import contextmanager
 
-from ._errors import InputError
+from ._errors import InputError, InternalError
 from ._index import Index
 from ._scene import Body, _bodies_list
 from .apps._progress import bar
@@ -132,6 +132,18 @@ def _completed(futures):
         yield from batch
 
 
+def _kept_going(place, fn, *args):
+    """fn(*args), or the error of this one item (returned, not raised, so that the other
+    items of its chunk and of the batch still get their answers): an InputError (or
+    LimitError) with `place` in front, anything else as an InternalError naming it."""
+    try:
+        return fn(*args)
+    except InputError as e:
+        return type(e)(f"{place}: {e}" if place else str(e))
+    except Exception as e:  # a bug: reported for this item, the batch goes on
+        return InternalError(f"{place + ': ' if place else ''}{type(e).__name__}: {e}")
+
+
 # ------------------------------------------------------------------- on-line index ---
 
 _INDEXES = {}  # per worker process: token -> Index (a few, the latest)
@@ -153,8 +165,15 @@ def _cached_index(token, body):
 
 
 def _index_chunk(chunk, body, token, options):
-    """Index.query_many of the chunk (one C call; equal to Index.query of each)."""
-    return _cached_index(token, body).query_many(chunk, **options)
+    """Index.query_many of the chunk of (k, query) (one C call; equal to Index.query of
+    each). When it fails, each query is checked on its own, so a bad query gives its
+    own error, named by its place in the whole batch (queries[k]), and the others their
+    answers."""
+    ix = _cached_index(token, body)
+    try:
+        return ix.query_many([q for _, q in chunk], **options)
+    except InputError:
+        return [_kept_going(f"queries[{k}]", lambda q=q: ix.query(q, **options)) for k, q in chunk]
 
 
 def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **options):
@@ -163,17 +182,20 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
 
     index: a polyccd.Index or the Body to index (each worker builds its own Index once).
     queries: Body objects, or (shape, motion) / (shape, motion, name) tuples (the
-    "(body, motion) pairs" of a batch). options: the keywords of Index.query."""
+    "(body, motion) pairs" of a batch). options: the keywords of Index.query. A query
+    that fails yields its InputError (returned, not raised) naming it "queries[k]: ..."
+    by its place in `queries`; the other queries get their answers."""
     body = index.body if isinstance(index, Index) else index
     if not isinstance(body, Body):
         raise InputError(f"index: expected a polyccd.Index or polyccd.Body, got {type(index).__name__}")
     queries = _bodies_list([q if isinstance(q, Body) else Body(*q) for q in queries])
     token = uuid.uuid4().hex
-    answers = map_chunks(_index_chunk, queries, body, token, options, client=client,
+    answers = map_chunks(_index_chunk, list(enumerate(queries)), body, token, options, client=client,
                          chunk_size=chunk_size, progress=progress, desc="index queries",
                          unit="query")
     for q, r in zip(queries, answers):
-        object.__setattr__(r, "bodies", (body, q))
+        if not isinstance(r, Exception):
+            object.__setattr__(r, "bodies", (body, q))
         yield r
 
 
@@ -181,20 +203,17 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
 
 def _check_chunk(paths, threads, limits=None):
     from .apps._corpus import read_case, solve_case, solve_scene_case
-    out = []
-    for path in paths:
-        try:
-            what, case = read_case(path)
-            out.append(solve_scene_case(case, limits=limits, threads=threads) if what == "scene"
-                       else solve_case(case, limits))
-        except InputError as e:
-            out.append(e)
-    return out
+    def solve(path):
+        what, case = read_case(path)
+        return (solve_scene_case(case, limits=limits, threads=threads) if what == "scene"
+                else solve_case(case, limits))
+    return [_kept_going("", solve, path) for path in paths]
 
 
 def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None, limits=None):
     """Yields, for each scene or query file, what `polyccd check FILE` computes: the
-    SceneResult or Result, or the InputError of a bad file (returned, not raised).
+    SceneResult or Result, or the InputError of a bad file (returned, not raised; an
+    InternalError for a bug met on one file: the other files still get their answers).
     limits: a polyccd.Limits without a Cancel (each worker applies it to each file)."""
     return map_chunks(_check_chunk, [str(p) for p in paths], threads, limits, client=client,
                       chunk_size=chunk_size, progress=progress, desc="check", unit="file")
@@ -202,25 +221,20 @@ def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None, lim
 
 def _corpus_chunk(paths):
     from .apps._corpus import check_case
-    return [check_case(p) for p in paths]
+    return [_kept_going(p, check_case, p) for p in paths]
 
 
 def corpus_map(paths, *, client=None, chunk_size=None, progress=None):
     """Yields check_case(path) (the reasons a corpus case fails; empty: it passes) for
-    every case file, in order."""
+    every case file, in order; an error met on one case is yielded as "PATH: ..." in
+    its place (returned, not raised)."""
     return map_chunks(_corpus_chunk, [str(p) for p in paths], client=client,
                       chunk_size=chunk_size, progress=progress, desc="corpus", unit="case")
 
 
 def _queries_chunk(paths, kind):
     from .apps._queries import run_file
-    out = []
-    for path in paths:
-        try:
-            out.append(run_file(path, kind))
-        except InputError as e:
-            out.append(InputError(f"{path}: {e}"))
-    return out
+    return [_kept_going(path, run_file, path, kind) for path in paths]
 
 
 def queries_map(paths, kind=None, *, client=None, chunk_size=1, progress=None):

@@ -9,9 +9,11 @@ from typing import Optional
 from .._body import Mesh, Spheres
 from .._errors import InputError
 from .._motion import Motion
+from .._numbers import int_from_text, show
 from .._scene import Body
-from ._json import (SCENE_FORMAT, _expect_at, _list_at, _object_at, _string_at, describe, load,
-                    min_distance_option, number_at, options_and_labels)
+from ._json import (EXPECT_KEYS, SCENE_FORMAT, _expect_at, _list_at, _object_at, _string_at,
+                    describe, known_keys, load, min_distance_option, number_at,
+                    options_and_labels)
 
 
 @dataclass(frozen=True)
@@ -45,6 +47,7 @@ def _with_place(path, fn, *args):
 
 def _body_at(value, path, index):
     obj = _object_at(value, path)
+    known_keys(obj, path, ("name", "mesh", "spheres", "motion"))
     name = _string_at(obj["name"], f"{path}.name") if "name" in obj else f"body{index}"
     shapes = [k for k in ("mesh", "spheres") if k in obj]
     if len(shapes) != 1:
@@ -52,6 +55,7 @@ def _body_at(value, path, index):
                          f"{' and '.join(shapes) if shapes else 'neither'}")
     if shapes[0] == "mesh":
         m = _object_at(obj["mesh"], f"{path}.mesh")
+        known_keys(m, f"{path}.mesh", ("vertices", "triangles"))
         for key in ("vertices", "triangles"):
             if key not in m:
                 raise InputError(f"{path}.mesh.{key}: missing")
@@ -61,14 +65,16 @@ def _body_at(value, path, index):
             row = []
             for a, x in enumerate(_list_at(t, f"{path}.mesh.triangles[{i}]", "[i, j, k]", 3)):
                 text = str(x) if isinstance(x, str) else None
-                if text is None or type(x).__name__ != "JsonNumber" or not text.isdigit():
+                if (text is None or type(x).__name__ != "JsonNumber" or not text.isascii()
+                        or not text.isdigit()):
                     raise InputError(f"{path}.mesh.triangles[{i}][{a}]: expected a vertex index "
                                      f"(an integer >= 0), got {describe(x)}")
-                row.append(int(text))
+                row.append(int_from_text(text))  # any length (int() stops at 4,300 digits)
             tris.append(row)
         shape = _with_place(f"{path}.mesh", Mesh, verts, tris)
     else:
         s = _object_at(obj["spheres"], f"{path}.spheres")
+        known_keys(s, f"{path}.spheres", ("centers", "radii"))
         for key in ("centers", "radii"):
             if key not in s:
                 raise InputError(f"{path}.spheres.{key}: missing")
@@ -79,6 +85,7 @@ def _body_at(value, path, index):
     motion = None
     if "motion" in obj:
         mo = _object_at(obj["motion"], f"{path}.motion")
+        known_keys(mo, f"{path}.motion", ("translation", "rotation"))
         translation = (_traj_lists(mo["translation"], f"{path}.motion.translation", 3,
                                    "[xs, ys, zs]") if "translation" in mo else None)
         rotation = (_traj_lists(mo["rotation"], f"{path}.motion.rotation", 4,
@@ -93,6 +100,7 @@ def scene_from_doc(doc):
     if top.get("format") != SCENE_FORMAT:
         got = "missing" if "format" not in top else describe(top.get("format"))
         raise InputError(f'format: expected "{SCENE_FORMAT}", got {got}')
+    known_keys(top, "(top level)", ("format", "name", "source", "bodies", "options", "expect"))
     if "bodies" not in top:
         raise InputError("bodies: missing (a scene needs at least 2 bodies)")
     items = _list_at(top["bodies"], "bodies", "a list of bodies")
@@ -106,7 +114,7 @@ def scene_from_doc(doc):
     tolerance = options_and_labels(top)
     expect = None
     if "expect" in top:
-        expect = _expect_at(top["expect"], "expect")
+        expect = _expect_at(top["expect"], "expect", EXPECT_KEYS + ("pairs", "features"))
         ex = _object_at(top["expect"], "expect")
         if "pairs" in ex:
             pairs = []
@@ -114,7 +122,10 @@ def scene_from_doc(doc):
                 pair = _list_at(p, f"expect.pairs[{k}]", "[nameA, nameB]", 2)
                 for q, n in enumerate(pair):
                     if _string_at(n, f"expect.pairs[{k}][{q}]") not in names:
-                        raise InputError(f"expect.pairs[{k}][{q}]: no body is named \"{n}\"")
+                        raise InputError(f"expect.pairs[{k}][{q}]: no body is named {show(n)}")
+                if pair[0] == pair[1]:
+                    raise InputError(f"expect.pairs[{k}]: a pair of one body ({show(pair[0])}) "
+                                     "with itself (a pair is two different bodies)")
                 pairs.append(tuple(sorted(pair, key=names.index)))
             order = sorted(set(pairs), key=lambda x: (names.index(x[0]), names.index(x[1])))
             expect = dataclasses.replace(expect, pairs=tuple(order))

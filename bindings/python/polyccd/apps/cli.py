@@ -93,9 +93,10 @@ def cmd_check(args):
             results = _check_serial(files, args.threads, _progress(args), _limits(args))
         stack.callback(results.close)  # the bar ends (and the cluster's tasks) before more output
         for path, result in zip(files, results):
-            if isinstance(result, InputError):
-                _error(f"{path}: {result}")
-                status = BAD_INPUT
+            if isinstance(result, Exception):  # this file's error; the others go on
+                bug = not isinstance(result, InputError)
+                _error(f"{path}: {type(result).__name__ + ': ' if bug else ''}{result}")
+                status = BAD_INPUT if not bug else status or FAILED
                 continue
             out = _check_json(result)
             echo(json.dumps(out if len(files) == 1 else {"file": path, **out}))
@@ -135,6 +136,7 @@ def index_json(stored_name, query_name, r, all_contacts=False):
 def cmd_index(args):
     """Indexes one body of a scene file (--stored, default the first) and checks every
     other body against the index; one JSON line per query body, in file order."""
+    errors = []
     try:
         bodies, options, _ = load_scene(args.file)
         names = [b.name for b in bodies]
@@ -169,7 +171,11 @@ def cmd_index(args):
             else:
                 results = _index_serial(ix, queries, options, _progress(args))
             stack.callback(results.close)  # the bar ends before more output
-            for k, r in zip(others, results):
+            for j, (k, r) in enumerate(zip(others, results)):
+                if isinstance(r, Exception):  # this query's error; the others go on
+                    message = str(r).removeprefix(f"queries[{j}]: ")
+                    errors.append(f"{args.file}: bodies[{k}]: {message}")
+                    continue
                 lines.append(json.dumps(index_json(names[stored], names[k], r,
                                                    args.all_contacts)))
     except InputError as e:
@@ -177,13 +183,19 @@ def cmd_index(args):
         return BAD_INPUT
     for line in lines:
         print(line)
-    return OK
+    for message in errors:
+        _error(message)
+    return BAD_INPUT if errors else OK
 
 
 def _index_serial(ix, queries, options, progress):
+    """ix.query of each query, or its InputError named queries[j] (as index_map)."""
     with bar(len(queries), "index queries", "query", progress) as b:
-        for q in queries:
-            yield ix.query(q, **options)
+        for j, q in enumerate(queries):
+            try:
+                yield ix.query(q, **options)
+            except InputError as e:
+                yield type(e)(f"queries[{j}]: {e}")
             b.update()
 
 
@@ -204,6 +216,8 @@ def cmd_corpus(args):
             outcomes = _corpus_serial(files, _progress(args))
         stack.callback(outcomes.close)  # the bar ends before the summary line
         for path, reasons in zip(files, outcomes):
+            if isinstance(reasons, Exception):  # met on this case only (corpus_map)
+                reasons = [str(reasons)]
             if reasons:
                 failed += 1
                 echo(f"FAIL {path}: " + "; ".join(reasons))
@@ -239,10 +253,11 @@ def run_queries(paths, kind=None, as_json=False, out=echo, root=None, args=None)
         else:
             outcomes = _queries_serial(files, kind, progress)
         stack.callback(outcomes.close)  # the bar ends before the total line
-        for path, report in zip(files, outcomes):
-            status = _report_queries(path, report, root, as_json, out, reports)
-            if status is not None:
-                return status
+        bad = None
+        for path, report in zip(files, outcomes):  # a bad file does not stop the others
+            bad = _report_queries(path, report, root, as_json, out, reports) or bad
+    if bad is not None:
+        return bad
     if not as_json:
         n = sum(r.queries for r in reports)
         seconds = sum(r.seconds_per_query * r.queries for r in reports)
@@ -266,9 +281,9 @@ def _queries_serial(files, kind, progress):
 
 def _report_queries(path, report, root, as_json, out, reports):
     """Prints one file's report (or its error: then returns the exit status)."""
-    if isinstance(report, InputError):
-        _error(str(report))
-        return BAD_INPUT
+    if isinstance(report, Exception):
+        _error(str(report) if isinstance(report, InputError) else f"{type(report).__name__}: {report}")
+        return BAD_INPUT if isinstance(report, InputError) else FAILED
     if root is not None:
         report.file = str(path.relative_to(root))
     reports.append(report)
