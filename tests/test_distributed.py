@@ -237,3 +237,28 @@ def test_a_bad_item_gets_its_own_error_and_the_others_their_answers(client, tmp_
     assert remote.stdout == serial.stdout and len(remote.stdout.splitlines()) == 2
     assert remote.stderr == serial.stderr == \
         f'polyccd: {bad}: bodies[0].motion.translaton: unknown key (did you mean "translation"?)\n'
+
+
+def test_the_embedded_cluster_listens_on_loopback_without_a_dashboard(client):
+    """Issue 23, item 5: dask's endpoints take no authentication; the embedded cluster's
+    scheduler, workers and HTTP server are on 127.0.0.1, and it serves no dashboard
+    unless asked (then on 127.0.0.1 too)."""
+    import urllib.error
+    import urllib.request
+
+    def served(c):
+        info = c.scheduler_info()
+        assert c.scheduler.address.startswith("tcp://127.0.0.1:")
+        assert all(w.startswith("tcp://127.0.0.1:") for w in info["workers"])
+        assert all(w["nanny"].startswith("tcp://127.0.0.1:") for w in info["workers"].values())
+        socks = c.run_on_scheduler(lambda dask_scheduler: [
+            s.getsockname()[0] for s in dask_scheduler.http_server._sockets.values()])
+        assert socks and set(socks) == {"127.0.0.1"}
+        try:
+            url = f"http://127.0.0.1:{info['services']['dashboard']}/status"
+            return urllib.request.urlopen(url, timeout=30).status
+        except urllib.error.HTTPError as e:
+            return e.code
+    assert served(client) == 404
+    with pd.cluster(workers=1, dashboard=True) as c:
+        assert served(c) == 200

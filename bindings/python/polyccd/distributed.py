@@ -40,17 +40,22 @@ except ImportError as _e:  # pragma: no cover - depends on the install
     raise ImportError("polyccd.distributed needs dask.distributed: pip install "
                       "'polyccd[dask]' (or dask[distributed])") from _e
 
+LOOPBACK = "127.0.0.1"  # the embedded cluster's only interface (cluster())
+
 __all__ = ["cluster", "map_chunks", "index_map", "check_map", "corpus_map", "queries_map"]
 
 
 @contextmanager
-def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1):
+def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1, dashboard=False):
     """A dask.distributed Client for the maps, closed on exit when made here.
 
     client: used as it is (not closed). scheduler: the address of a running scheduler
     ("tcp://host:8786"); workers then means: wait until that many workers are
     connected. Neither: an embedded LocalCluster of `workers` worker processes (default
-    os.cpu_count()), each with a nanny and threads_per_worker threads."""
+    os.cpu_count()), each with a nanny and threads_per_worker threads. Its scheduler,
+    workers and nannies listen on 127.0.0.1 only (dask's dashboard and endpoints take
+    no authentication: issue 23 found the dashboard on 0.0.0.0), and it has no
+    dashboard unless dashboard=True (then on 127.0.0.1, a free port)."""
     if client is not None:
         yield client
         return
@@ -65,7 +70,12 @@ def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1):
         return
     n = workers or os.cpu_count() or 1
     with _distributed.LocalCluster(n_workers=n, threads_per_worker=threads_per_worker,
-                                   processes=True, dashboard_address=":0",
+                                   processes=True, host=LOOPBACK,
+                                   # the scheduler's HTTP server (health, and the
+                                   # dashboard when asked) on loopback, a free port
+                                   dashboard_address=f"{LOOPBACK}:0",
+                                   scheduler_kwargs={"dashboard": bool(dashboard)},
+                                   worker_dashboard_address=None,
                                    silence_logs=40) as local, \
             _distributed.Client(local) as c:
         yield c

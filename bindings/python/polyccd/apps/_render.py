@@ -15,6 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .._errors import InputError
+from ._files import replace_file
 
 BODY_COLORS = ("#4f7fbf", "#e0a040", "#5fae6e", "#a070c0", "#8c8c8c", "#c0c060")
 HIGHLIGHT = "#e8001c"
@@ -494,7 +495,5 @@ def render_scene(bodies, t, contacts, path, title=None, *, geometry=None, labels
                                    f"red: {len(features)}"] + lines), fontsize=11)
     fig.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.88 - 0.03 * (len(lines) - 1),
                         wspace=0.02)
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=dpi)
-    return path
+    fmt = Path(path).suffix[1:].lower() or "png"  # a temporary file, renamed (_files.py)
+    return replace_file(path, lambda f: fig.savefig(f, dpi=dpi, format=fmt))
