@@ -443,6 +443,11 @@ PCCD_API int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *co
  * above PCCD_MAX_TRAJ_DEGREE ("outer, inner: ..."). On error *out is NULL. */
 PCCD_API int pccd_motion_compose(pccd_motion **out, const pccd_motion *outer,
                                  const pccd_motion *inner);
+/* pccd_motion_compose within the limits of cfg (max_seconds, max_work, cancel:
+ * PCCD_ELIMIT, *out NULL; max_number_bits: the factors' numbers, "outer.rotation[0][2]:
+ * ..."). cfg NULL: no limits, as pccd_motion_compose. */
+PCCD_API int pccd_motion_compose_cfg(pccd_motion **out, const pccd_motion *outer,
+                                     const pccd_motion *inner, const pccd_config *cfg);
 
 /* Decides exactly whether r(t) vanishes for some t in the CLOSED [0, 1], i.e. whether
  * w, x, y, z have a common root there (r with no common root is valid even when each

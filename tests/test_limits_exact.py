@@ -7,6 +7,7 @@ a cancellation or Ctrl-C within 0.5 s), with the margins stated at each; the cas
 seeded, so the same inputs run every time. tests/cpp/test_work_cost.cpp makes one
 polynomial product long on purpose and checks the limit holding inside it.
 """
+import json
 import random
 import signal
 import subprocess
@@ -20,6 +21,7 @@ import pytest
 import polyccd as P
 
 BUILD = r"""
+import json
 import random
 from fractions import Fraction as F
 import polyccd as P
@@ -93,6 +95,8 @@ def test_long_rotation_scene_index_and_position_end_within_the_limit():
     # on its own, not divisible): the bound allows for it.
     ends_within(lambda lim: motion.position([1, 2, 3], t, limits=lim), 5.0, max_seconds=1,
                 max_number_bits=None)
+    # Composition (pccd_motion_compose_cfg): products of two such rotations.
+    ends_within(lambda lim: motion.then(rotation_64(seed=65), limits=lim), 2.0, max_seconds=1)
     # Validation: the primitive parts of the components (lcms of 65 denominators of
     # 4,000 bits) are counted by cost, then coprimality is proved modulo a prime.
     ends_within(lambda lim: motion.validate(limits=lim), 30, max_work=1)
@@ -145,3 +149,21 @@ def test_ctrl_c_ends_a_long_exact_step_at_once():
             child.kill()
     assert line == "interrupted" and child.returncode == 3
     assert reacted < 0.5, reacted
+
+
+def test_command_line_time_limit_covers_reading_the_file(tmp_path):
+    """--max-seconds covers reading the file and building its bodies (a 38 MB scene read
+    for 63 s under --max-seconds 5): here 300,000 vertices (11 MB) and 0.2 s."""
+    n = 300000
+    rng = random.Random(3)
+    verts = [[rng.randrange(-10 ** 6, 10 ** 6) / 10 ** 6 for _ in range(3)] for _ in range(n)]
+    doc = {"format": "polyccd/1", "bodies": [
+        {"name": "m", "mesh": {"vertices": verts, "triangles": [[k, k + 1, k + 2] for k in range(n - 2)]}},
+        {"name": "b", "spheres": {"centers": [[5, 5, 5]], "radii": [0.1]}}]}
+    path = tmp_path / "big.json"
+    path.write_text(json.dumps(doc))
+    done = subprocess.run([sys.executable, "-m", "polyccd", "check", "--max-seconds", "0.2", str(path)],
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 2 and "Traceback" not in done.stderr
+    assert done.stderr.startswith(f"polyccd: {path}: config.max_seconds: the time limit of 0.2 s "
+                                  "was reached while reading the file (after ")

@@ -81,6 +81,34 @@ Vec3_q vec_s(const char *const *values, const char *name, size_t k = kNo_point) 
   return v;
 }
 
+// pccd_motion_compose (cfg NULL: no limits) and pccd_motion_compose_cfg.
+int compose(const char *fn, pccd_motion **out, const pccd_motion *outer, const pccd_motion *inner,
+            const pccd_config *cfg) {
+  return guard(fn, [&] {
+    require(out, "out");
+    *out = nullptr;
+    require(outer, "outer");
+    require(inner, "inner");
+    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    if (cfg) {
+      limits.check(*pccd::api::motion_biggest(outer), "outer.");
+      limits.check(*pccd::api::motion_biggest(inner), "inner.");
+    }
+    const pccd::api::Call_budget budget(limits.work);
+    pccd::motion::Rigid_motion m = pccd::motion::compose_motions(outer->m, inner->m);
+    // The same limit as the setters, on every polynomial of the result.
+    int deg = 0;
+    for (const Poly_q &c : m.r) deg = std::max(deg, c.degree());
+    for (int i = 0; i < 3; ++i) deg = std::max(deg, std::max(m.o[i].degree(), m.b[i].degree()));
+    if (deg > PCCD_MAX_TRAJ_DEGREE)
+      throw Limit_error("outer, inner: the composite motion has a polynomial of degree " +
+                        std::to_string(deg) + ", above the limit of " +
+                        std::to_string(PCCD_MAX_TRAJ_DEGREE));
+    *out = new pccd_motion{std::move(m)};
+    return PCCD_OK;
+  });
+}
+
 // pccd_motion_validate (cfg NULL: no limits) and pccd_motion_validate_cfg.
 int validate(const char *fn, const pccd_motion *m, const pccd_config *cfg) {
   return guard(fn, [&] {
@@ -289,23 +317,12 @@ PCCD_API int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *co
 
 PCCD_API int pccd_motion_compose(pccd_motion **out, const pccd_motion *outer,
                                  const pccd_motion *inner) {
-  return guard(__func__, [&] {
-    require(out, "out");
-    *out = nullptr;
-    require(outer, "outer");
-    require(inner, "inner");
-    pccd::motion::Rigid_motion m = pccd::motion::compose_motions(outer->m, inner->m);
-    // The same limit as the setters, on every polynomial of the result.
-    int deg = 0;
-    for (const Poly_q &c : m.r) deg = std::max(deg, c.degree());
-    for (int i = 0; i < 3; ++i) deg = std::max(deg, std::max(m.o[i].degree(), m.b[i].degree()));
-    if (deg > PCCD_MAX_TRAJ_DEGREE)
-      throw Limit_error("outer, inner: the composite motion has a polynomial of degree " +
-                        std::to_string(deg) + ", above the limit of " +
-                        std::to_string(PCCD_MAX_TRAJ_DEGREE));
-    *out = new pccd_motion{std::move(m)};
-    return PCCD_OK;
-  });
+  return compose(__func__, out, outer, inner, nullptr);
+}
+
+PCCD_API int pccd_motion_compose_cfg(pccd_motion **out, const pccd_motion *outer,
+                                     const pccd_motion *inner, const pccd_config *cfg) {
+  return compose(__func__, out, outer, inner, cfg);
 }
 
 PCCD_API int pccd_motion_validate(const pccd_motion *m) { return validate(__func__, m, nullptr); }

@@ -179,11 +179,12 @@ class Motion:
         check(lib.pccd_motion_compose_pose_s(handle, _SIDES[side], q, o))
         return Motion._wrap(handle, ("compose", (self._recipe, vq, vo, side)))
 
-    def then(self, outer):
-        """A new motion: outer o self, the point p at outer(self(p, t), t)."""
+    def then(self, outer, *, limits=None):
+        """A new motion: outer o self, the point p at outer(self(p, t), t). limits: a
+        polyccd.Limits (None: no limits, Ctrl-C still ends the call)."""
         if not isinstance(outer, Motion):
             raise InputError(f"outer: expected a Motion, got {show(outer)}")
-        return _composed(outer, self)
+        return _composed(outer, self, limits)
 
     def validate(self, *, limits=None):
         """Returns self when r(t) vanishes nowhere on [0, 1]; else InputError with the
@@ -212,11 +213,13 @@ class Motion:
         return tuple(fraction_from_text(x) for x in ffi.string(buf).decode().split(" "))
 
 
-def _composed(outer, inner):
-    """outer o inner (both Motions), through pccd_motion_compose."""
+def _composed(outer, inner, limits=None):
+    """outer o inner (both Motions), through pccd_motion_compose_cfg."""
     if not isinstance(inner, Motion):
         raise InputError(f"inner: expected a Motion, got {show(inner)}")
-    handle = handles.new("motion", outer._handle, inner._handle, via="compose")
+    cfg = _limits.config(limits)
+    handle = _limits.run(cfg, handles.new, "motion", outer._handle, inner._handle, cfg,
+                         via="compose_cfg")
     return Motion._wrap(handle, ("compose_motions", (outer._recipe, inner._recipe)))
 
 

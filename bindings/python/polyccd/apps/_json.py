@@ -14,6 +14,7 @@ from .._errors import InputError
 from .._numbers import exact_fraction, show
 from .._results import KINDS
 from .._solve import npoints
+from ._reading import tick
 
 QUERY_FORMAT = "polyccd-query/1"
 SCENE_FORMAT = "polyccd/1"
@@ -49,6 +50,7 @@ def _object(pairs):
 
 def _number_literal(text):
     # JSON allows 1E5 and 1e+5; hand C the plain form 1e5 (same value).
+    tick()  # the command line's --max-seconds covers reading (_reading.py)
     return JsonNumber(text.replace("E", "e").replace("e+", "e"))
 
 

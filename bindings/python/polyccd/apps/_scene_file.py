@@ -6,6 +6,8 @@ import dataclasses
 from dataclasses import dataclass
 from typing import Optional
 
+import numpy as np
+
 from .._body import Mesh, Spheres
 from .._errors import InputError
 from .._motion import Motion
@@ -14,6 +16,7 @@ from .._scene import Body
 from ._json import (EXPECT_KEYS, SCENE_FORMAT, _expect_at, _list_at, _object_at, _string_at,
                     describe, known_keys, load, min_distance_option, number_at,
                     options_and_labels)
+from ._reading import tick
 
 
 @dataclass(frozen=True)
@@ -32,9 +35,12 @@ def _traj_lists(value, path, count, what):
 
 def _points_at(value, path):
     """The number texts of a list of [x, y, z]."""
-    return [[number_at(c, f"{path}[{i}][{a}]") for a, c in
-             enumerate(_list_at(v, f"{path}[{i}]", "[x, y, z]", 3))]
-            for i, v in enumerate(_list_at(value, path, "a list of [x, y, z]"))]
+    out = []
+    for i, v in enumerate(_list_at(value, path, "a list of [x, y, z]")):
+        tick()
+        out.append([number_at(c, f"{path}[{i}][{a}]")
+                    for a, c in enumerate(_list_at(v, f"{path}[{i}]", "[x, y, z]", 3))])
+    return out
 
 
 def _with_place(path, fn, *args):
@@ -62,6 +68,7 @@ def _body_at(value, path, index):
         verts = _points_at(m["vertices"], f"{path}.mesh.vertices")
         tris = []
         for i, t in enumerate(_list_at(m["triangles"], f"{path}.mesh.triangles", "a list of [i, j, k]")):
+            tick()
             row = []
             for a, x in enumerate(_list_at(t, f"{path}.mesh.triangles[{i}]", "[i, j, k]", 3)):
                 text = str(x) if isinstance(x, str) else None
@@ -71,6 +78,8 @@ def _body_at(value, path, index):
                                      f"(an integer >= 0), got {describe(x)}")
                 row.append(int_from_text(text))  # any length (int() stops at 4,300 digits)
             tris.append(row)
+        if all(x < 2 ** 63 for row in tris for x in row):  # the Mesh's fast path for arrays
+            tris = np.array(tris, dtype=np.int64).reshape(len(tris), 3)
         shape = _with_place(f"{path}.mesh", Mesh, verts, tris)
     else:
         s = _object_at(obj["spheres"], f"{path}.spheres")

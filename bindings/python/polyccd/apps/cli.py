@@ -15,6 +15,7 @@ import json
 import sys
 
 from .. import __version__
+from . import _reading as reading
 from ._corpus import (DEFAULT_TOLERANCE, check_case, files_under, read_case, solve_case,
                       solve_scene_case)
 from ._csv import CSV_KINDS
@@ -66,13 +67,20 @@ def _check_json(result):
 
 
 def _check_serial(files, threads, progress, limits=None):
-    """(SceneResult | Result | InputError) per file, solved here in order."""
+    """(SceneResult | Result | InputError) per file, solved here in order. --max-seconds
+    covers each file's reading and its solve together (_reading.py)."""
+    seconds = limits.max_seconds if limits is not None else None
     with bar(len(files), "check", "file", progress if len(files) > 1 else False) as b:
         for path in files:
             try:
-                what, case = read_case(path)
-                yield (solve_scene_case(case, limits=limits, threads=threads) if what == "scene"
-                       else solve_case(case, limits))
+                mine = limits
+                with reading.deadline(seconds):
+                    what, case = read_case(path)
+                    if seconds:  # what the reading left of the time limit
+                        mine = Limits(max_seconds=reading.left(seconds), max_work=limits.max_work,
+                                      max_number_bits=limits.max_number_bits)
+                yield (solve_scene_case(case, limits=mine, threads=threads) if what == "scene"
+                       else solve_case(case, mine))
             except InputError as e:
                 yield e
             b.update()
