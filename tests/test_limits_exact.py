@@ -9,7 +9,6 @@ polynomial product long on purpose and checks the limit holding inside it.
 """
 import json
 import random
-import signal
 import subprocess
 import sys
 import threading
@@ -21,7 +20,6 @@ import pytest
 import polyccd as P
 
 BUILD = r"""
-import json
 import random
 from fractions import Fraction as F
 import polyccd as P
@@ -118,36 +116,13 @@ def test_cancel_ends_a_long_exact_step_at_once():
     assert after_set < 0.5, after_set
 
 
-CHILD = BUILD + r"""
-import signal, sys, time
-signal.signal(signal.SIGINT, signal.default_int_handler)
-bodies = two_balls(rotation_64())
-print("started", flush=True)
-try:
-    P.check(bodies)
-except KeyboardInterrupt:
-    print("interrupted", flush=True)
-    sys.exit(3)
-print("finished", flush=True)
-"""
-
-
 @pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
 def test_ctrl_c_ends_a_long_exact_step_at_once():
-    child = subprocess.Popen([sys.executable, "-c", CHILD], stdout=subprocess.PIPE,
-                             stderr=subprocess.PIPE, text=True)
-    try:
-        assert child.stdout.readline().strip() == "started"
-        time.sleep(0.5)  # inside the motion's preparation by now
-        sent = time.perf_counter()
-        child.send_signal(signal.SIGINT)
-        line = child.stdout.readline().strip()
-        reacted = time.perf_counter() - sent
-        child.communicate(timeout=30)
-    finally:
-        if child.poll() is None:
-            child.kill()
-    assert line == "interrupted" and child.returncode == 3
+    from test_limits import interrupt_child
+    # 0.5 s: inside the motion's preparation by now
+    status, line, reacted = interrupt_child(BUILD + "bodies = two_balls(rotation_64())",
+                                            "P.check(bodies)", 0.5)
+    assert (status, line) == (3, "interrupted")
     assert reacted < 0.5, reacted
 
 
