@@ -10,6 +10,7 @@ import time
 from contextlib import contextmanager
 
 from .._errors import LimitError
+from .._limits import Limits
 
 _EVERY = 4096
 _state = threading.local()
@@ -47,3 +48,15 @@ def left(seconds):
     if not seconds or limit is None:
         return seconds
     return max(seconds - (time.monotonic() - _state.start), 1e-3)
+
+
+def read_within(read, path, limits):
+    """(read(path), the limits left for the solve): limits.max_seconds (a polyccd.Limits,
+    or None) covers the reading and the solve together."""
+    seconds = limits.max_seconds if limits is not None else None
+    with deadline(seconds):
+        value = read(path)
+        if seconds:
+            limits = Limits(max_seconds=left(seconds), max_work=limits.max_work,
+                            max_number_bits=limits.max_number_bits)
+    return value, limits

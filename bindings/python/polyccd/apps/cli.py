@@ -15,7 +15,6 @@ import json
 import sys
 
 from .. import __version__
-from . import _reading as reading
 from ._corpus import (DEFAULT_TOLERANCE, check_case, files_under, read_case, solve_case,
                       solve_scene_case)
 from ._csv import CSV_KINDS
@@ -26,6 +25,7 @@ from ._queries import mismatch_lines, run_file
 from .._results import result_json, time_json
 from .._scene import BROAD_PHASES
 from ._progress import bar, echo
+from ._reading import read_within
 from ._scene_file import load_scene
 from .._limits import DEFAULT_MAX_NUMBER_BITS, Limits
 
@@ -69,16 +69,10 @@ def _check_json(result):
 def _check_serial(files, threads, progress, limits=None):
     """(SceneResult | Result | InputError) per file, solved here in order. --max-seconds
     covers each file's reading and its solve together (_reading.py)."""
-    seconds = limits.max_seconds if limits is not None else None
     with bar(len(files), "check", "file", progress if len(files) > 1 else False) as b:
         for path in files:
             try:
-                mine = limits
-                with reading.deadline(seconds):
-                    what, case = read_case(path)
-                    if seconds:  # what the reading left of the time limit
-                        mine = Limits(max_seconds=reading.left(seconds), max_work=limits.max_work,
-                                      max_number_bits=limits.max_number_bits)
+                (what, case), mine = read_within(read_case, path, limits)
                 yield (solve_scene_case(case, limits=mine, threads=threads) if what == "scene"
                        else solve_case(case, mine))
             except InputError as e:
@@ -290,8 +284,9 @@ def _queries_serial(files, kind, progress):
 def _report_queries(path, report, root, as_json, out, reports):
     """Prints one file's report (or its error: then returns the exit status)."""
     if isinstance(report, Exception):
-        _error(str(report) if isinstance(report, InputError) else f"{type(report).__name__}: {report}")
-        return BAD_INPUT if isinstance(report, InputError) else FAILED
+        bug = not isinstance(report, InputError)
+        _error(f"{type(report).__name__ + ': ' if bug else ''}{report}")
+        return FAILED if bug else BAD_INPUT
     if root is not None:
         report.file = str(path.relative_to(root))
     reports.append(report)
