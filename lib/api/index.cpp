@@ -24,6 +24,7 @@ int new_index(const char *fn, pccd_index **out, const pccd_body *body, const pcc
     require(out, "out");
     *out = nullptr;
     require(body, "body");
+    pccd::api::checked_config(cfg);
     pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
     if (unlimited) limits.max_number_bits = 0;
     auto ix = std::make_unique<pccd_index>();

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "api/guard.h"
+#include "api/handles.h"
 #include "api/motion_handle.h"
 #include "motion/standard_motions.h"
 
@@ -89,6 +90,7 @@ int compose(const char *fn, pccd_motion **out, const pccd_motion *outer, const p
     *out = nullptr;
     require(outer, "outer");
     require(inner, "inner");
+    pccd::api::checked_config(cfg);  // struct_size, time_tolerance (unused here)
     const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
     if (cfg) {
       limits.check(*pccd::api::motion_biggest(outer), "outer.");
@@ -113,6 +115,7 @@ int compose(const char *fn, pccd_motion **out, const pccd_motion *outer, const p
 int validate(const char *fn, const pccd_motion *m, const pccd_config *cfg) {
   return guard(fn, [&] {
     require(m, "m");
+    pccd::api::checked_config(cfg);  // struct_size, time_tolerance (unused here)
     const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
     if (cfg) limits.check(*pccd::api::motion_biggest(m), "m.");
     const pccd::api::Call_budget budget(limits.work);
@@ -127,6 +130,7 @@ int position(const char *fn, const pccd_motion *m, const char *const p[3], const
              const pccd_config *cfg, char *buf, size_t cap, size_t *needed) {
   return guard(fn, [&] {
     require(m, "m");
+    pccd::api::checked_config(cfg);  // struct_size, time_tolerance (unused here)
     const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
     const Vec3_q point = vec_s(p, "p");
     const Rational time = number_s(t, "t");
