@@ -42,7 +42,7 @@ CPP_TESTS := $(patsubst tests/cpp/%.cpp,$(BUILD)/%,$(sort $(wildcard tests/cpp/t
 # The system packages, one list shared with .ci/run (comments after # dropped).
 APT_PKGS := $(strip $(shell sed 's/\#.*//' .ci/apt-packages.txt))
 
-.PHONY: all deps lib venv install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind tsan
+.PHONY: all deps lib venv wheel docs install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind tsan
 
 # The entry points of a fresh machine (all, test, demo, bench, valgrind, sanitize) run
 # deps first, then make the rest in a sub-make, so nothing compiles while apt-get is still
@@ -92,8 +92,15 @@ PREFIX     ?= /usr/local
 LIBDIR     ?= $(PREFIX)/lib
 INCLUDEDIR ?= $(PREFIX)/include
 DESTDIR    ?=
-INSTALL_SUBST := sed -e 's|@PREFIX@|$(PREFIX)|g' -e 's|@LIBDIR@|$(LIBDIR)|g' \
-  -e 's|@INCLUDEDIR@|$(INCLUDEDIR)|g' -e 's|@VERSION@|$(VERSION)|g' \
+# The installed pkg-config and CMake files name the library and header directories
+# relative to their own directory (${pcfiledir}, CMAKE_CURRENT_LIST_DIR), so an installed
+# tree still works after it is moved or copied elsewhere as a whole.
+rel_to = $(shell realpath -m --relative-to=$(1) $(2))
+INSTALL_SUBST := sed -e 's|@PC_LIBDIR@|$(call rel_to,$(LIBDIR)/pkgconfig,$(LIBDIR))|g' \
+  -e 's|@PC_INCLUDEDIR@|$(call rel_to,$(LIBDIR)/pkgconfig,$(INCLUDEDIR))|g' \
+  -e 's|@CMAKE_LIBDIR@|$(call rel_to,$(LIBDIR)/cmake/polyccd,$(LIBDIR))|g' \
+  -e 's|@CMAKE_INCLUDEDIR@|$(call rel_to,$(LIBDIR)/cmake/polyccd,$(INCLUDEDIR))|g' \
+  -e 's|@VERSION@|$(VERSION)|g' \
   -e 's|@SOVERSION@|$(PCCD_SOVERSION)|g' -e 's|@LIBS@|$(PCCD_LIBS)|g'
 INSTALLED := $(INCLUDEDIR)/polyccd.h $(LIBDIR)/libpolyccd.so.$(VERSION) $(LIBDIR)/$(SONAME) \
   $(LIBDIR)/libpolyccd.so $(LIBDIR)/pkgconfig/polyccd.pc \
@@ -184,6 +191,24 @@ bench: all $(BUILD)/bench_linear $(BUILD)/bench_min_distance
 	$(VPY) tests/bench/bench_online.py
 	$(VPY) tests/bench/bench_distributed.py
 	$(VPY) tests/bench/bench_robot.py
+
+# `make docs`: the reference in build/docs/html (docs/: the Markdown pages, the Python
+# API from the package's docstrings, the C API from include/polyccd.h's comments);
+# warnings are errors, as in tests/test_docs.py.
+docs: all
+	$(VENV)/bin/sphinx-build -W --keep-going -q -b html docs $(BUILD)/docs/html
+	@echo "docs: $(abspath $(BUILD))/docs/html/index.html"
+
+# `make wheel`: the pip wheel of bindings/python (built against this machine's GMP and
+# libstdc++), repaired by auditwheel into a manylinux wheel in build/dist/: GMP is copied
+# into polyccd.libs/ and linked there, so the wheel needs no libgmp on the target machine
+# (glibc and libstdc++ at least as new as this machine's, the tag says which).
+wheel: all
+	rm -rf $(BUILD)/dist
+	$(VENV)/bin/pip wheel -q --no-deps --no-build-isolation -w $(BUILD)/dist/linux ./bindings/python
+	PATH="$(abspath $(VENV))/bin:$$PATH" $(VENV)/bin/auditwheel repair -w $(BUILD)/dist $(BUILD)/dist/linux/polyccd-*.whl
+	PATH="$(abspath $(VENV))/bin:$$PATH" $(VENV)/bin/auditwheel show $(BUILD)/dist/polyccd-*manylinux*.whl
+	@echo "wheel: $$(ls $(abspath $(BUILD))/dist/polyccd-*manylinux*.whl)"
 
 demo: all
 	$(VENV)/bin/polyccd demo

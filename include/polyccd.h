@@ -46,7 +46,7 @@
  *    (tests/c/test_threads.c, also under ThreadSanitizer). A handle being changed (set,
  *    solved into, freed) must not be used by another thread at the same time.
  *
- * Meaning of a contact (see shared/design/formats.md): closed time interval [0, 1],
+ * Meaning of a contact (see docs/formats.md): closed time interval [0, 1],
  * closed triangles, segments and balls; touching (distance exactly 0) is a contact.
  */
 #ifndef POLYCCD_H
@@ -110,6 +110,9 @@ typedef enum pccd_stage {
 /* The default of pccd_config.max_number_bits: no double (at most 1,127 bits as an exact
  * fraction, subnormals included) and no decimal of fewer than ~4,900 digits exceeds it. */
 #define PCCD_DEFAULT_MAX_NUMBER_BITS 16384
+/* The most worker threads a call takes (pccd_scene_options.threads,
+ * pccd_batch_options.threads, pccd_threads_usable): 1 to PCCD_MAX_THREADS. */
+#define PCCD_MAX_THREADS 1024
 
 /* Version of the library as "major.minor.patch"; never NULL. */
 PCCD_API const char *pccd_version(void);
@@ -137,10 +140,11 @@ PCCD_API int pccd_cancel_reset(pccd_cancel *c);
 /* *is_set = 1 when the flag is set. */
 PCCD_API int pccd_cancel_is_set(const pccd_cancel *c, int *is_set);
 
-/* How many worker threads a call asking for `requested` (1 to 1024: pccd_scene_options,
- * pccd_batch_options) starts: min(requested, the hardware's thread count), at least 1.
+/* How many worker threads a call asking for `requested` (1 to PCCD_MAX_THREADS:
+ * pccd_scene_options, pccd_batch_options) starts: min(requested, the hardware's thread
+ * count), at least 1.
  * Threads beyond the hardware's only add switching; no answer depends on the count.
- * PCCD_EINVAL when usable is NULL or requested is outside 1..1024. */
+ * PCCD_EINVAL when usable is NULL or requested is outside 1..PCCD_MAX_THREADS. */
 PCCD_API int pccd_threads_usable(unsigned requested, unsigned *usable);
 
 /* Options of a solve. Initialise with pccd_config_init, then change fields.
@@ -221,7 +225,9 @@ PCCD_API int pccd_query_set_coord_s(pccd_query *q, size_t point, size_t axis,
 PCCD_API int pccd_query_set_linear_d(pccd_query *q, const double *p_t0, const double *p_t1);
 
 /* Sets the radius of ball `which` (0 or 1) of a SPHERE_SPHERE query. Radii must be > 0
- * when the query is solved (PCCD_EINVAL from pccd_query_solve otherwise). */
+ * when the query is solved (PCCD_EINVAL from pccd_query_solve otherwise; an unset radius
+ * is 0: "radii[0]: 0 is not > 0 ..."). PCCD_EINVAL for another kind ("radii: only
+ * sphere-sphere queries have radii"). */
 PCCD_API int pccd_query_set_radius_d(pccd_query *q, size_t which, double r);
 PCCD_API int pccd_query_set_radius_s(pccd_query *q, size_t which, const char *r);
 
@@ -249,8 +255,9 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
 /* Options of pccd_solve_linear_batch_d; initialise with pccd_batch_options_init. */
 typedef struct pccd_batch_options {
   size_t struct_size;  /* sizeof(pccd_batch_options), set by pccd_batch_options_init */
-  unsigned threads;    /* worker threads, 1 to 1024 (default 1); answers do not depend on it;
-                          at most the hardware's thread count are started */
+  unsigned threads;    /* worker threads, 1 to PCCD_MAX_THREADS (default 1); answers do
+                          not depend on it; at most the hardware's thread count are
+                          started */
 } pccd_batch_options;
 PCCD_API int pccd_batch_options_init(pccd_batch_options *opt);
 
@@ -412,6 +419,33 @@ PCCD_API int pccd_motion_set_screw_s(pccd_motion *m, const char *const axis[3],
                                      const char *const center[3], const char *tau0,
                                      const char *tau1, const char *advance);
 
+/* Replaces the whole motion by the motion between two poses, (R(q0), p0) at t = 0 and
+ * (R(q1), p1) at t = 1, exactly: q = (w, x, y, z), any nonzero length. The body origin
+ * moves linearly, o(t) = (1 - t) p0 + t p1, and the quaternion is interpolated linearly,
+ * r(t) = (1 - t) q0 + t q1', with q1' = q1 or -q1 (the same rotation) chosen exactly so
+ * that q0 . q1' >= 0: r never vanishes (the motion is valid) and the body turns the
+ * shorter way round, along the great arc from q0 to q1' (not at a constant angular
+ * speed). A body point p is at R(r(t)) p + o(t). PCCD_EINVAL: a NULL pointer, a
+ * non-finite double or unparsable string (named "p0[2]", "q1[0]"), or a zero quaternion
+ * ("q0: the zero quaternion is no rotation"); PCCD_ELIMIT: a number beyond the text
+ * limits. On error the motion is unchanged. */
+PCCD_API int pccd_motion_set_between_d(pccd_motion *m, const double p0[3], const double q0[4],
+                                       const double p1[3], const double q1[4]);
+PCCD_API int pccd_motion_set_between_s(pccd_motion *m, const char *const p0[3],
+                                       const char *const q0[4], const char *const p1[3],
+                                       const char *const q1[4]);
+
+/* pccd_motion_set_between_d from two 4x4 pose matrices M0 (t = 0) and M1 (t = 1), row
+ * major (M[4 r + c]): the translation is the last column's first three entries, taken
+ * exactly; the rotation is the exact rotation R(q) of the unit quaternion q computed from
+ * the upper-left 3x3 block in doubles (Shepperd's method), which equals the block up to
+ * the rounding of that computation (about 1e-15 for an orthonormal block). PCCD_EINVAL:
+ * a NULL pointer, a non-finite entry ("M0[1][2]"), a last row other than exactly
+ * (0, 0, 0, 1), or a block that is not a rotation (some entry of R^T R - I above 1e-6 in
+ * magnitude, or det R <= 0: the message gives both). On error the motion is unchanged. */
+PCCD_API int pccd_motion_set_between_matrices_d(pccd_motion *m, const double M0[16],
+                                                const double M1[16]);
+
 /* Composes m with the constant pose (R_q, offset), where R_q = R(q) is the rotation of
  * the nonzero rational quaternion q = quat[0] + quat[1] i + quat[2] j + quat[3] k (any
  * length) and offset a rational vector:
@@ -526,6 +560,13 @@ PCCD_API int pccd_chain_add_link(pccd_chain *c, long parent, int joint, const do
 /* The number of links in *n. PCCD_EINVAL when c or n is NULL. */
 PCCD_API int pccd_chain_size(const pccd_chain *c, size_t *n);
 
+/* How error messages name link k's joint value after "q0" / "q1": place replaces the
+ * default "[k]" (a caller that numbers the values otherwise says so: a robot whose
+ * joint 2, "elbow", moves link k gives "[2] (elbow)", and a bad value reads
+ * "q1[2] (elbow): ..."). Only the messages change. PCCD_EINVAL: c or place NULL, k not
+ * a link ("k: 7 out of range (the chain has 4 links)"). */
+PCCD_API int pccd_chain_set_value_place(pccd_chain *c, size_t k, const char *place);
+
 /* The world motion of every link over the segment q0 -> q1 (t = 0: q0, t = 1: q1):
  * motions[k] receives a new pccd_motion for link k (release each with
  * pccd_motion_free). q0[k], q1[k]: the value of link k's joint (radians or length
@@ -639,7 +680,7 @@ typedef enum pccd_broad_phase {
   PCCD_BROAD_RANGE = 2, /* linearized contact conditions, lifted points in CGAL kd-trees
                            searched with halfspace queries (the paper's section 3) */
   PCCD_BROAD_AUTO = 3,  /* the default: the phase the benchmarks measured fastest for
-                           the kind of problem (README, "Broad phases") */
+                           the kind of problem (docs/design.md, "Broad phases") */
   PCCD_BROAD_BVH = 4    /* a bounding-volume hierarchy kept with each body, traversed
                            for both bodies at once over time pieces (swept boxes) */
 } pccd_broad_phase;
@@ -667,8 +708,9 @@ PCCD_API int pccd_scene_set_pair_check(pccd_scene *s, size_t i, size_t j, int ch
 
 typedef struct pccd_scene_options {
   size_t struct_size;     /* set by pccd_scene_options_init */
-  unsigned threads;       /* worker threads, >= 1 (default 1); answers do not depend on it;
-                             at most the hardware's thread count are started */
+  unsigned threads;       /* worker threads, 1 to PCCD_MAX_THREADS (default 1); answers do
+                             not depend on it; at most the hardware's thread count are
+                             started */
   int all_contacts;       /* 0 (default): the feature pairs touching first;
                              1: every touching feature pair with its own first time */
   int broad_phase;        /* a pccd_broad_phase (default PCCD_BROAD_AUTO) */

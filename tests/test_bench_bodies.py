@@ -17,7 +17,7 @@ T_STAR = {"hit": "1/2", "near": None, "touch": "1"}
 
 def test_bench_bodies_quick(tmp_path):
     assert hasattr(polyccd, "check") and hasattr(polyccd, "Body"), \
-        "polyccd.check / polyccd.Body missing (bindings/python/API.md, Scenes)"
+        "polyccd.check / polyccd.Body missing (docs/python.md, Scenes)"
     out = tmp_path / "bodies.json"
     args = [sys.executable, str(BENCH), "--quick", "--repeat", "1", "--json", str(out)]
     try:

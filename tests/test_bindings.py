@@ -158,7 +158,7 @@ def test_bad_kind(kind):
 def test_radii():
     ball = [[[0], [0], [0]], [[3, -4], [0], [0]]]  # distance 3 - 4t reaches 1 at t = 1/2
     assert polyccd.solve("sphere-sphere", ball, ("1/2", 0.5)).first_contact.exact == Fraction(1, 2)
-    place_error(InputError, "radii", "needs radii", kind="sphere-sphere", points=ball)
+    place_error(InputError, "radii[0]", "greater than 0", kind="sphere-sphere", points=ball)  # unset
     place_error(InputError, "radii", "2 radii", kind="sphere-sphere", points=ball, radii=[1])
     place_error(InputError, "radii[1]", "greater than 0", kind="sphere-sphere", points=ball,
                 radii=[1, 0])
@@ -198,7 +198,7 @@ def test_time_tolerance_bounds_the_enclosure():
 def test_linear_errors(kind, a, place, words):
     for call in (polyccd.solve_linear, polyccd.collides_linear):
         with pytest.raises(InputError) as info:
-            call(kind, a, np.zeros((2 if kind == "vertex-vertex" else 4, 3)))
+            call(kind, a, np.zeros((2 if kind in ("vertex-vertex", "sphere-sphere") else 4, 3)))
         assert str(info.value).startswith(place + ":"), str(info.value)
         assert all(w in str(info.value) for w in words), str(info.value)
 

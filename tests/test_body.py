@@ -2,7 +2,7 @@
 pure-Python computation, closed meshes against Euler's formula, and every error path
 (the message must name the bad input's place).
 
-The oracle (`oracle_edges`) follows bindings/python/API.md "Bodies": every unordered
+The oracle (`oracle_edges`) follows docs/python.md "Bodies": every unordered
 side {a, b}, a != b, of a triangle, once, as (a, b) with a < b, sorted; each edge with
 the ascending indices of the triangles that have it as a side.
 """

@@ -16,7 +16,8 @@ import numpy as np
 import pytest
 
 import polyccd as P
-from test_scene_property import scene_call, summary
+from helpers import cube, summary
+from test_scene_property import scene_call
 
 SEED = int(os.environ.get("POLYCCD_BVH_SEED", "20261124"))
 COUNT = int(os.environ.get("POLYCCD_BVH_COUNT", "30"))
@@ -29,13 +30,6 @@ def brute_and_bvh(bodies, all_contacts, threads=1):
     got = summary(P.check(bodies, broad_phase="bvh", all_contacts=all_contacts, threads=threads,
                           time_tolerance="1e-9"))
     return brute, got
-
-
-def cube(lo, s):
-    v = [[lo[0] + s * (i & 1), lo[1] + s * ((i >> 1) & 1), lo[2] + s * (i >> 2)] for i in range(8)]
-    t = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
-         [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
-    return P.Mesh(v, t)
 
 
 @pytest.mark.parametrize("s", SCALES, ids=[f"scale{k}" for k in range(len(SCALES))])

@@ -1,5 +1,5 @@
 """The polyccd command line: check, corpus, queries, demo; exit codes 0/1/2 and the
-messages for bad files (shared/design/formats.md, Command line)."""
+messages for bad files (docs/formats.md, "The command line")."""
 import json
 from fractions import Fraction
 
@@ -292,8 +292,8 @@ def test_index_options_do_not_change_answers(tmp_path, run_cli):
         assert (p.returncode, p.stdout) == (0, base.stdout), extra
     # --all-contacts: every touching feature pair with its own time, as the Python API
     # gives for the two-body scene.
-    from polyccd._results import time_json
-    bodies = polyccd.load_scene(str(tmp_path / "s.json"))[0]
+    from polyccd.apps._json import time_json
+    bodies = polyccd.apps.load_scene(str(tmp_path / "s.json"))[0]
     lines = index_lines(run_cli("index", "s.json", "--all-contacts", "--broad-phase", "range"))
     for line, q in zip(lines, bodies[1:]):
         r = polyccd.check([bodies[0], q], all_contacts=True, broad_phase="brute",

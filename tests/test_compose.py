@@ -16,6 +16,7 @@ from fractions import Fraction as F
 import pytest
 
 import polyccd as P
+from helpers import cube, summary
 from polyccd import InputError, Motion
 
 SEED = int(os.environ.get("POLYCCD_COMPOSE_SEED", "20261124"))
@@ -177,21 +178,6 @@ def test_rotation_of_a_turning_composite_cannot_be_set():
 
 # ---------------------------------------------------------------- scenes
 
-def box(c, s):
-    v = [[c[0] + s * (i & 1), c[1] + s * ((i >> 1) & 1), c[2] + s * (i >> 2)] for i in range(8)]
-    t = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
-         [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
-    return P.Mesh(v, t)
-
-
-def summary(r):
-    def t(ct):
-        return None if ct is None else (ct.lo, ct.hi, ct.exact)
-    return (r.collides, t(r.first_contact),
-            tuple((p.bodies, t(p.first_contact),
-                   tuple((c.a, c.b, t(c.first_contact)) for c in p.contacts)) for p in r.pairs))
-
-
 def qmul(a, b):
     """Quaternion polynomials (coefficient lists) multiplied: the hand-written product."""
     def pm(x, y):
@@ -238,12 +224,12 @@ def hand_written_cases(rng):
 def test_scene_on_composed_motions(k):
     rng = random.Random(SEED + 100 + k)
     for composed, by_hand in hand_written_cases(rng):
-        moving = box([F(rng.randint(-2, 1), 2) for _ in range(3)], F(1, 2))
+        moving = cube([F(rng.randint(-2, 1), 2) for _ in range(3)], F(1, 2))
         # The obstacle near where a corner of the moving box passes at some time
         # (shifted at random: hits and misses both occur).
         hit = rng.random() < 0.7  # the corner is inside the obstacle at that time
         corner = composed.position(moving.exact_vertices()[0], F(rng.randint(1, 3), 4))
-        fixed = box([c + (F(-1, 8) if hit else F(rng.randint(-3, 3), 4)) for c in corner], F(1, 4))
+        fixed = cube([c + (F(-1, 8) if hit else F(rng.randint(-3, 3), 4)) for c in corner], F(1, 4))
         ours = [P.Body(fixed, None, name="fixed"), P.Body(moving, composed, name="moving")]
         theirs = [P.Body(fixed, None, name="fixed"), P.Body(moving, by_hand, name="moving")]
         brute = summary(P.check(theirs, broad_phase="brute", time_tolerance="1e-9"))
@@ -267,7 +253,7 @@ def test_general_composites_equal_brute_force(k):
         slide = Motion.linear([F(rng.randint(-2, 2), 2) for _ in range(3)],
                               [F(rng.randint(-2, 2), 2) for _ in range(3)])
         m = turn.compose(slide) if rng.random() < 0.7 else slide.compose(turn)
-        shape = box([F(rng.randint(-2, 2), 2) for _ in range(3)], F(rng.randint(1, 2), 2)) \
+        shape = cube([F(rng.randint(-2, 2), 2) for _ in range(3)], F(rng.randint(1, 2), 2)) \
             if i != 1 else P.Spheres([[0, 0, 0], [F(1, 2), 0, 0]], [F(1, 4), F(1, 3)])
         bodies.append(P.Body(shape, m, name=f"b{i}"))
     brute = summary(P.check(bodies, broad_phase="brute", time_tolerance="1e-9", all_contacts=True))

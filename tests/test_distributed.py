@@ -1,4 +1,4 @@
-"""polyccd.distributed on a dask LocalCluster of 2 worker processes (with nannies): the
+"""polyccd.apps.distributed on a dask LocalCluster of 2 worker processes (with nannies): the
 answers equal the serial run's, in the same order, on the shared query set, the corpus
 and an Index batch of 10,000 query bodies; the stored body is indexed once per worker;
 a worker killed mid-run loses no result; the CLI's --workers / --scheduler print what the
@@ -23,7 +23,7 @@ import polyccd
 from polyccd import Body, Index, Mesh, Motion, Spheres
 
 distributed = pytest.importorskip("distributed")
-import polyccd.distributed as pd  # noqa: E402
+import polyccd.apps.distributed as pd  # noqa: E402
 from polyccd.apps._corpus import check_case, files_under  # noqa: E402
 from polyccd.apps._queries import run_file  # noqa: E402
 
@@ -57,7 +57,7 @@ def query_bodies(n, hit_every=10):
 
 
 def builds(client):
-    return client.run(lambda: __import__("polyccd.distributed").distributed._BUILDS[0])
+    return client.run(lambda: __import__("polyccd.apps.distributed").apps.distributed._BUILDS[0])
 
 
 def without_time(report):
@@ -69,7 +69,7 @@ def without_time(report):
 def test_index_batch_of_10k_equals_serial(client):
     queries = query_bodies(10_000)
     ix = Index(PLATE)
-    serial = ix.query_many(queries)  # equal to [ix.query(q) ...] (API.md, tests/test_index.py)
+    serial = ix.query_many(queries)  # equal to [ix.query(q) ...] (docs/python.md, tests/test_index.py)
     before = builds(client)
     got = list(pd.index_map(ix, queries, client=client))
     assert got == serial

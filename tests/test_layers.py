@@ -1,16 +1,19 @@
-"""The layers of lib/ include only the layers before them (README, "Layout").
+"""The layers of lib/ include only the layers before them (docs/design.md, "Layout").
 
 Order: arith -> poly -> motion -> pred -> narrow -> boxes -> bvh -> range -> scene -> api, with
 util (threads) below every layer that needs it. Only lib/api includes the public
 header; inner layers keep their own copies of its constants (lib/api/constants.cpp).
+Also house rules checked on every file: no file in lib/, bindings/ or tests/ is over 450
+lines, and the Python core (polyccd outside polyccd/apps) imports no application.
 """
+import ast
 import re
 from pathlib import Path
 
 import pytest
 
 LIB = Path(__file__).resolve().parent.parent / "lib"
-ORDER = ["util", "arith", "poly", "motion", "pred", "narrow", "boxes", "bvh", "range", "scene", "api"]
+ORDER = ["util", "arith", "poly", "motion", "pred", "narrow", "enclose", "boxes", "bvh", "range", "scene", "api"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 
@@ -57,7 +60,80 @@ def test_the_check_catches_a_violation(text, layer_file):
     assert violations(LIB / layer_file, text)
 
 
-def test_no_source_file_is_over_450_lines():
-    long = [f"{p.relative_to(LIB)}: {n}" for p in sources()
-            if (n := len(p.read_text().splitlines())) > 450]
+# ------------------------------------------------------------ every file, every folder
+
+ROOT = LIB.parent
+CAPPED = ("lib", "bindings", "tests")  # every text file there (house style: under 450 lines)
+TEXT = {".py", ".c", ".h", ".cpp", ".md", ".sh", ".mk", ".txt", ".toml", ".json", ".map", ".in"}
+SKIP = {"__pycache__", "build", "dist", ".venv", ".pytest_cache"}
+
+
+def capped_files():
+    for top in CAPPED:
+        for p in sorted((ROOT / top).rglob("*")):
+            parts = p.relative_to(ROOT).parts
+            # A symlink (bindings/python/README.md: the checkout's README for the wheel)
+            # is the file it points to, outside these folders.
+            if (p.is_file() and not p.is_symlink() and p.suffix in TEXT
+                    and not SKIP & set(parts) and not any(x.endswith(".egg-info") for x in parts)
+                    and not p.name.startswith("_pccd")):  # the generated cffi extension
+                yield p
+
+
+def test_no_file_is_over_450_lines():
+    long = [f"{p.relative_to(ROOT)}: {n}" for p in capped_files()
+            if (n := len(p.read_text(errors="replace").splitlines())) > 450]
     assert long == []
+
+
+# ------------------------------------------------ the Python core imports no application
+
+PACKAGE = ROOT / "bindings" / "python" / "polyccd"
+# python -m polyccd: the command line's entry point, run, never imported by the core.
+ENTRY_POINTS = {"__main__.py"}
+
+
+def imported_modules(path, text):
+    """Every module name an import statement of path (a file of the polyccd package)
+    names, absolute: "from .apps import x" in polyccd/_scene.py gives polyccd.apps and
+    polyccd.apps.x; imports inside functions count as well."""
+    package = ["polyccd", *path.relative_to(PACKAGE).parts[:-1]]
+    out = []
+    for node in ast.walk(ast.parse(text, str(path))):
+        if isinstance(node, ast.Import):
+            out += [alias.name for alias in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = package[:len(package) - node.level + 1] if node.level else []
+            module = ".".join(base + ([node.module] if node.module else []))
+            out.append(module)
+            out += [f"{module}.{alias.name}" for alias in node.names]
+    return out
+
+
+def apps_imports(path, text):
+    return [m for m in imported_modules(path, text)
+            if m == "polyccd.apps" or m.startswith("polyccd.apps.")]
+
+
+def core_files():
+    return [p for p in sorted(PACKAGE.rglob("*.py"))
+            if "apps" not in p.relative_to(PACKAGE).parts[:-1] and p.name not in ENTRY_POINTS]
+
+
+def test_the_python_core_imports_no_application():
+    assert len(core_files()) > 10
+    bad = [f"{p.relative_to(PACKAGE)} imports {m}" for p in core_files()
+           for m in apps_imports(p, p.read_text())]
+    assert bad == []
+
+
+@pytest.mark.parametrize("text", [
+    "from .apps._render import render_scene\n",
+    "def f():\n    from .apps import load_scene\n",
+    "from . import apps\n",
+    "import polyccd.apps.cli\n",
+    "from polyccd.apps import to_png\n",
+])
+def test_the_import_check_catches_an_application_import(text):
+    assert apps_imports(PACKAGE / "_scene.py", text)
+    assert not apps_imports(PACKAGE / "_scene.py", "from ._body import Mesh\nimport numpy\n")

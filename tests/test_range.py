@@ -4,14 +4,12 @@ with brute force and must actually filter (a test that every candidate passes wo
 show the structure works)."""
 from fractions import Fraction as F
 
+import helpers
 import polyccd as P
 
 
 def cube(s=1):
-    v = [[s * (i & 1), s * ((i >> 1) & 1), s * (i >> 2)] for i in range(8)]
-    t = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
-         [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
-    return P.Mesh(v, t)
+    return helpers.cube([0, 0, 0], s)
 
 
 def grid_plate(n):

@@ -23,7 +23,7 @@ import pytest
 
 import polyccd as P
 
-from test_scene_property import summary
+from helpers import summary
 
 TOL = "1e-9"
 ID = [1, 0, 0, 0]

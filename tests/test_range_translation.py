@@ -18,7 +18,7 @@ import pytest
 
 import polyccd as P
 
-from test_scene_property import summary
+from helpers import summary
 
 
 def grid(rng, k=4):

@@ -1,52 +1,48 @@
-"""The README's Python and C examples run exactly as written."""
-import os
+"""The README's quick starts are the examples of examples/, verbatim, and run as written
+(tests/test_examples.py runs every example; here: the copies match, the command-line
+quick start prints what the README shows, and install, Python and C come first)."""
+import json
 import re
 import subprocess
 import sys
+from pathlib import Path
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-
-
-def _block(lang, k=0):
-    text = open(os.path.join(ROOT, "README.md"), encoding="utf-8").read()
-    blocks = re.findall(r"```" + lang + r"\n(.*?)```", text, re.S)
-    assert len(blocks) > k, f"no {lang} block {k} in README.md"
-    return blocks[k]
+ROOT = Path(__file__).resolve().parent.parent
+README = (ROOT / "README.md").read_text(encoding="utf-8")
 
 
-def _run_python_block(tmp_path, k):
-    """Python block k of the README, run as a script from the checkout: its stdout."""
-    script = tmp_path / f"block{k}.py"
-    script.write_text(_block("python", k))
-    out = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, cwd=ROOT)
+def _blocks(lang):
+    return re.findall(r"```" + lang + r"\n(.*?)```", README, re.S)
+
+
+def test_python_quick_start_is_the_example():
+    (block,) = _blocks("python")
+    assert block == (ROOT / "examples" / "python" / "meshes_between_poses.py").read_text(encoding="utf-8")
+
+
+def test_c_quick_start_is_the_example():
+    (block,) = _blocks("c")
+    assert block == (ROOT / "examples" / "c" / "first_contact.c").read_text(encoding="utf-8")
+
+
+def test_cli_quick_start_prints_what_it_shows():
+    block = next(b for b in _blocks("sh") if "polyccd check" in b)
+    command, shown = block.splitlines()[:2]
+    args = command.split()[1:]
+    out = subprocess.run([sys.executable, "-m", "polyccd", *args], capture_output=True, text=True, cwd=ROOT)
     assert out.returncode == 0, out.stderr
-    return out.stdout
+    assert shown.startswith("# ") and shown.endswith("...")
+    assert out.stdout.startswith(shown[2:-3]), (out.stdout, shown)
+    assert json.loads(out.stdout)["first_contact"]["exact"] == "2/5"
 
 
-def test_python_example_runs(tmp_path):
-    stdout = _run_python_block(tmp_path, 0)
-    assert stdout.startswith("1/3 (Feature(kind='vertex-face'"), stdout
-
-
-def test_python_scene_example_runs(tmp_path):
-    # Cube edge 10 is (3, 5), the diagonal of the face x = 1 through its centre.
-    stdout = _run_python_block(tmp_path, 1)
-    assert stdout == "3/4 [(('edge', 10), ('sphere', 0))]\n", stdout
-
-
-def test_python_index_example_runs(tmp_path):
-    stdout = _run_python_block(tmp_path, 2)
-    assert stdout == "['1', '3/4']\n", stdout
-
-
-def test_c_example_runs(tmp_path):
-    src = tmp_path / "ex.c"
-    src.write_text(_block("c"))
-    exe = tmp_path / "ex"
-    lib = os.path.join(ROOT, "build")   # where `make` puts libpolyccd.so
-    subprocess.run(["cc", "-std=c99", "-Wall", "-Werror", "-I" + os.path.join(ROOT, "include"),
-                    str(src), "-L" + lib, "-lpolyccd", "-Wl,-rpath," + lib, "-o", str(exe)],
-                   check=True)
-    out = subprocess.run([str(exe)], capture_output=True, text=True)
-    assert out.returncode == 0, out.stderr
-    assert out.stdout == "first contact at t = 1/2\n"
+def test_a_new_user_finds_install_and_quick_starts_first():
+    """Install, the Python and the C quick starts begin within the first 100 lines, and
+    the README stays a door (about 200 lines), the details living in docs/."""
+    lines = README.splitlines()
+    heads = {line: i + 1 for i, line in enumerate(lines) if line.startswith("## ")}
+    for title in ("## Install", "## Quick start: Python", "## Quick start: C"):
+        assert heads[title] <= 100, (title, heads)
+    assert len(lines) <= 200, len(lines)
+    for page in re.findall(r"`(docs/[\w.]+\.md)`", README):
+        assert (ROOT / page).is_file(), page

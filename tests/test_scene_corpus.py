@@ -2,7 +2,7 @@
 `expect` block, which tests/tools/make_body_corpus.py wrote from the independent body oracle
 (tests/oracle/oracle_body.py), never from polyccd.
 
-Checked (formats.md, EXPECT; bindings/python/API.md, Scenes): collides; first_contact
+Checked (formats.md, EXPECT; docs/python.md, Scenes): collides; first_contact
 (an exact rational is reported exactly; an enclosure [lo, hi] must meet the expected
 one and be no wider than the case's time tolerance, and must not claim to be exact);
 pairs (every body pair in contact; for two bodies, the one pair exactly when they
@@ -23,7 +23,9 @@ import pytest
 
 import oracle
 import oracle_body
+from helpers import summary
 import polyccd
+import polyccd.apps
 from oracle_hull import in_hull
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus" / "bodies"
@@ -46,18 +48,8 @@ def read(path):
 def run(path, **kw):
     doc = read(path)
     tol = exact(doc.get("options", {}).get("time_tolerance", "1e-12"))
-    bodies, _options, _expect = polyccd.load_scene(str(path))
+    bodies, _options, _expect = polyccd.apps.load_scene(str(path))
     return doc, tol, bodies, polyccd.check(bodies, time_tolerance=tol, **kw)
-
-
-def summary(r):
-    """Everything a SceneResult says (stats aside), as comparable values."""
-    def t(ct):
-        return None if ct is None else (ct.lo, ct.hi, ct.exact)
-    return (r.collides, t(r.first_contact),
-            tuple((p.bodies, p.names, t(p.first_contact),
-                   tuple((c.a, c.b, t(c.first_contact)) for c in p.contacts)) for p in r.pairs),
-            tuple(p.bodies for p in r.first))
 
 
 def check_time(ct, want, tol, what):

@@ -13,6 +13,7 @@ from fractions import Fraction as F
 import pytest
 
 import polyccd as P
+from helpers import summary
 
 SEED = int(os.environ.get("POLYCCD_SCENE_SEED", "20261122"))
 COUNT = int(os.environ.get("POLYCCD_SCENE_COUNT", "150"))
@@ -92,16 +93,6 @@ def scene_call(bodies, **kw):
     rep = _handles.new("report")
     _scene.check(lib.pccd_scene_solve(scene, cfg, opt, rep))
     return _scene._read(rep, bodies)
-
-
-def summary(r):
-    """Everything a result says, as comparable values."""
-    def t(ct):
-        return None if ct is None else (ct.lo, ct.hi, ct.exact)
-    return (r.collides, t(r.first_contact),
-            tuple((p.bodies, t(p.first_contact),
-                   tuple((c.a, c.b, t(c.first_contact)) for c in p.contacts)) for p in r.pairs),
-            tuple(p.bodies for p in r.first))
 
 
 

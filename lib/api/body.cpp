@@ -141,12 +141,8 @@ PCCD_API int pccd_body_new_spheres_s(pccd_body **out, const char *const *centers
 PCCD_API void pccd_body_free(pccd_body *b) { delete b; }
 
 PCCD_API int pccd_body_kind(const pccd_body *b, int *kind) {
-  return guard(__func__, [&] {
-    require(b, "b");
-    require(kind, "kind");
-    *kind = b->mesh ? PCCD_BODY_MESH : PCCD_BODY_SPHERES;
-    return PCCD_OK;
-  });
+  return pccd::api::getter(__func__, b, "b", kind, "kind",
+                                [&] { return b->mesh ? PCCD_BODY_MESH : PCCD_BODY_SPHERES; });
 }
 
 PCCD_API int pccd_body_counts(const pccd_body *b, size_t *vertices_or_spheres, size_t *edges,

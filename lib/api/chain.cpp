@@ -53,10 +53,18 @@ PCCD_API int pccd_chain_add_link(pccd_chain *c, long parent, int joint, const do
 }
 
 PCCD_API int pccd_chain_size(const pccd_chain *c, size_t *n) {
+  return pccd::api::getter(__func__, c, "c", n, "n",
+                                [&] { return c->c.size(); });
+}
+
+PCCD_API int pccd_chain_set_value_place(pccd_chain *c, size_t k, const char *place) {
   return guard(__func__, [&] {
     require(c, "c");
-    require(n, "n");
-    *n = c->c.size();
+    require(place, "place");
+    if (k >= c->c.size())
+      throw Input_error("k: " + std::to_string(k) + " out of range (the chain has " +
+                        std::to_string(c->c.size()) + " links)");
+    c->c.set_value_place(k, place);
     return PCCD_OK;
   });
 }

@@ -18,15 +18,6 @@ struct pccd_result {
 
 namespace pccd::api {
 
-// An unsolved, empty result, in place: no allocation when r held an answer before.
-inline void reset(pred::Contact_result &r) {
-  r.collides = r.exact = false;
-  r.lo = 0;
-  r.hi = 0;
-  r.features.clear();
-  r.stage = pred::STAGE_NONE;
-}
-
 // Number of points of a kind; Input_error for an unknown kind.
 size_t kind_points(long kind);
 
@@ -36,12 +27,5 @@ Biggest_number biggest_in(const pccd_query &q);
 
 // Solves with the interval stages built from `q`'s exact data (intervals enclosing it).
 pred::Contact_result solve_query(const pccd_query &q, const pred::Solve_options &opt);
-
-// Reads a pccd_config (NULL: defaults) into solver options; Input_error when invalid.
-pred::Solve_options read_config(const pccd_config *cfg);
-// True when cfg sets config.min_distance (the fast linear paths assume delta = 0).
-bool has_min_distance(const pccd_config *cfg);
-// The validation of read_config alone (no options built).
-void checked_config(const pccd_config *cfg);
 
 }  // namespace pccd::api

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "api/body_handle.h"
+#include "api/config.h"
 #include "api/guard.h"
 #include "api/handles.h"
 #include "api/motion_handle.h"
@@ -24,8 +25,7 @@ int new_index(const char *fn, pccd_index **out, const pccd_body *body, const pcc
     require(out, "out");
     *out = nullptr;
     require(body, "body");
-    pccd::api::checked_config(cfg);
-    pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;  // all its rules checked
     if (unlimited) limits.max_number_bits = 0;
     auto ix = std::make_unique<pccd_index>();
     ix->biggest = biggest_of(body, motion);
@@ -60,8 +60,9 @@ PCCD_API int pccd_index_query(const pccd_index *ix, const pccd_body *body,
     require(body, "body");
     require(rep, "rep");
     rep->solved = false;  // a failed call leaves no earlier answer readable
-    const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    const pccd::api::Call_config call = pccd::api::read_scene_call(cfg, opt, true);
+    const pccd::scene::Scene_options so = call.scene_options();
+    const pccd::api::Call_limits &limits = call.limits;
     limits.check(ix->biggest, "ix: the stored body's ");
     limits.check(body->biggest, "body.");
     if (motion) limits.check(*pccd::api::motion_biggest(motion), "motion.");
@@ -84,8 +85,9 @@ PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const 
     for (size_t k = 0; k < n; ++k)
       require(reports[k], pccd::api::place("reports", {k}));
     for (size_t k = 0; k < n; ++k) reports[k]->solved = false;  // no earlier answer readable
-    const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    const pccd::api::Call_config call = pccd::api::read_scene_call(cfg, opt, true);
+    const pccd::scene::Scene_options so = call.scene_options();
+    const pccd::api::Call_limits &limits = call.limits;
     limits.check(ix->biggest, "ix: the stored body's ");
     std::vector<pccd::scene::Scene_body> qs(n);
     for (size_t k = 0; k < n; ++k) {

@@ -1,8 +1,9 @@
-// pccd_cancel_*, and the limits of a pccd_config (api/limits.h).
+// pccd_cancel_*, pccd_threads_usable, and the number sizes of the limits (api/limits.h).
 #include "api/limits.h"
 
 #include <cmath>
 
+#include "api/config.h"
 #include "api/guard.h"
 #include "util/thread_pool.h"
 
@@ -60,22 +61,6 @@ void Call_limits::check(const Biggest_number &b, const std::string &prefix) cons
                            " (raise it, or set 0 for no limit, to solve this input)");
 }
 
-// The size of pccd_config before the work-limit fields (accepted: polyccd.h).
-constexpr size_t kConfigSizeV0 = offsetof(pccd_config, max_seconds);
-
-Call_limits read_limits(const pccd_config *cfg) {
-  Call_limits l;
-  if (!cfg || cfg->struct_size == kConfigSizeV0) return l;
-  if (!(std::isfinite(cfg->max_seconds) && cfg->max_seconds >= 0))
-    throw Input_error("config.max_seconds: " + std::to_string(cfg->max_seconds) +
-                      " is not a finite number >= 0 (0: no time limit)");
-  l.work.max_seconds = cfg->max_seconds;
-  l.work.max_steps = cfg->max_work;
-  l.work.cancel = cfg->cancel ? &cfg->cancel->flag : nullptr;
-  l.max_number_bits = cfg->max_number_bits;
-  return l;
-}
-
 }  // namespace pccd::api
 
 extern "C" {
@@ -83,9 +68,7 @@ extern "C" {
 PCCD_API int pccd_threads_usable(unsigned requested, unsigned *usable) {
   return guard(__func__, [&] {
     require(usable, "usable");
-    if (requested < 1 || requested > 1024)
-      throw Input_error("requested: " + std::to_string(requested) + " is outside 1..1024");
-    *usable = pccd::util::usable_threads(requested);
+    *usable = pccd::util::usable_threads(pccd::api::checked_threads(requested, "requested"));
     return PCCD_OK;
   });
 }
@@ -110,12 +93,8 @@ PCCD_API int pccd_cancel_reset(pccd_cancel *c) {
 }
 
 PCCD_API int pccd_cancel_is_set(const pccd_cancel *c, int *is_set) {
-  return guard(__func__, [&] {
-    require(c, "c");
-    require(is_set, "is_set");
-    *is_set = c->flag.is_set() ? 1 : 0;
-    return PCCD_OK;
-  });
+  return pccd::api::getter(__func__, c, "c", is_set, "is_set",
+                                [&] { return c->flag.is_set() ? 1 : 0; });
 }
 
 }  // extern "C"

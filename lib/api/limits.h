@@ -47,14 +47,13 @@ Biggest_number biggest_in(const motion::Mesh_body &b);
 Biggest_number biggest_in(const motion::Sphere_body &b);
 Biggest_number biggest_in(const motion::Rigid_motion &m);
 
-// The limits of a pccd_config (NULL: the defaults); Input_error when a field is bad.
+// The limits of a pccd_config (read by api/config.h).
 struct Call_limits {
   util::Work_limits work;
   size_t max_number_bits = PCCD_DEFAULT_MAX_NUMBER_BITS;  // 0: none
   // Limit_error "<prefix><place>: a number of B bits exceeds config.max_number_bits = L ..."
   void check(const Biggest_number &b, const std::string &prefix = "") const;
 };
-Call_limits read_limits(const pccd_config *cfg);
 
 // The work budget of one call on this thread (and the pools it starts); none when the
 // config sets no work limit (then work_step costs one thread-local load).

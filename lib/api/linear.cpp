@@ -1,24 +1,22 @@
 // pccd_solve_linear_d and its batch twin pccd_solve_linear_batch_d: queries of points
-// moving linearly, given as doubles. Both run the static filter (pred/linear_filter.h),
-// then the hit certificate (pred/linear_crossing.h), and the staged solver only when
-// neither decides, so a batch entry is exactly the single call's answer.
+// moving linearly, given as doubles. Both check the input and answer each query with
+// pred::solve_linear (filter, certificate, staged solver: pred/solve_linear.h), so a
+// batch entry is exactly the single call's answer.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
+#include "api/config.h"
 #include "api/guard.h"
-#include "api/limits.h"
 #include "api/handles.h"
-#include "pred/linear_crossing.h"
-#include "pred/linear_filter.h"
+#include "pred/solve_linear.h"
 #include "util/thread_pool.h"
 
 using pccd::api::guard;
 using pccd::api::place;
 using pccd::api::require;
 using pccd::arith::Input_error;
-using pccd::arith::Interval;
-using pccd::arith::Rational;
 
 namespace pccd::api {
 namespace {
@@ -39,54 +37,6 @@ void check_finite(const double *p, size_t n, const char *name, const size_t *k) 
       if (!std::isfinite(x))
         arith::rational_from_double(x, k ? place(name, {*k, i, a}) : place(name, {i, a}));
     }
-}
-
-// The static filter's answer into out (reset); false when it cannot decide.
-bool filtered(long kind, const double *p0, const double *p1, pred::Contact_result &out) {
-  switch (pred::linear_filter(static_cast<int>(kind), p0, p1)) {
-    case pred::Linear_verdict::boxes_apart: out.stage = pred::STAGE_BOUNDS; return true;
-    case pred::Linear_verdict::no_root: out.stage = pred::STAGE_BERNSTEIN; return true;
-    case pred::Linear_verdict::misses: out.stage = pred::STAGE_INTERVAL; return true;
-    case pred::Linear_verdict::unknown: break;
-  }
-  return false;
-}
-
-// The hit certificate (pred/linear_crossing.h): the staged solver's answer of a single
-// transversal crossing, its time by the same midpoint bisection.
-bool certified_hit(long kind, const double *p0, const double *p1, const pred::Solve_options &opt,
-                   pred::Contact_result &out) {
-  return pred::crossing_hit(static_cast<int>(kind), p0, p1, opt, out);
-}
-
-// The staged solver on n points with finite coordinates.
-pred::Contact_result solve_staged(long kind, size_t n, const double *p0, const double *p1,
-                                  const pred::Solve_options &opt) {
-  const arith::Nearest_scope nearest;  // before any interval arithmetic
-  // The interval stages see the doubles as exact points; the exact trajectories are
-  // built only if those stages cannot decide.
-  pred::Query_data<Interval> iq;
-  iq.kind = static_cast<int>(kind);
-  iq.p.resize(n);
-  for (size_t i = 0; i < n; ++i)
-    for (int a = 0; a < 3; ++a) {
-      const double x0 = p0[3 * i + a], x1 = p1[3 * i + a];
-      // x(t) = x0 + (x1 - x0) t: the slope is enclosed, not rounded.
-      iq.p[i][a] = poly::Poly<Interval>(std::vector<Interval>{Interval(x0), Interval(x1) - Interval(x0)});
-    }
-  auto exact = [&] {
-    pred::Query_data<Rational> eq;
-    eq.kind = static_cast<int>(kind);
-    eq.p.resize(n);
-    for (size_t i = 0; i < n; ++i)
-      for (int a = 0; a < 3; ++a) {
-        Rational x0 = arith::rational_from_double(p0[3 * i + a], "p_t0");
-        Rational x1 = arith::rational_from_double(p1[3 * i + a], "p_t1");
-        eq.p[i][a] = poly::Poly<Rational>(std::vector<Rational>{x0, x1 - x0});
-      }
-    return eq;
-  };
-  return pred::solve(iq, exact, opt);
 }
 
 // Writes answer k of a batch.
@@ -122,26 +72,19 @@ PCCD_API int pccd_solve_linear_d(pccd_kind kind, const double *p_t0, const doubl
                                  const pccd_config *cfg, pccd_result *res) {
   return guard(__func__, [&] {
     require(res, "res");
-    res->solved = false;
-    pccd::api::reset(res->r);
+    res->solved = false;  // unreadable until solved (require_solved); solve_linear resets r
     require(p_t0, "p_t0");
     require(p_t1, "p_t1");
     const long k = pccd::api::raw_kind(kind);
     const size_t n = pccd::api::linear_points(k);
-    pccd::api::checked_config(cfg);
+    const pccd::api::Call_config call = pccd::api::read_call(cfg);
     pccd::api::check_finite(p_t0, n, "p_t0", nullptr);
     pccd::api::check_finite(p_t1, n, "p_t1", nullptr);
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
-    pccd::api::check_double_bits(limits, p_t0, n, "p_t0", nullptr);
-    pccd::api::check_double_bits(limits, p_t1, n, "p_t1", nullptr);
-    const bool delta = pccd::api::has_min_distance(cfg);  // the fast paths assume delta = 0
-    if (delta || !pccd::api::filtered(k, p_t0, p_t1, res->r)) {
-      const pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
-      if (delta || !pccd::api::certified_hit(k, p_t0, p_t1, opt, res->r)) {
-        const pccd::api::Call_budget budget(limits.work);
-        res->r = pccd::api::solve_staged(k, n, p_t0, p_t1, opt);
-      }
-    }
+    pccd::api::check_double_bits(call.limits, p_t0, n, "p_t0", nullptr);
+    pccd::api::check_double_bits(call.limits, p_t1, n, "p_t1", nullptr);
+    std::optional<pccd::api::Call_budget> budget;  // none without limits: no per-call cost
+    if (call.limits.work.any()) budget.emplace(call.limits.work);
+    pccd::pred::solve_linear(static_cast<int>(k), n, p_t0, p_t1, *call.solve, res->r);
     res->solved = true;
     return PCCD_OK;
   });
@@ -164,20 +107,10 @@ PCCD_API int pccd_solve_linear_batch_d(pccd_kind kind, size_t n, const double *t
     if (out->struct_size != sizeof(pccd_batch_out))
       throw Input_error("out.struct_size: " + std::to_string(out->struct_size) + " is not " +
                         std::to_string(sizeof(pccd_batch_out)));
-    unsigned threads = 1;
-    if (opt) {
-      if (opt->struct_size != sizeof(pccd_batch_options))
-        throw Input_error("opt.struct_size: " + std::to_string(opt->struct_size) + " is not " +
-                          std::to_string(sizeof(pccd_batch_options)) +
-                          " (initialise with pccd_batch_options_init)");
-      if (opt->threads < 1 || opt->threads > 1024)
-        throw Input_error("opt.threads: " + std::to_string(opt->threads) + " is outside 1..1024");
-      threads = opt->threads;
-    }
+    const pccd::api::Call_config call = pccd::api::read_batch_call(cfg, opt);
     const long k = pccd::api::raw_kind(kind);
     const size_t np = pccd::api::linear_points(k);
-    const pccd::pred::Solve_options so = pccd::api::read_config(cfg);
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    const pccd::api::Call_limits &limits = call.limits;
     if (n == 0) return PCCD_OK;
     require(t0, "t0");
     require(t1, "t1");
@@ -189,16 +122,13 @@ PCCD_API int pccd_solve_linear_batch_d(pccd_kind kind, size_t n, const double *t
     }
     const pccd::api::Call_budget budget(limits.work);
     const size_t chunks = (n + pccd::api::kChunk - 1) / pccd::api::kChunk;
-    pccd::util::Thread_pool pool(static_cast<unsigned>(std::min<size_t>(threads, chunks)));
+    pccd::util::Thread_pool pool(static_cast<unsigned>(std::min<size_t>(call.threads, chunks)));
     pool.parallel_for(chunks, [&](size_t c) {
       pccd::pred::Contact_result r;
       const size_t end = std::min(n, (c + 1) * pccd::api::kChunk);
       for (size_t q = c * pccd::api::kChunk; q < end; ++q) {
-        const double *p0 = t0 + 3 * np * q, *p1 = t1 + 3 * np * q;
-        pccd::api::reset(r);
-        if (sgn(so.delta) > 0 ||
-            (!pccd::api::filtered(k, p0, p1, r) && !pccd::api::certified_hit(k, p0, p1, so, r)))
-          r = pccd::api::solve_staged(k, np, p0, p1, so);
+        pccd::pred::solve_linear(static_cast<int>(k), np, t0 + 3 * np * q, t1 + 3 * np * q,
+                                 *call.solve, r);
         pccd::api::write(*out, q, r);
       }
     });

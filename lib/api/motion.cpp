@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "api/guard.h"
-#include "api/handles.h"
+#include "api/config.h"
 #include "api/motion_handle.h"
 #include "motion/standard_motions.h"
 
@@ -90,8 +90,8 @@ int compose(const char *fn, pccd_motion **out, const pccd_motion *outer, const p
     *out = nullptr;
     require(outer, "outer");
     require(inner, "inner");
-    pccd::api::checked_config(cfg);  // struct_size, time_tolerance (unused here)
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    // the config's rules (struct_size, ...) as for any call; only its limits are used
+    const pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;
     if (cfg) {
       limits.check(*pccd::api::motion_biggest(outer), "outer.");
       limits.check(*pccd::api::motion_biggest(inner), "inner.");
@@ -115,8 +115,8 @@ int compose(const char *fn, pccd_motion **out, const pccd_motion *outer, const p
 int validate(const char *fn, const pccd_motion *m, const pccd_config *cfg) {
   return guard(fn, [&] {
     require(m, "m");
-    pccd::api::checked_config(cfg);  // struct_size, time_tolerance (unused here)
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    // the config's rules (struct_size, ...) as for any call; only its limits are used
+    const pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;
     if (cfg) limits.check(*pccd::api::motion_biggest(m), "m.");
     const pccd::api::Call_budget budget(limits.work);
     m->m.validate();
@@ -130,8 +130,8 @@ int position(const char *fn, const pccd_motion *m, const char *const p[3], const
              const pccd_config *cfg, char *buf, size_t cap, size_t *needed) {
   return guard(fn, [&] {
     require(m, "m");
-    pccd::api::checked_config(cfg);  // struct_size, time_tolerance (unused here)
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    // the config's rules (struct_size, ...) as for any call; only its limits are used
+    const pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;
     const Vec3_q point = vec_s(p, "p");
     const Rational time = number_s(t, "t");
     if (cfg) {  // the input limit: the point, the time and the motion
@@ -147,6 +147,38 @@ int position(const char *fn, const pccd_motion *m, const char *const p[3], const
     for (int i = 0; i < 3; ++i) text += (i ? " " : "") + pccd::arith::to_string(x[i]);
     return pccd::api::write_text(text, buf, cap, needed);
   });
+}
+
+// The quaternion values[0..3], entries named name[i].
+pccd::motion::Quat_q quat_d(const double *values, const char *name) {
+  require(values, name);
+  pccd::motion::Quat_q q;
+  for (size_t i = 0; i < 4; ++i) q[i] = pccd::arith::rational_from_double(values[i], place(name, {i}));
+  return q;
+}
+
+pccd::motion::Quat_q quat_s(const char *const *values, const char *name) {
+  require(values, name);
+  pccd::motion::Quat_q q;
+  for (size_t i = 0; i < 4; ++i) q[i] = number_s(values[i], place(name, {i}));
+  return q;
+}
+
+// The translation and rotation of a row-major 4x4 pose matrix named `name`.
+std::pair<Vec3_q, pccd::motion::Quat_q> pose_of_matrix(const double *M, const char *name) {
+  require(M, name);
+  for (size_t c = 0; c < 4; ++c)
+    if (M[12 + c] != (c == 3 ? 1.0 : 0.0))
+      throw Input_error(place(name, {3, c}) + ": the last row of a pose matrix must be exactly "
+                        "0 0 0 1, got " + pccd::arith::to_string(pccd::arith::rational_from_double(
+                                              M[12 + c], place(name, {3, c}))));
+  Vec3_q p;
+  double R[9];
+  for (size_t r = 0; r < 3; ++r) {
+    p[r] = pccd::arith::rational_from_double(M[4 * r + 3], place(name, {r, 3}));
+    for (size_t c = 0; c < 3; ++c) R[3 * r + c] = M[4 * r + c];
+  }
+  return {p, pccd::motion::quaternion_of_rotation(R, name)};
 }
 
 }  // namespace
@@ -298,6 +330,46 @@ PCCD_API int pccd_motion_set_screw_s(pccd_motion *m, const char *const axis[3],
     pccd::api::edit(m) = pccd::motion::screw(vec_s(axis, "axis"), vec_s(center, "center"),
                                number_s(tau0, "tau0"), number_s(tau1, "tau1"),
                                number_s(advance, "advance"));
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_motion_set_between_d(pccd_motion *m, const double p0[3], const double q0[4],
+                                       const double p1[3], const double q1[4]) {
+  return guard(__func__, [&] {
+    require(m, "m");
+    // Converted one by one, in argument order (an error names the first bad input; the
+    // order of a call's argument evaluation is unspecified in C++).
+    const Vec3_q a = vec_d(p0, "p0");
+    const pccd::motion::Quat_q qa = quat_d(q0, "q0");
+    const Vec3_q b = vec_d(p1, "p1");
+    const pccd::motion::Quat_q qb = quat_d(q1, "q1");
+    pccd::api::edit(m) = pccd::motion::pose_between(a, qa, b, qb);
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_motion_set_between_s(pccd_motion *m, const char *const p0[3],
+                                       const char *const q0[4], const char *const p1[3],
+                                       const char *const q1[4]) {
+  return guard(__func__, [&] {
+    require(m, "m");
+    const Vec3_q a = vec_s(p0, "p0");  // in argument order, as above
+    const pccd::motion::Quat_q qa = quat_s(q0, "q0");
+    const Vec3_q b = vec_s(p1, "p1");
+    const pccd::motion::Quat_q qb = quat_s(q1, "q1");
+    pccd::api::edit(m) = pccd::motion::pose_between(a, qa, b, qb);
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_motion_set_between_matrices_d(pccd_motion *m, const double M0[16],
+                                                const double M1[16]) {
+  return guard(__func__, [&] {
+    require(m, "m");
+    const auto [p0, q0] = pose_of_matrix(M0, "M0");
+    const auto [p1, q1] = pose_of_matrix(M1, "M1");
+    pccd::api::edit(m) = pccd::motion::pose_between(p0, q0, p1, q1);
     return PCCD_OK;
   });
 }

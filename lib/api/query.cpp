@@ -120,7 +120,7 @@ PCCD_API int pccd_query_set_linear_d(pccd_query *q, const double *p_t0, const do
 
 static int set_radius(pccd_query *q, size_t which, const Rational &r) {
   if (q->kind != PCCD_SPHERE_SPHERE)
-    throw Input_error("q: radii apply to sphere-sphere queries only");
+    throw Input_error("radii: only sphere-sphere queries have radii");
   if (which > 1) throw Input_error("which: " + std::to_string(which) + " out of range (0 or 1)");
   q->radius[which] = r;
   return PCCD_OK;

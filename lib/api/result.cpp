@@ -19,21 +19,13 @@ PCCD_API int pccd_result_new(pccd_result **out) {
 PCCD_API void pccd_result_free(pccd_result *r) { delete r; }
 
 PCCD_API int pccd_result_collides(const pccd_result *res, int *collides) {
-  return guard(__func__, [&] {
-    require_solved(res, "res");
-    require(collides, "collides");
-    *collides = res->r.collides ? 1 : 0;
-    return PCCD_OK;
-  });
+  return pccd::api::getter<true>(__func__, res, "res", collides, "collides",
+                                [&] { return res->r.collides ? 1 : 0; });
 }
 
 PCCD_API int pccd_result_stage(const pccd_result *res, int *stage) {
-  return guard(__func__, [&] {
-    require_solved(res, "res");
-    require(stage, "stage");
-    *stage = res->r.stage;
-    return PCCD_OK;
-  });
+  return pccd::api::getter<true>(__func__, res, "res", stage, "stage",
+                                [&] { return res->r.stage; });
 }
 
 PCCD_API int pccd_result_time(const pccd_result *res, int which, char *buf, size_t cap,
@@ -53,12 +45,8 @@ PCCD_API int pccd_result_time(const pccd_result *res, int which, char *buf, size
 }
 
 PCCD_API int pccd_result_time_is_exact(const pccd_result *res, int *exact) {
-  return guard(__func__, [&] {
-    require_solved(res, "res");
-    require(exact, "exact");
-    *exact = res->r.collides && res->r.exact ? 1 : 0;
-    return PCCD_OK;
-  });
+  return pccd::api::getter<true>(__func__, res, "res", exact, "exact",
+                                [&] { return res->r.collides && res->r.exact ? 1 : 0; });
 }
 
 PCCD_API int pccd_result_time_approx(const pccd_result *res, double *t) {
@@ -72,12 +60,8 @@ PCCD_API int pccd_result_time_approx(const pccd_result *res, double *t) {
 }
 
 PCCD_API int pccd_result_feature_count(const pccd_result *res, size_t *count) {
-  return guard(__func__, [&] {
-    require_solved(res, "res");
-    require(count, "count");
-    *count = res->r.features.size();
-    return PCCD_OK;
-  });
+  return pccd::api::getter<true>(__func__, res, "res", count, "count",
+                                [&] { return res->r.features.size(); });
 }
 
 PCCD_API int pccd_result_feature(const pccd_result *res, size_t i, int *kind, size_t points[4]) {

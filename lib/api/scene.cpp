@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "api/body_handle.h"
+#include "api/config.h"
 #include "api/guard.h"
 #include "api/handles.h"
 #include "api/motion_handle.h"
@@ -35,12 +36,8 @@ PCCD_API int pccd_scene_add(pccd_scene *s, const pccd_body *body, const pccd_mot
 }
 
 PCCD_API int pccd_scene_body_count(const pccd_scene *s, size_t *count) {
-  return guard(__func__, [&] {
-    require(s, "s");
-    require(count, "count");
-    *count = s->bodies.size();
-    return PCCD_OK;
-  });
+  return pccd::api::getter(__func__, s, "s", count, "count",
+                                [&] { return s->bodies.size(); });
 }
 
 PCCD_API int pccd_scene_set_pair_check(pccd_scene *s, size_t i, size_t j, int check) {
@@ -79,15 +76,15 @@ PCCD_API int pccd_pair_solve(const pccd_body *a, const pccd_motion *ma, const pc
     require(b, "b");
     require(rep, "rep");
     rep->solved = false;
-    const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    const pccd::api::Call_config call = pccd::api::read_scene_call(cfg, opt, false);
+    const pccd::api::Call_limits &limits = call.limits;
     if (limits.max_number_bits) {  // named as the scene's two bodies, as the solve names
       limits.check(pccd::api::biggest_of(a, ma), "bodies[0].");  // a motion's error
       limits.check(pccd::api::biggest_of(b, mb), "bodies[1].");
     }
     const pccd::api::Call_budget budget(limits.work);
     std::vector<pccd::scene::Scene_body> bodies{pccd::api::scene_body(a, ma), pccd::api::scene_body(b, mb)};
-    rep->r = pccd::scene::solve_scene(bodies, so);
+    rep->r = pccd::scene::solve_scene(bodies, call.scene_options());
     rep->solved = true;
     return PCCD_OK;
   });
@@ -99,12 +96,12 @@ PCCD_API int pccd_scene_solve(const pccd_scene *s, const pccd_config *cfg,
     require(s, "s");
     require(rep, "rep");
     rep->solved = false;  // a failed call leaves no earlier answer readable
-    const pccd::scene::Scene_options so = pccd::api::read_scene_options(cfg, opt);
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
+    const pccd::api::Call_config call = pccd::api::read_scene_call(cfg, opt, false);
+    const pccd::api::Call_limits &limits = call.limits;
     for (size_t k = 0; k < s->biggest.size(); ++k)
       limits.check(s->biggest[k], pccd::api::place("bodies", {k}) + ".");
     const pccd::api::Call_budget budget(limits.work);
-    rep->r = pccd::scene::solve_scene(s->bodies, so, s->skipped);
+    rep->r = pccd::scene::solve_scene(s->bodies, call.scene_options(), s->skipped);
     rep->solved = true;
     return PCCD_OK;
   });
@@ -127,34 +124,6 @@ scene::Scene_body scene_body(const pccd_body *body, const pccd_motion *motion) {
   b.prepared = motion_data(motion);
   if (motion && !b.prepared) b.motion = motion->m;  // invalid: the solve reports it
   return b;
-}
-
-scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt) {
-  scene::Scene_options so;
-  so.solve = read_config(cfg);
-
-  if (!opt) return so;
-  if (opt->struct_size != sizeof(pccd_scene_options))
-    throw Input_error("opt.struct_size: " + std::to_string(opt->struct_size) +
-                      " is not sizeof(pccd_scene_options) (initialise with pccd_scene_options_init)");
-  if (opt->threads < 1 || opt->threads > 1024)
-    throw Input_error("opt.threads: " + std::to_string(opt->threads) + " is outside 1..1024");
-  if (opt->all_contacts != 0 && opt->all_contacts != 1)
-    throw Input_error("opt.all_contacts: " + std::to_string(opt->all_contacts) + " is not 0 or 1");
-  if (opt->broad_phase < PCCD_BROAD_BOXES || opt->broad_phase > PCCD_BROAD_BVH)
-    throw Input_error("opt.broad_phase: " + std::to_string(opt->broad_phase) +
-                      " is not PCCD_BROAD_BOXES (0), PCCD_BROAD_BRUTE (1), PCCD_BROAD_RANGE (2), "
-                      "PCCD_BROAD_AUTO (3) or PCCD_BROAD_BVH (4)");
-  so.threads = opt->threads;
-  so.all_contacts = opt->all_contacts == 1;
-  so.broad_phase = static_cast<scene::Broad_phase>(opt->broad_phase);  // constants.cpp
-  // With a minimum distance the range phase has no delta (its linearized contact
-  // conditions would need the distance systems; scene/broad_phase.h); auto takes bvh.
-  if (sgn(so.solve.delta) > 0 && so.broad_phase == scene::Broad_phase::range)
-    throw Input_error("opt.broad_phase: " + std::to_string(opt->broad_phase) +
-                      " (PCCD_BROAD_RANGE) does not take config.min_distance > 0; use "
-                      "PCCD_BROAD_AUTO, PCCD_BROAD_BVH, PCCD_BROAD_BOXES or PCCD_BROAD_BRUTE");
-  return so;
 }
 
 }  // namespace pccd::api

@@ -26,15 +26,11 @@ struct pccd_report {
 
 namespace pccd::api {
 
-// The scene options of pccd_scene_solve and pccd_index_query (NULL: defaults);
-// Input_error naming the bad field.
 // The scene body of a body handle on a motion handle (NULL: stationary), with the
 // motion's kept data (api/motion_handle.h).
 scene::Scene_body scene_body(const pccd_body *body, const pccd_motion *motion);
 // The largest number of a body and its motion (config.max_number_bits), placed as
 // "vertices[1][2]" or "motion.rotation[0][1]"; kept by both, so no scan per call.
 Biggest_number biggest_of(const pccd_body *body, const pccd_motion *motion);
-
-scene::Scene_options read_scene_options(const pccd_config *cfg, const pccd_scene_options *opt);
 
 }  // namespace pccd::api

@@ -1,12 +1,12 @@
-// pccd_config_init, pccd_query_solve, and reading a pccd_config.
+// pccd_config_init and pccd_query_solve (the config is read by api/config.h).
 #include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <string>
 
+#include "api/config.h"
 #include "api/guard.h"
 #include "api/handles.h"
-#include "api/limits.h"
 
 using pccd::api::guard;
 using pccd::api::place;
@@ -16,71 +16,6 @@ using pccd::arith::Interval;
 using pccd::arith::Rational;
 
 namespace pccd::api {
-
-namespace {
-
-// A number text of the config and its value, as last parsed on this thread: callers
-// pass the same config call after call, so each text is parsed once, not per query.
-struct Number_cache {
-  std::string text;
-  Rational value;
-  bool valid = false;
-};
-thread_local Number_cache tl_tolerance, tl_min_distance;
-
-// The value of `text` (the config field `field`), parsed and checked by `check` (which
-// throws Input_error) only when it differs from the cached text.
-template <class Check>
-const Rational &cached_number(Number_cache &c, const char *text, const char *field, Check check) {
-  if (c.valid && std::strcmp(text, c.text.c_str()) == 0) return c.value;
-  c.valid = false;
-  Rational x = arith::parse_rational(text, field);
-  check(x);
-  c.text = text;
-  c.value = std::move(x);
-  c.valid = true;
-  return c.value;
-}
-
-// Validates cfg (NULL: defaults); the parsed tolerance when cfg has one, else nullptr.
-const Rational *checked_tolerance(const pccd_config *cfg) {
-  if (!cfg) return nullptr;
-  // The layout before the work limits is accepted too (polyccd.h, pccd_config).
-  if (cfg->struct_size != sizeof(pccd_config) && cfg->struct_size != offsetof(pccd_config, max_seconds))
-    throw Input_error("config.struct_size: " + std::to_string(cfg->struct_size) + " is not " +
-                      std::to_string(sizeof(pccd_config)) + " (initialise with pccd_config_init)");
-  if (!cfg->time_tolerance) return nullptr;
-  return &cached_number(tl_tolerance, cfg->time_tolerance, "config.time_tolerance",
-                        [&](const Rational &tol) {
-                          if (sgn(tol) <= 0)
-                            throw Input_error(std::string("config.time_tolerance: \"") +
-                                              cfg->time_tolerance + "\" must be greater than 0");
-                        });
-}
-
-}  // namespace
-
-void checked_config(const pccd_config *cfg) { checked_tolerance(cfg); }
-
-bool has_min_distance(const pccd_config *cfg) {
-  return cfg && cfg->struct_size == sizeof(pccd_config) && cfg->min_distance;
-}
-
-pred::Solve_options read_config(const pccd_config *cfg) {
-  pred::Solve_options o;
-  if (const Rational *tol = checked_tolerance(cfg)) o.tol = *tol;
-  if (!cfg) return o;
-  o.want_time = cfg->want_time != 0;
-  o.want_exact = cfg->want_exact != 0;
-  if (has_min_distance(cfg))
-    o.delta = cached_number(tl_min_distance, cfg->min_distance, "config.min_distance",
-                            [&](const Rational &d) {
-                              if (sgn(d) < 0)
-                                throw Input_error(std::string("config.min_distance: \"") +
-                                                  cfg->min_distance + "\" must be >= 0");
-                            });
-  return o;
-}
 
 static void check_radii(const pccd_query &q) {
   if (q.kind != PCCD_SPHERE_SPHERE) return;
@@ -145,11 +80,10 @@ PCCD_API int pccd_query_solve(const pccd_query *q, const pccd_config *cfg, pccd_
     res->solved = false;
     res->r = pccd::pred::Contact_result();
     require(q, "q");
-    pccd::pred::Solve_options opt = pccd::api::read_config(cfg);
-    const pccd::api::Call_limits limits = pccd::api::read_limits(cfg);
-    limits.check(pccd::api::biggest_in(*q));
-    const pccd::api::Call_budget budget(limits.work);
-    res->r = pccd::api::solve_query(*q, opt);
+    const pccd::api::Call_config call = pccd::api::read_call(cfg);
+    call.limits.check(pccd::api::biggest_in(*q));
+    const pccd::api::Call_budget budget(call.limits.work);
+    res->r = pccd::api::solve_query(*q, *call.solve);
     res->solved = true;
     return PCCD_OK;
   });

@@ -8,7 +8,19 @@
 
 namespace pccd::boxes {
 
+using enclose::boxes_meet;
+using enclose::empty_box;
+using enclose::enclose_pose;
+using enclose::frame_box;
+using enclose::grow;
+using enclose::hull;
+using enclose::point_box;
+using enclose::Pose_piece;
+using enclose::spread_stalled;
+using enclose::whole_pose;
 using narrow::Candidate_sink;
+using narrow::Moving_body;
+using narrow::Prim_pair;
 using narrow::Pair_ctx;
 using narrow::Search_stats;
 
@@ -20,7 +32,7 @@ constexpr double kLeaf_pairs = 64;   // |active A| * |active B| at most: interse
 // Boxes of one side's points, cached per piece by a stamp (meshes: each vertex is
 // shared by several triangles and edges; a ball's box is used once per piece, so sphere
 // sets keep no cache and allocate nothing per query). Side A's point boxes are grown by
-// the minimum separation's reach (boxes.h, reach_of; 0 without one), and so are its
+// the minimum separation's reach (enclose/enclose.h, reach_of; 0 without one), and so are its
 // edge, triangle and ball boxes, which are hulls of them or grow them further.
 struct Side {
   const Moving_body *b = nullptr;

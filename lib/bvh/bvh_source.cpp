@@ -4,13 +4,13 @@
 
 #include <algorithm>
 
-#include "boxes/boxes.h"
+#include "enclose/enclose.h"
 #include "bvh/hierarchy.h"
 
 namespace pccd::bvh {
 
-using boxes::Box;
-using boxes::Pose_piece;
+using enclose::Box;
+using enclose::Pose_piece;
 using narrow::Candidate_sink;
 using narrow::Moving_body;
 using narrow::Pair_ctx;
@@ -41,15 +41,15 @@ class Bvh_source final : public narrow::Candidate_source {
 
   // The triangle pairs whose boxes meet at t = 0. None when the root boxes miss over
   // all of [0, 1] (they hold the bodies at t = 0 too): a far-apart pair costs the two
-  // enclosures of the whole piece (boxes::whole_pose: once per body, for all its pairs
+  // enclosures of the whole piece (enclose::whole_pose: once per body, for all its pairs
   // and for run()) and one box test. The static
   // test asks for triangles sharing a point whatever the minimum separation, so its
   // boxes are not grown (pairs within delta at t = 0 are run()'s, solved with delta).
   std::vector<Prim_pair> static_candidates(util::Thread_pool &pool) override {
-    const Pose_piece whole[2] = {boxes::whole_pose(ctx_.side(0)), boxes::whole_pose(ctx_.side(1))};
+    const Pose_piece whole[2] = {enclose::whole_pose(ctx_.side(0)), enclose::whole_pose(ctx_.side(1))};
     if (!roots_meet(whole, 0.0)) return {};
-    const Pose_piece pose[2] = {boxes::enclose_pose(ctx_.side(0), 0.0, 0.0),
-                                boxes::enclose_pose(ctx_.side(1), 0.0, 0.0)};
+    const Pose_piece pose[2] = {enclose::enclose_pose(ctx_.side(0), 0.0, 0.0),
+                                enclose::enclose_pose(ctx_.side(1), 0.0, 0.0)};
     std::vector<Node_pair> leaves, wait;
     traverse(pose, true, 0.0, 0.0, {{0, 0}}, leaves, wait, pool);
     std::vector<Prim_pair> cand;
@@ -73,7 +73,7 @@ class Bvh_source final : public narrow::Candidate_source {
   Candidate_sink *sink_ = nullptr;
   Search_stats *stats_ = nullptr;
   util::Thread_pool *pool_ = nullptr;
-  // Side A's node, triangle, vertex and edge boxes grow by reach_ (boxes.h, reach_of:
+  // Side A's node, triangle, vertex and edge boxes grow by reach_ (enclose/enclose.h, reach_of:
   // a double >= the minimum separation delta, 0 without one) in run(), so every
   // feature pair within delta at t keeps meeting boxes, with its ancestors', on every
   // piece holding t (bvh_source.h, "Coverage").
@@ -81,14 +81,14 @@ class Bvh_source final : public narrow::Candidate_source {
   double feature_ = 0;  // the bodies' typical feature size (final-piece test)
 
   bool roots_meet(const Pose_piece pose[2], double reach) const {
-    return boxes::boxes_meet(node_box(0, pose[0], 0, reach), node_box(1, pose[1], 0, 0.0));
+    return enclose::boxes_meet(node_box(0, pose[0], 0, reach), node_box(1, pose[1], 0, 0.0));
   }
 
   // The world box of node k of side s over the piece, grown by reach.
   Box node_box(int s, const Pose_piece &pose, uint32_t k, double reach) const {
     const Node &n = H_[s]->nodes[k];
-    const Box b = boxes::frame_box(pose, n.c, n.h);
-    return reach > 0 ? boxes::grow(b, reach) : b;
+    const Box b = enclose::frame_box(pose, n.c, n.h);
+    return reach > 0 ? enclose::grow(b, reach) : b;
   }
 
   // Calls f(ea, eb) for each element pair of the leaf pair p.
@@ -106,7 +106,7 @@ class Bvh_source final : public narrow::Candidate_source {
             size_t n, Step_out &out) const {
     for (size_t i = 0; i < n; ++i) {
       const uint32_t x = p[i].x, y = p[i].y;
-      if (!boxes::boxes_meet(node_box(0, pose[0], x, reach), node_box(1, pose[1], y, 0.0))) continue;
+      if (!enclose::boxes_meet(node_box(0, pose[0], x, reach), node_box(1, pose[1], y, 0.0))) continue;
       const Node &nx = H_[0]->nodes[x], &ny = H_[1]->nodes[y];
       if (nx.leaf() && ny.leaf()) {
         out.leaves.push_back(p[i]);
@@ -158,9 +158,9 @@ class Bvh_source final : public narrow::Candidate_source {
     ++stats_->pieces;
     Pose_piece pose[2];
     for (int s = 0; s < 2; ++s)
-      pose[s] = depth == 0 ? boxes::whole_pose(ctx_.side(s)) : boxes::enclose_pose(ctx_.side(s), a, b);
+      pose[s] = depth == 0 ? enclose::whole_pose(ctx_.side(s)) : enclose::enclose_pose(ctx_.side(s), a, b);
     const double spread = std::max(pose[0].spread, pose[1].spread);
-    bool final = depth >= kMax_depth || spread <= feature_ || boxes::spread_stalled(depth, spread, parent_spread);
+    bool final = depth >= kMax_depth || spread <= feature_ || enclose::spread_stalled(depth, spread, parent_spread);
     if (!final && front.size() <= kLeaf_pairs) {
       final = true;
       for (const Node_pair &p : front) final = final && H_[0]->nodes[p.x].leaf() && H_[1]->nodes[p.y].leaf();
@@ -210,22 +210,22 @@ class Bvh_source final : public narrow::Candidate_source {
     for (int s = 0; s < 2; ++s) {
       const auto &t = side[s]->mesh->triangles()[tri[s]];
       for (int k = 0; k < 3; ++k) {
-        vb[s][k] = boxes::point_box(pose[s], side[s]->data->pts[t[k]], side[s]->data->pt_err);
-        if (s == 0 && reach_ > 0) vb[s][k] = boxes::grow(vb[s][k], reach_);  // A's grow
+        vb[s][k] = enclose::point_box(pose[s], side[s]->data->pts[t[k]], side[s]->data->pt_err);
+        if (s == 0 && reach_ > 0) vb[s][k] = enclose::grow(vb[s][k], reach_);  // A's grow
       }
-      tb[s] = boxes::hull(boxes::hull(vb[s][0], vb[s][1]), vb[s][2]);
+      tb[s] = enclose::hull(enclose::hull(vb[s][0], vb[s][1]), vb[s][2]);
     }
     const auto &TA = A.mesh->triangles()[ea], &TB = B.mesh->triangles()[eb];
     for (int k = 0; k < 3; ++k) {
-      if (boxes::boxes_meet(vb[0][k], tb[1])) out.push_back({narrow::VF, TA[k], eb});
-      if (boxes::boxes_meet(tb[0], vb[1][k])) out.push_back({narrow::FV, ea, TB[k]});
+      if (enclose::boxes_meet(vb[0][k], tb[1])) out.push_back({narrow::VF, TA[k], eb});
+      if (enclose::boxes_meet(tb[0], vb[1][k])) out.push_back({narrow::FV, ea, TB[k]});
     }
     const auto &EA = A.data->tri_edges[ea], &EB = B.data->tri_edges[eb];
     for (int i = 0; i < 3; ++i) {
       if (EA[i] < 0) continue;
-      const Box ba = boxes::hull(vb[0][i], vb[0][(i + 1) % 3]);
+      const Box ba = enclose::hull(vb[0][i], vb[0][(i + 1) % 3]);
       for (int j = 0; j < 3; ++j)
-        if (EB[j] >= 0 && boxes::boxes_meet(ba, boxes::hull(vb[1][j], vb[1][(j + 1) % 3])))
+        if (EB[j] >= 0 && enclose::boxes_meet(ba, enclose::hull(vb[1][j], vb[1][(j + 1) % 3])))
           out.push_back({narrow::EE, uint32_t(EA[i]), uint32_t(EB[j])});
     }
   }

@@ -3,15 +3,15 @@
 //
 // [0, 1] is split recursively into dyadic pieces, earlier half first (so pieces come in
 // time order; a piece whose start the sink prunes is skipped with all later ones). On a
-// piece [a, b] each body's motion is enclosed (boxes/boxes.h: certified interval bounds
+// piece [a, b] each body's motion is enclosed (enclose/enclose.h: certified interval bounds
 // of R(t) and o(t) over [a, b], Bernstein hulls, a derived rounding-error bound), and a
 // node's box [c - h, c + h] is mapped through it to a world box that holds the node's
-// elements at every t in [a, b] (boxes::frame_box). A front of node pairs is carried
+// elements at every t in [a, b] (enclose::frame_box). A front of node pairs is carried
 // from a piece to its halves, starting with the two roots on [0, 1]:
 //  - a pair whose world boxes miss is dropped, with both subtrees, for this piece and
 //    every sub-piece (no element pair below it meets on [a, b]);
 //  - otherwise the larger node (by body-frame size) is split while it is larger than the
-//    motion's spread on the piece (boxes::Pose_piece::spread: what the motion adds to
+//    motion's spread on the piece (enclose::Pose_piece::spread: what the motion adds to
 //    a box); a pair of smaller nodes waits in the front for the halves of the piece,
 //    on which the spread is smaller;
 //  - two leaves stay in the front too, until the piece is final: its spread is at most
@@ -27,7 +27,7 @@
 // their boxes over [0, 1] miss, which also holds at t = 0, so the static candidates
 // (the triangle pairs meeting at t = 0) are none without a traversal.
 // Minimum separation delta > 0 (pccd_config.min_distance): every box of side A (node,
-// triangle, vertex, edge) is grown by reach, a double >= delta (boxes.h, reach_of), in
+// triangle, vertex, edge) is grown by reach, a double >= delta (enclose/enclose.h, reach_of), in
 // run(); a feature pair within distance delta at t has points at most delta apart on
 // every axis (L_inf <= L_2), so its grown boxes, and those of its elements and their
 // ancestors, meet on every piece holding t, and the argument above holds for "within
@@ -46,7 +46,7 @@
 
 namespace pccd::bvh {
 
-// reach: the growth of side A's boxes for a minimum separation (boxes::reach_of), 0
+// reach: the growth of side A's boxes for a minimum separation (enclose::reach_of), 0
 // without one.
 std::unique_ptr<narrow::Candidate_source> bvh_source(const narrow::Pair_ctx &ctx, double reach = 0);
 

@@ -25,6 +25,11 @@ std::string text(double x) {
 
 std::string where(const char *name, size_t k) { return std::string(name) + "[" + std::to_string(k) + "]"; }
 
+// The place of link k's joint value q0 / q1 in errors (Chain::set_value_place).
+std::string where(const char *name, const Chain_link &L, size_t k) {
+  return L.value_place.empty() ? where(name, k) : name + L.value_place;
+}
+
 Rational exact(double x, const std::string &place) { return arith::rational_from_double(x, place); }
 
 Poly_q line(const Rational &a, const Rational &b) { return Poly_q(std::vector<Rational>{a, b - a}); }
@@ -37,11 +42,11 @@ struct Ends {
 };
 
 Ends joint_ends(const Chain_link &L, size_t k, double q0, double q1) {
-  const Rational a = exact(q0, where("q0", k)), b = exact(q1, where("q1", k));
+  const Rational a = exact(q0, where("q0", L, k)), b = exact(q1, where("q1", L, k));
   Ends e;
   if (L.joint == Joint_type::prismatic) {
-    e.e0 = exact(q0 / L.axis_norm, where("q0", k));
-    e.e1 = exact(q1 / L.axis_norm, where("q1", k));
+    e.e0 = exact(q0 / L.axis_norm, where("q0", L, k));
+    e.e1 = exact(q1 / L.axis_norm, where("q1", L, k));
     return e;
   }
   e.c0 = exact(std::cos(q0 / 2), where("q0", k));  // finite: q0, q1 are, and |a| ~ 1
@@ -52,12 +57,12 @@ Ends joint_ends(const Chain_link &L, size_t k, double q0, double q1) {
   const int sd = sgn(d);
   const Rational ad = sd < 0 ? Rational(-d) : d;
   if (!(ad < Rational(kTwo_pi)))
-    throw Input_error(where("q1", k) + ": the revolute segment from " + text(q0) + " to " + text(q1) +
+    throw Input_error(where("q1", L, k) + ": the revolute segment from " + text(q0) + " to " + text(q1) +
                       " turns by 2 pi or more; split it into shorter segments");
   // The sign of sin of the swept half-angle is that of c0 s1 - s0 c1 (|a| > 0).
   const Rational cross = e.c0 * e.s1 - e.s0 * e.c1;
   if (Rational(kPi) < ad && sgn(cross) != sd)
-    throw Input_error(where("q1", k) + ": the revolute segment from " + text(q0) + " to " + text(q1) +
+    throw Input_error(where("q1", L, k) + ": the revolute segment from " + text(q0) + " to " + text(q1) +
                       " is so close to a full turn that its rounded half-angle endpoints "
                       "would be interpolated the other way round; split it");
   const Rational dot = e.c0 * e.c1 + e.s0 * e.s1 * L.axis[0] * L.axis[0] +

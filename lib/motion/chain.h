@@ -48,6 +48,7 @@ struct Chain_link {
   double axis_norm = 1;              // the double nearest |axis| (exactly 1 for a unit axis)
   Quat_q origin_q{};                 // exact, from the roll-pitch-yaw doubles
   Vec3_q origin_p{};
+  std::string value_place;           // errors name the joint value "q0" + this ("": "[k]")
 };
 
 class Chain {
@@ -57,6 +58,9 @@ class Chain {
   size_t add_link(long parent, int joint, const double *axis, const double xyz[3],
                   const double rpy[3]);
   size_t size() const { return links_.size(); }
+  // How errors about link k's joint value name it after "q0" / "q1" (default "[k]"): a
+  // caller whose values are numbered otherwise says so, e.g. "[2] (elbow)".
+  void set_value_place(size_t k, std::string place) { links_.at(k).value_place = std::move(place); }
   const Chain_link &link(size_t k) const { return links_[k]; }
 
   // The world motion of every link over the segment q0 -> q1 (q[k]: the value of link

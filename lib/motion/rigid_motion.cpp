@@ -113,7 +113,7 @@ Vanishing Rigid_motion::vanishing() const {
   poly::System<Rational> s;
   s.f = g;
   const std::vector<poly::System<Rational>> sys{s};
-  poly::Search_result<Rational> e = poly::earliest_contact(sys, poly::Search_options());
+  poly::Search_result<Rational> e = poly::earliest_contact(sys, poly::Earliest_options());
   if (!e.found) throw arith::Internal_error("vanishing: a counted root was not found");
   v.lo = e.lo;
   v.hi = e.hi;

@@ -6,7 +6,9 @@
 // degree <= 3; setting one on a motion keeps its rotation (Rigid_motion::set_translation).
 #pragma once
 #include <array>
+#include <string>
 
+#include "motion/quaternion.h"
 #include "motion/rigid_motion.h"
 
 namespace pccd::motion {
@@ -41,5 +43,23 @@ Rigid_motion axis_rotation(const Vec3_q &axis, const Vec3_q &center, const arith
 // itself when axis is a unit vector).
 Rigid_motion screw(const Vec3_q &axis, const Vec3_q &center, const arith::Rational &tau0,
                    const arith::Rational &tau1, const arith::Rational &advance);
+
+// The motion between two poses: the body origin moves linearly, o(t) = (1 - t) p0 + t p1,
+// and the rotation quaternion is interpolated linearly, r(t) = (1 - t) q0 + t q1', where
+// q1' = q1 or -q1 (the same rotation), the one with q0 . q1' >= 0, so that r(t) never
+// vanishes and the body turns the shorter way round (the rotation of r(t) / |r(t)| runs
+// along the great arc from q0 to q1', not at a constant angular speed). At t = 0 the pose
+// is exactly (R(q0), p0), at t = 1 exactly (R(q1), p1). Input_error "q0: ..." or "q1: ..."
+// when a quaternion is zero.
+Rigid_motion pose_between(const Vec3_q &p0, const Quat_q &q0, const Vec3_q &p1, const Quat_q &q1);
+
+// The unit quaternion (w, x, y, z) of the 3x3 rotation block R (row-major) of a pose
+// matrix, computed in doubles (Shepperd's method: the largest of w, x, y, z from the
+// trace and the diagonal, the others from sums and differences of the off-diagonal
+// entries), and the check that R is a rotation: Input_error naming `name` when an entry
+// is not finite, when some entry of R^T R - I exceeds 1e-6 in magnitude, or when
+// det R <= 0 (a reflection). The exact rotation R(q) of the returned doubles differs
+// from R by about the rounding of this computation (1e-15 for an orthonormal R).
+Quat_q quaternion_of_rotation(const double R[9], const std::string &name);
 
 }  // namespace pccd::motion

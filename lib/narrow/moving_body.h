@@ -108,7 +108,7 @@ struct Moving_body {
   std::shared_ptr<const motion::Sphere_body> spheres;
   std::shared_ptr<const Motion_data> mo;             // never null
   // What later layers derive from the body on this motion, once for all the pairs it
-  // is in (the broad phases' enclosure of its pose over [0, 1], boxes::whole_pose);
+  // is in (the broad phases' enclosure of its pose over [0, 1], enclose::whole_pose);
   // made by prepare_body, shared by copies (same body, same motion).
   std::shared_ptr<const Attachments> derived;
 

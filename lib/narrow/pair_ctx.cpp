@@ -178,7 +178,7 @@ pred::Contact_result Pair_ctx::solve(const Prim_pair &p, const pred::Solve_optio
   // systems as delta^2 D^2 (pred/query_systems.h), the trajectories being D times the
   // positions. Without D a body whose motion has W != 1 (a rotation) was within
   // delta / D, not delta (test_min_distance.py, test_delta_scaled_by_the_motion_denominator).
-  const bool scaled = sgn(opt.delta) > 0;
+  const bool scaled = opt.min_distance();
   return pred::solve(query<Interval>(p, scaled), [&] { return query<Rational>(p, scaled); }, opt);
 }
 

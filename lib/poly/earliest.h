@@ -17,7 +17,7 @@
 
 namespace pccd::poly {
 
-struct Search_options {
+struct Earliest_options {
   Rational tol = Rational(1, 1000000000000);  // 1e-12
   bool want_time = true;
   // Only contacts at times <= until matter: the search may answer "none" when the first
@@ -77,7 +77,7 @@ template <> inline bool wider_than(const Interval &lo, const Interval &hi, const
 
 template <class NT>
 Search_result<NT> earliest_contact(const std::vector<System<NT>> &sys,
-                                   const Search_options &opt,
+                                   const Earliest_options &opt,
                                    Search_state<NT> *progress = nullptr,
                                    const Search_state<NT> *resume = nullptr) {
   using K = typename System<NT>::Kind;

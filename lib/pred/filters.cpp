@@ -1,6 +1,6 @@
 #include <array>
 
-#include "pred/query_systems.h"
+#include "pred/filters.h"
 
 namespace pccd::pred {
 

@@ -229,9 +229,8 @@ bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_b
   return single_root_bracket(f, c, ta, tb) && apart(kind, sides_on(kind, p0, p1, Interval(ta, tb)));
 }
 
-bool crossing_hit(int kind, const double *p0, const double *p1, const Solve_options &opt,
-                  Contact_result &out) {
-  const Cubic_bernstein f = coplanarity_cubic(kind, p0, p1);  // not ok for other kinds
+bool crossing_hit(int kind, const double *p0, const double *p1, const Cubic_bernstein &f,
+                  const Solve_options &opt, Contact_result &out) {
   Interval c[4];
   double ta, tb;
   if (!f.ok || !single_root_bracket(f, c, ta, tb) || !inside(kind, sides_on(kind, p0, p1, Interval(ta, tb))))

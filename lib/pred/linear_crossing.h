@@ -41,7 +41,8 @@ namespace pccd::pred {
 // kind: VERTEX_FACE or EDGE_EDGE; f: the query's coplanarity_cubic (linear_filter.h). True only when the proof above holds.
 bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_bernstein &f);
 
-// kind: VERTEX_FACE or EDGE_EDGE; p0, p1: finite doubles (linear_filter.h). True and the
+// kind: VERTEX_FACE or EDGE_EDGE; p0, p1: finite doubles (linear_filter.h); f: the
+// query's coplanarity_cubic (not ok: false). True and the
 // staged solver's answer in out (collides, the feature, stage interval, exact false) when
 // the certificate holds and, with a time, when every step below certainly decides:
 //  - without a time: the enclosure [0, 1];
@@ -49,7 +50,7 @@ bool crossing_misses(int kind, const double *p0, const double *p1, const Cubic_b
 //    each midpoint, so the same enclosure; with want_exact, only when r is proved
 //    irrational by the solver's modular test run on f mod small primes from the doubles
 //    (linear_crossing.cpp), so the solver would stop there too.
-bool crossing_hit(int kind, const double *p0, const double *p1, const Solve_options &opt,
-                  Contact_result &out);
+bool crossing_hit(int kind, const double *p0, const double *p1, const Cubic_bernstein &f,
+                  const Solve_options &opt, Contact_result &out);
 
 }  // namespace pccd::pred

@@ -34,7 +34,6 @@
 #include <cmath>
 
 #include "pred/features.h"
-#include "pred/linear_crossing.h"
 
 namespace pccd::pred {
 
@@ -85,11 +84,6 @@ bool all_certain(const double (&v)[N], const double (&b)[N], int sign) {
 template <class R>
 bool one_strict_sign(const R &r) {
   return r.ok && (all_certain(r.value, r.bound, 1) || all_certain(r.value, r.bound, -1));
-}
-
-Linear_verdict cubic_verdict(int kind, const double *p0, const double *p1, const Cubic_bernstein &f) {
-  if (one_strict_sign(f)) return Linear_verdict::no_root;
-  return crossing_misses(kind, p0, p1, f) ? Linear_verdict::misses : Linear_verdict::unknown;
 }
 
 // Disjoint closed boxes of points [0, split) and [split, n) over their positions at
@@ -166,7 +160,8 @@ Cubic_bernstein coplanarity_cubic(int kind, const double *p0, const double *p1) 
   return Cubic_bernstein{};
 }
 
-Linear_verdict linear_filter(int kind, const double *p0, const double *p1) {
+Linear_verdict linear_filter(int kind, const double *p0, const double *p1, Cubic_bernstein &f) {
+  f.ok = false;  // nothing else of f is read unless ok
   auto at = [&](int i) {
     struct Pair {
       const double *x[2];
@@ -177,7 +172,8 @@ Linear_verdict linear_filter(int kind, const double *p0, const double *p1) {
     case VERTEX_FACE:  // v, f0, f1, f2
     case EDGE_EDGE:    // a0, a1, b0, b1
       if (boxes_apart(4, kind == VERTEX_FACE ? 1 : 2, p0, p1)) return Linear_verdict::boxes_apart;
-      return cubic_verdict(kind, p0, p1, coplanarity_cubic(kind, p0, p1));
+      f = coplanarity_cubic(kind, p0, p1);
+      return one_strict_sign(f) ? Linear_verdict::no_root : Linear_verdict::unknown;
     case VERTEX_EDGE: {  // v, e0, e1: a component of (e1 - e0) x (v - e0) never vanishes
       if (boxes_apart(3, 1, p0, p1)) return Linear_verdict::boxes_apart;
       const auto v = at(0), e0 = at(1), e1 = at(2);

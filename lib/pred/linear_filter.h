@@ -11,17 +11,25 @@
 //    coefficients on [0, 1] of one strict sign, so it has no root in [0, 1]. The
 //    coefficients are sums of determinants of point differences, evaluated in doubles
 //    with the error bound derived in linear_filter.cpp.
+// Its second half, a single crossing where the primitives miss (misses), is in
+// linear_crossing.h, which builds on this file (never the other way round);
+// solve_linear.h runs both.
 #pragma once
 
 namespace pccd::pred {
 
 // misses: vertex-face or edge-edge whose coplanarity cubic has one simple root in (0, 1),
-// where the primitives are certainly apart (linear_crossing.h).
+// where the primitives are certainly apart (linear_crossing.h, crossing_misses; given by
+// solve_linear.h's linear_verdict, never by linear_filter).
 enum class Linear_verdict { unknown = 0, boxes_apart = 1, no_root = 2, misses = 3 };
+
+struct Cubic_bernstein;
 
 // kind: VERTEX_FACE, EDGE_EDGE, VERTEX_EDGE or VERTEX_VERTEX (features.h); p0 and p1 hold
 // the kind's points (polyccd.h order), 3 finite doubles each. Other kinds: unknown.
-Linear_verdict linear_filter(int kind, const double *p0, const double *p1);
+// boxes_apart, no_root or unknown; f gets the coplanarity cubic (below) of a vertex-face
+// or edge-edge query whose boxes meet (otherwise f.ok is false).
+Linear_verdict linear_filter(int kind, const double *p0, const double *p1, Cubic_bernstein &f);
 
 // The Bernstein coefficients on [0, 1] of the cubic f(t) = det(a(t), b(t), c(t)) with
 // a(t) = A(t) - O(t), b(t) = B(t) - O(t), c(t) = C(t) - O(t) and each point X(t) moving

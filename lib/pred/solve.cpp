@@ -3,6 +3,7 @@
 #include "poly/earliest.h"
 #include "poly/integer.h"
 #include "poly/rational_root.h"
+#include "pred/filters.h"
 #include "pred/static_contact.h"
 #include "util/work_budget.h"
 
@@ -35,7 +36,7 @@ template <class NT>
 poly::Search_result<NT> search(const Feature_set<NT> &set, const Solve_options &opt,
                                poly::Search_state<NT> *progress = nullptr,
                                const poly::Search_state<NT> *resume = nullptr) {
-  poly::Search_options so;
+  poly::Earliest_options so;
   so.tol = opt.tol;
   so.want_time = opt.want_time;
   so.until = opt.until;
@@ -148,11 +149,6 @@ Query_data<Rational> integral(Query_data<Rational> q) {
   return q;
 }
 
-// True when t*, a root of the polynomial of one of the systems of `active` (the ones
-// touching first), is certainly irrational: each of their exact polynomials, as an
-// integer polynomial, misses a root modulo some small prime, so has no rational root
-// (poly::may_have_rational_root). Builds those systems alone, not the whole set, from
-// the integral query.
 // f certainly has no rational root: its integer form misses a root modulo a small prime.
 bool no_rational_root(const Poly<Rational> &f) {
   return f.degree() >= 1 && !poly::may_have_rational_root(poly::primitive_positive(f));
@@ -171,6 +167,11 @@ void strip_positive(Feature_set<Rational> &set, const Query_data<Rational> &q) {
   }
 }
 
+// True when t*, a root of the polynomial of one of the systems of `active` (the ones
+// touching first), is certainly irrational: each of their exact polynomials, as an
+// integer polynomial, misses a root modulo some small prime, so has no rational root
+// (poly::may_have_rational_root). Builds those systems alone, not the whole set, from
+// the integral query.
 bool first_time_irrational(const Query_data<Rational> &q, const std::vector<Feature> &active) {
   // The face and edge-edge polynomials directly (the common case: their side
   // conditions are not needed here); any other feature through its system.
@@ -236,8 +237,8 @@ Contact_result solve_at(const Query_data<Interval> &iq,
 Contact_result solve(const Query_data<Interval> &iq,
                      const std::function<Query_data<Rational>()> &exact_points,
                      const Solve_options &opt) {
-  if (sgn(opt.delta) == 0) return solve_at(iq, exact_points, opt);
   if (sgn(opt.delta) < 0) throw arith::Internal_error("solve: a negative minimum distance");
+  if (!opt.min_distance()) return solve_at(iq, exact_points, opt);
   const Query_data<Interval> dq = with_delta(iq, arith::enclose(opt.delta));
   return solve_at(dq, [&] { return with_delta(exact_points(), opt.delta); }, opt);
 }

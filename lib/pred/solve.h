@@ -31,6 +31,8 @@ struct Solve_options {
   // it to the query: ball radii grow by delta, point kinds get the systems of
   // pred/delta_systems.h.
   arith::Rational delta = 0;
+  // The one test of "a minimum distance is set" (config.min_distance > 0).
+  bool min_distance() const { return sgn(delta) > 0; }
 };
 
 struct Contact_result {
@@ -40,6 +42,15 @@ struct Contact_result {
   std::vector<Feature> features;
   int stage = STAGE_NONE;  // Stage
 };
+
+// An unsolved, empty result, in place: no allocation when r held an answer before.
+inline void reset(Contact_result &r) {
+  r.collides = r.exact = false;
+  r.lo = 0;
+  r.hi = 0;
+  r.features.clear();
+  r.stage = STAGE_NONE;
+}
 
 // exact_points builds the exact trajectories on demand (only when the interval stages
 // cannot decide); interval.p must enclose them coefficient by coefficient.

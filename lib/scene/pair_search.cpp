@@ -5,33 +5,16 @@
 #include <limits>
 #include <unordered_map>
 
-#include "boxes/box_source.h"
-#include "boxes/boxes.h"
-#include "bvh/bvh_source.h"
-#include "range/range_source.h"
+#include "enclose/enclose.h"
 
 namespace pccd::scene {
-
-std::unique_ptr<narrow::Candidate_source> make_source(Broad_phase p, const Pair_ctx &ctx, int stored,
-                                                      double reach) {
-  switch (p) {
-    case Broad_phase::brute: return narrow::brute_source(ctx);
-    case Broad_phase::range:
-      if (reach != 0) throw arith::Internal_error("make_source: range has no minimum separation");
-      return range::range_source(ctx, stored);
-    case Broad_phase::boxes: return boxes::box_source(ctx, reach);
-    case Broad_phase::bvh: return bvh::bvh_source(ctx, reach);
-    case Broad_phase::automatic: break;
-  }
-  throw arith::Internal_error("make_source: the broad phase is not resolved");
-}
 
 namespace {
 
 class Driver final : public narrow::Candidate_sink {
  public:
   Driver(const Pair_ctx &ctx, const Search_options &opt, Thread_pool &pool, Pair_outcome &out)
-      : ctx_(ctx), opt_(opt), pool_(pool), out_(out), reach_(boxes::reach_of(opt.solve.delta)) {}
+      : ctx_(ctx), opt_(opt), pool_(pool), out_(out), reach_(opt.reach) {}
 
   void run() {
     std::unique_ptr<narrow::Candidate_source> source = make_source(opt_.phase, ctx_, opt_.stored, reach_);
@@ -97,7 +80,7 @@ class Driver final : public narrow::Candidate_sink {
   // A time part [a, b] and the two motions' enclosures over it.
   struct Part {
     double a, b;
-    std::array<boxes::Pose_piece, 2> pose;
+    std::array<enclose::Pose_piece, 2> pose;
   };
   // [a, b] cut into kSub equal parts (exact: pieces and parts are dyadic).
   std::vector<Part> parts(double a, double b) const {
@@ -105,18 +88,18 @@ class Driver final : public narrow::Candidate_sink {
     for (int k = 0; k < kSub; ++k) {
       out[k].a = a + (b - a) * k / kSub;
       out[k].b = k + 1 == kSub ? b : a + (b - a) * (k + 1) / kSub;
-      for (int s = 0; s < 2; ++s) out[k].pose[s] = boxes::enclose_pose(ctx_.side(s), out[k].a, out[k].b);
+      for (int s = 0; s < 2; ++s) out[k].pose[s] = enclose::enclose_pose(ctx_.side(s), out[k].a, out[k].b);
     }
     return out;
   }
   // The first part on which the pair's two feature boxes meet (kSub: none), side A's
-  // grown by the minimum separation's reach (boxes.h, reach_of: features within delta
+  // grown by the minimum separation's reach (enclose/enclose.h, reach_of: features within delta
   // have meeting grown boxes, so the bound stays a lower bound of their contacts).
   int first_meeting(const Prim_pair &p, const std::vector<Part> &part) const {
     for (int k = 0; k < kSub; ++k) {
-      boxes::Box a = boxes::feature_box(ctx_.side(0), 0, p, part[k].pose[0]);
-      if (reach_ > 0) a = boxes::grow(a, reach_);
-      if (boxes::boxes_meet(a, boxes::feature_box(ctx_.side(1), 1, p, part[k].pose[1]))) return k;
+      enclose::Box a = enclose::feature_box(ctx_.side(0), 0, p, part[k].pose[0]);
+      if (reach_ > 0) a = enclose::grow(a, reach_);
+      if (enclose::boxes_meet(a, enclose::feature_box(ctx_.side(1), 1, p, part[k].pose[1]))) return k;
     }
     return kSub;
   }
@@ -125,7 +108,7 @@ class Driver final : public narrow::Candidate_sink {
   const Search_options &opt_;
   Thread_pool &pool_;
   Pair_outcome &out_;
-  const double reach_;  // boxes::reach_of(opt_.solve.delta): 0 without a minimum separation
+  const double reach_;  // opt_.reach: 0 without a minimum separation
   // Per feature pair solved: a time c such that it has no contact in [0, c] (+inf: it
   // touches, with its result kept, or has no contact at all). A pair of a piece [a, b] is
   // solved only for contacts up to min(best, b) (much cheaper for a pair whose boxes

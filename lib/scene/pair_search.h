@@ -7,7 +7,7 @@
 //  - The source's candidates of a piece [a, b] get the start of the first of 8 equal
 //    sub-pieces on which the two features' boxes meet (a lower bound of their contacts
 //    in [a, b]; none: no contact in [a, b], so the pair is left for a later piece; with
-//    a minimum separation delta, side A's box grows by boxes::reach_of(delta), so that
+//    a minimum separation delta, side A's box grows by enclose::reach_of(delta), so that
 //    "contact" reads "within delta"). They
 //    are solved in order of that bound, in batches of 4, 8, ..., 64 pairs; a batch
 //    starts only with pairs whose bound is <= the best upper bound so far, and each pair
@@ -39,6 +39,7 @@ struct Search_options {
   pred::Solve_options solve;
   bool all_contacts = false;  // solve every candidate (no time pruning)
   Broad_phase phase = Broad_phase::boxes;  // resolved (not automatic)
+  double reach = 0;           // enclose::reach_of(solve.delta) (Scene_options::reach)
   int stored = -1;            // range: the side (0, 1) held in the trees; -1: the larger
 };
 

@@ -56,7 +56,9 @@ Moving_body prepare_body(const Scene_body &b) {
 
 Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt,
                          const Pair_set &skipped) {
-  if (bodies.size() < 2) throw arith::Input_error("bodies: a scene needs at least 2 bodies");
+  if (bodies.size() < 2)  // the one check (Python converts and raises this message)
+    throw arith::Input_error("bodies: a scene needs at least 2 bodies, got " +
+                             std::to_string(bodies.size()));
   std::vector<Moving_body> mb;
   mb.reserve(bodies.size());
   for (size_t k = 0; k < bodies.size(); ++k) {
@@ -82,7 +84,8 @@ Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
   Search_options so;
   so.solve = opt.solve;
   so.all_contacts = opt.all_contacts;
-  so.phase = resolve(opt.broad_phase, stored >= 0, sgn(opt.solve.delta) > 0);
+  so.phase = opt.broad_phase;
+  so.reach = opt.reach;
   so.stored = stored;
 
   std::vector<std::unique_ptr<Pair_work>> work;

@@ -26,11 +26,13 @@ struct Scene_body {
 // invalid).
 Moving_body prepare_body(const Scene_body &b);
 
+// Read once by the api (api/config.h, Call_config::scene_options).
 struct Scene_options {
   pred::Solve_options solve;
   bool all_contacts = false;
-  Broad_phase broad_phase = Broad_phase::automatic;
+  Broad_phase broad_phase = Broad_phase::bvh;  // resolved (resolve(), broad_phase.h)
   unsigned threads = 1;
+  double reach = 0;  // enclose::reach_of(solve.delta): 0 without a minimum separation
 };
 
 struct Contact_report {

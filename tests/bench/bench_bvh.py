@@ -60,132 +60,23 @@ import os
 import platform
 import sys
 import time
-from fractions import Fraction
 from pathlib import Path
 
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-import bench_bodies as BB  # noqa: E402  (molecules, FCL requests, timing, tables)
+import bench_report as BR  # noqa: E402  (machine, versions, tables, formats)
+import bodies_cases as BC  # noqa: E402  (the molecules of bench_bodies.py)
+import bodies_methods as BM  # noqa: E402  (FCL requests, timing)
 
 MESHES = {"1k": "helmet.off", "5k": "elephant.off", "20k": "camel.off", "35k": "man.off",
           "75k": "bunny00.off", "89k": "refined_elephant.off"}
 MOLS = {"1k": "mol-1k", "5k": "mol-5k", "30k": "mol-30k"}
 QUICK = ("1k",)
-TAU1 = Fraction(1, 2)  # rotation: tan(angle(1) / 2) = 1/2
 VARIANTS = ("far", "hit", "near", "rot")
 FCL_ROT_MAX_ATOMS = 5000
-
-
-def load_mesh(name):
-    import trimesh
-    from polyccd.apps._data import cgal_data_file
-    m = trimesh.load(str(cgal_data_file(name, install=True)), process=False, validate=False)
-    V = np.array(m.vertices, dtype=np.float64)
-    F = np.array(m.faces, dtype=np.int64)
-    V -= (V.min(axis=0) + V.max(axis=0)) / 2
-    ext = float((V.max(axis=0) - V.min(axis=0)).max())
-    V *= 2.0 ** -math.ceil(math.log2(ext))
-    return V, F
-
-
-def quat_z(angle):
-    return np.array([math.cos(angle / 2), 0.0, 0.0, math.sin(angle / 2)])
-
-
-def rotz(angle):
-    c, s = math.cos(angle), math.sin(angle)
-    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
-
-
-THETA1 = -2 * math.atan(float(TAU1))  # about +z (axis -z in polyccd)
-
-
-def fcl_time_of(t):
-    """FCL's (angle-linear) time of polyccd's time t on the rot path."""
-    return 2 * math.atan(float(t) * float(TAU1)) / (2 * math.atan(float(TAU1)))
-
-
-def poses(E, kind, P=None):
-    """(polyccd motion, FCL start Transform args, FCL end Transform args, motion type)."""
-    import polyccd
-    if kind == "rot":
-        off = [1.1 * E, 0.0, 0.0]
-        P = [1.1 * E, E, 0.0] if P is None else P
-        m = polyccd.Motion.axis_rotation([0, 0, -1], P, 0, TAU1).compose([1, 0, 0, 0], off, side="body")
-        Pn = np.array(P)
-        end = (quat_z(THETA1), rotz(THETA1) @ (np.array(off) - Pn) + Pn)
-        return m, (np.array(off),), end, "CCDM_SCREW"
-    x0, x1 = {"far": (3 * E, 2.5 * E), "hit": (1.5 * E, 0.5 * E)}[kind]
-    return (polyccd.Motion.linear([x0, 0, 0], [x1, 0, 0]), (np.array([x0, 0.0, 0.0]),),
-            (np.array([x1, 0.0, 0.0]),), "CCDM_TRANS")
-
-
-def poly_answer(r):
-    fc = r.first_contact
-    key = (r.collides, None if fc is None else (fc.lo, fc.hi, fc.exact))
-    return key, (None if fc is None else float(fc.approx))
-
-
-FAST_NS = 50_000
-
-
-def stop_short(polyccd, E, lo):
-    """The hit translation x0 = 1.5 E -> (x0 - E) stopped 2^-20 E before the x it has at
-    time lo (the hit's first contact, or its first time within delta): a near miss.
-    (motion, FCL start, FCL end, FCL motion type, the end x)."""
-    x0 = 1.5 * E
-    xc = Fraction(x0) - Fraction(lo) * Fraction(E)  # >= x at time lo
-    x1 = float(xc + Fraction(E) * Fraction(1, 2 ** 20))
-    while Fraction(x1) <= xc:
-        x1 = math.nextafter(x1, math.inf)
-    motion = polyccd.Motion.linear([x0, 0, 0], [x1, 0, 0])
-    return motion, (np.array([x0, 0.0, 0.0]),), (np.array([x1, 0.0, 0.0]),), "CCDM_TRANS", x1
-
-
-def time_fcl(fcl, bvh, start, end, reqs, repeat, row):
-    """FCL's continuous collision of the mesh (at rest) against its copy moving from the
-    pose start to end, with each request of reqs ("FCL-CA", "FCL-naive"): row[name] is the
-    time in ns, row[name + " ans"] the answer (collides, time of contact)."""
-    oA = fcl.CollisionObject(bvh, fcl.Transform())
-    oB = fcl.CollisionObject(bvh, fcl.Transform(*start))
-    for name in ("FCL-CA", "FCL-naive"):
-        req = reqs[name]
-
-        def run():
-            res = fcl.ContinuousCollisionResult()
-            fcl.continuousCollide(oA, fcl.Transform(), oB, fcl.Transform(*end), req, res)
-            return res.is_collide, res.time_of_contact
-        row[name], row[name + " ans"] = timed(run, repeat)
-
-
-def timed(fn, repeat):
-    """(min ns per call, first call's output): BB.timed, then for a call under FAST_NS
-    also the per-call mean of `repeat` batches of about 1 ms (see Timing above)."""
-    best, out = BB.timed(fn, repeat)
-    if isinstance(out, Exception) or best >= FAST_NS:
-        return best, out
-    k = max(1, int(1_000_000 // max(best, 1)))
-    for _ in range(max(1, repeat)):
-        t0 = time.perf_counter_ns()
-        for _ in range(k):
-            fn()
-        best = min(best, (time.perf_counter_ns() - t0) / k)
-    return best, out
-
-
-def time_poly(polyccd, bodies, threads, repeat, broad_phase="auto", min_distance=None):
-    ns, out = timed(lambda: polyccd.check(bodies, threads=threads, broad_phase=broad_phase,
-                                          min_distance=min_distance), repeat)
-    if isinstance(out, Exception):
-        raise out
-    return ns, out
-
-
-def fmt(ns):
-    if ns is not None and ns < 100_000:  # under 0.1 ms: to 0.1 us
-        return f"{ns / 1e6:.4f}"
-    return BB.fmt_ms(ns)
+from bvh_timing import (TAU1, THETA1, fcl_time_of, fmt, load_mesh, poly_answer,  # noqa: E402
+                        poses, quat_z, rotz, stop_short, time_fcl, time_poly, timed)
 
 
 def mesh_rows(polyccd, fcl, label, opts, scaling):
@@ -199,7 +90,7 @@ def mesh_rows(polyccd, fcl, label, opts, scaling):
         best_p = t1 - t0 if best_p is None else min(best_p, t1 - t0)
         if fcl:
             t1 = time.perf_counter_ns()
-            bvh = BB.fcl_bvh(fcl, V, F)
+            bvh = BM.fcl_bvh(fcl, V, F)
             best_f = min(best_f or 1 << 62, time.perf_counter_ns() - t1)
     print(f"== mesh {label}: {MESHES[label]}, {len(F)} triangles x 2, E = {E:.6g}; build polyccd "
           f"{fmt(best_p)} ms, FCL BVHModel {fmt(best_f)} ms (ratio "
@@ -207,7 +98,7 @@ def mesh_rows(polyccd, fcl, label, opts, scaling):
     scaling.setdefault(("mesh", "build polyccd"), []).append((len(F), best_p / 1e6))
     if fcl:
         scaling.setdefault(("mesh", "build FCL"), []).append((len(F), best_f / 1e6))
-        reqs = {mt: BB.fcl_requests(fcl, mt) for mt in ("CCDM_TRANS", "CCDM_SCREW")}
+        reqs = {mt: BM.fcl_requests(fcl, mt) for mt in ("CCDM_TRANS", "CCDM_SCREW")}
     rows = []
     A = polyccd.Body(mesh, None, name="A")
     hit_x = None
@@ -285,7 +176,7 @@ def show_delta_rows(rows, delta):
                     "n/a" if fa is None else ("miss" if not fa[0] else f"{fa[1]:.4g}"),
                     r["stats"].get("solved", "?"), r["stats"].get("candidates", "?")])
     print(f"min_distance = {delta}: bvh with delta against bvh without it on the same motions")
-    BB.print_table(["case", "answer at delta", "answer at 0", "bvh+delta ms", "bvh ms", "ratio",
+    BR.print_table(["case", "answer at delta", "answer at 0", "bvh+delta ms", "bvh ms", "ratio",
                     "boxes+delta ms", "same", "FCL-CA ms", "FCL-naive ms", "CA t", "solved",
                     "candidates"], out)
 
@@ -303,7 +194,7 @@ def time_polyccd(polyccd, bodies, row, opts):
 
 
 def mol_rows(polyccd, fcl, label, opts, scaling):
-    case = BB.mol_case(MOLS[label])
+    case = BC.mol_case(MOLS[label])
     C, R, off = case["centers"], case["radii"], case["offset"]
     t0 = time.perf_counter_ns()
     shape = polyccd.Spheres(C, R)
@@ -364,7 +255,7 @@ def fcl_mol(fcl, C, R, shift, offx, ext, name):
         blo, bhi = np.minimum(B0, B1) - sag[:, None], np.maximum(B0, B1) + sag[:, None]
     blo, bhi = blo - R[:, None] - eps, bhi + R[:, None] + eps
     alo, ahi = C - R[:, None] - eps, C + R[:, None] + eps
-    req = BB.fcl_requests(fcl, mt)[name]
+    req = BM.fcl_requests(fcl, mt)[name]
     geoms = [fcl.Sphere(float(r)) for r in R]
     objA = [fcl.CollisionObject(g, fcl.Transform(c)) for g, c in zip(geoms, C)]
     endA = [fcl.Transform(c) for c in C]
@@ -415,7 +306,7 @@ def show_rows(rows, rot_map):
                     f"{r['t1'] / r['FCL-naive']:.3g}" if "FCL-naive" in r else "n/a",
                     f"{pt:.4g}" if pt is not None else "miss", ftxt(fca), ftxt(fnv),
                     r["stats"].get("solved", "?")])
-    BB.print_table(["case", "polyccd answer", "bvh t=1 ms", "bvh t=2 ms", "boxes ms", "same",
+    BR.print_table(["case", "polyccd answer", "bvh t=1 ms", "bvh t=2 ms", "boxes ms", "same",
                     "FCL-CA ms", "FCL-naive ms", "bvh/CA", "bvh/naive", "t (FCL clock)", "CA t", "naive t",
                     "solved"], out)
 
@@ -439,8 +330,8 @@ def main():
             print(f"fcl: not available ({e})")
     print("polyccd hierarchy benchmark: polyccd.check (auto = bvh) vs python-fcl, real CGAL meshes and molecules")
     print(f"date      {datetime.datetime.now(datetime.timezone.utc).isoformat(timespec='seconds')}")
-    print(f"machine   {BB.cpu_model()}, {os.cpu_count()} logical CPUs, {platform.platform()}")
-    print(f"polyccd   {polyccd.__version__}; fcl {BB.pkg_version('python-fcl') if fcl else 'skipped'}; "
+    print(f"machine   {BR.cpu_model()}, {os.cpu_count()} logical CPUs, {platform.platform()}")
+    print(f"polyccd   {polyccd.__version__}; fcl {BR.pkg_version('python-fcl') if fcl else 'skipped'}; "
           f"min over {opts.repeat} round(s), ms per query")
     print()
     scaling = {}
@@ -458,11 +349,11 @@ def main():
     print("fitted exponents (least squares of log ms on log total primitives)")
     srows = []
     for (what, m), pts in sorted(scaling.items()):
-        e = BB.fit_exponent(pts)
+        e = BR.fit_exponent(pts)
         if e is not None:
             srows.append([what, m, f"{e:.2f}", " / ".join(f"{t:.3g}" for _, t in pts)])
     if srows:
-        BB.print_table(["family / case", "method", "exponent", "ms by size"], srows)
+        BR.print_table(["family / case", "method", "exponent", "ms by size"], srows)
     return 0
 
 

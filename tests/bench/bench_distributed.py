@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""Benchmark: polyccd.distributed on an embedded dask LocalCluster of 1 and 2 worker
+"""Benchmark: polyccd.apps.distributed on an embedded dask LocalCluster of 1 and 2 worker
 processes against the serial run, and the overhead of one task.
 
 `make bench` runs this file. A benchmark, not a test: it never asserts on speed, only
 that every distributed answer equals the serial one (else the speed would mean nothing).
 Workloads (one process each, the serial time measured in this process, one thread):
   index    one stored plate, N query balls all falling through it (Index.query_many
-           serially; polyccd.distributed.index_map on the cluster)
+           serially; polyccd.apps.distributed.index_map on the cluster)
   queries  the shared query set, one task per CSV file (polyccd queries; queries_map)
   corpus   every case of corpus/ (polyccd corpus; corpus_map)
 Each distributed time is the best of --repeat runs on a cluster already started
@@ -22,7 +22,7 @@ import time
 from pathlib import Path
 
 import polyccd
-import polyccd.distributed as pd
+import polyccd.apps.distributed as pd
 from polyccd import Body, Index, Mesh, Motion, Spheres
 from polyccd.apps._corpus import check_case, files_under
 from polyccd.apps._queries import run_file
@@ -82,7 +82,7 @@ def main(argv=None):
                    lambda c: list(pd.corpus_map(cases, client=c, progress=False)),
                    lambda a: a),
     }
-    print(f"polyccd {polyccd.__version__}, polyccd.distributed on dask "
+    print(f"polyccd {polyccd.__version__}, polyccd.apps.distributed on dask "
           f"{pd._distributed.__version__}, {os.cpu_count()} CPUs, load "
           f"{os.getloadavg()[0]:.2f}; best of {args.repeat}")
     serial = {name: best(w[1], args.repeat) for name, w in work.items()}

@@ -39,6 +39,9 @@ from pathlib import Path
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bench_report import cpu_model, pkg_version, print_table  # noqa: E402
+
 REPO = Path(__file__).resolve().parents[2]
 KIND_POINTS = {"vertex-face": 4, "edge-edge": 4}
 STAGES = ("bounds", "bernstein", "interval", "exact")
@@ -187,26 +190,6 @@ def ti_method(ti, queries):
 # Reporting
 
 
-def cpu_model():
-    try:
-        with open("/proc/cpuinfo") as f:
-            for line in f:
-                if line.startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
-
-
-def pkg_version(name):
-    try:
-        from importlib.metadata import version
-
-        return version(name)
-    except Exception:
-        return "not installed"
-
-
 def summarize(method, queries):
     dec = [method.decision(o) if not isinstance(o, Exception) else o for o in method.outs]
     fp = fn_ = err = 0
@@ -236,15 +219,6 @@ def summarize(method, queries):
 
 def ratio(x):
     return f"{x:.2f}x" if x >= 0.1 else f"{x:.2g}x"
-
-
-def print_table(headers, rows):
-    widths = [max(len(str(h)), *(len(str(r[i])) for r in rows)) for i, h in enumerate(headers)]
-    line = "  ".join(f"{h:>{w}}" for h, w in zip(headers, widths))
-    print(line)
-    print("-" * len(line))
-    for r in rows:
-        print("  ".join(f"{str(c):>{w}}" for c, w in zip(r, widths)))
 
 
 def main():

@@ -16,7 +16,8 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import bench_bodies as bb  # noqa: E402
+import bodies_cases as bb  # noqa: E402  (the scenes of bench_bodies.py)
+import bodies_methods as bm  # noqa: E402
 import polyccd  # noqa: E402
 
 
@@ -29,10 +30,10 @@ def bodies_of(label, variant, cache, swing=False):
     if label not in cache:
         if label.startswith("mol"):
             case = bb.mol_case(label)
-            cache[label] = (case, bb.polyccd_build_mol(polyccd, case))
+            cache[label] = (case, bm.polyccd_build_mol(polyccd, case))
         else:
             case = bb.mesh_case(label, bb.MESH_SIZES[label])
-            cache[label] = (case, bb.polyccd_build_mesh(polyccd, case))
+            cache[label] = (case, bm.polyccd_build_mesh(polyccd, case))
     case, built = cache[label]
     if label.startswith("mol"):
         off, L = case["offset_exact"], case["variants"][variant]["L"]

@@ -39,4 +39,18 @@ static inline pccd_motion *slide_x(double x0, double x1)
   return m;
 }
 
+/* A motion whose rotation quaternion r(t) = 1 - 2t vanishes at t = 1/2 (NULL on
+ * failure): every call that takes a motion must refuse it. */
+static inline pccd_motion *vanishing(void)
+{
+  pccd_motion *m = NULL;
+  const char *w[2] = {"1", "-2"};
+  if (pccd_motion_new(&m) != PCCD_OK) return NULL;
+  if (pccd_motion_set_rotation_s(m, 0, w, 2) != PCCD_OK) {
+    pccd_motion_free(m);
+    return NULL;
+  }
+  return m;
+}
+
 #endif

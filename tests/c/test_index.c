@@ -2,8 +2,8 @@
  * test_index.c -- the on-line index of the C API (pccd_index_new / _query / _free):
  * known answers of a stored body queried with bodies on motions (hand-derived below)
  * with every broad phase (PCCD_BROAD_AUTO, _RANGE, _BOXES, _BRUTE, _BVH and NULL options) and
- * thread count, the index outliving (or not) the bodies and motions it was made of, and
- * every error path of pccd_index_new / pccd_index_query.
+ * thread count, and the index outliving (or not) the bodies and motions it was made of
+ * (the error paths of pccd_index_new / pccd_index_query: test_index_errors.c).
  *
  * pccd_index_query_many is checked against single queries and on its error paths.
  *
@@ -19,19 +19,6 @@
 
 #include "check.h"
 #include "scene_fixtures.h"
-
-/* A motion whose rotation quaternion r(t) = 1 - 2t vanishes at t = 1/2. */
-static pccd_motion *vanishing(void)
-{
-  pccd_motion *m = NULL;
-  const char *w[2] = {"1", "-2"};
-  if (pccd_motion_new(&m) != PCCD_OK) return NULL;
-  if (pccd_motion_set_rotation_s(m, 0, w, 2) != PCCD_OK) {
-    pccd_motion_free(m);
-    return NULL;
-  }
-  return m;
-}
 
 /* Feature (kind, index) of a cube has a point on its face x = x_face: a vertex of it
  * (it is convex and the cube lies in x in [0, 1]) is on that face. */
@@ -286,85 +273,6 @@ static void lifetimes(void)
   pccd_index_free(NULL); /* does nothing */
 }
 
-/* Every error path of pccd_index_new and pccd_index_query. */
-static void errors(void)
-{
-  pccd_body *cube = NULL;
-  pccd_motion *bad = vanishing(), *m = slide_x(3, 0);
-  pccd_index *ix = NULL, *sentinel = NULL;
-  pccd_report *rep = NULL;
-  pccd_scene_options opt;
-  pccd_config cfg;
-  int v = 0;
-  if (!CHECK(bad != NULL && m != NULL)) return;
-  OK(pccd_body_new_mesh_d(&cube, kCubeV, 8, kCubeT, 12));
-  OK(pccd_report_new(&rep));
-
-  /* pccd_index_new: *out is NULL after every error. */
-  FAILS(pccd_index_new(NULL, cube, NULL), PCCD_EINVAL, "pccd_index_new: out: is NULL");
-  sentinel = (pccd_index *)&v; /* any non-NULL value */
-  ix = sentinel;
-  FAILS(pccd_index_new(&ix, NULL, NULL), PCCD_EINVAL, "body: is NULL");
-  CHECK(ix == NULL);
-  CHECK(strstr(pccd_last_error(), "pccd_index_new") != NULL);
-  ix = sentinel;
-  FAILS(pccd_index_new(&ix, cube, bad), PCCD_EINVAL, "motion: ");
-  CHECK(strstr(pccd_last_error(), "vanishes at t = 1/2") != NULL);
-  CHECK(ix == NULL);
-
-  /* pccd_index_query. */
-  OK(pccd_index_new(&ix, cube, NULL));
-  FAILS(pccd_index_query(NULL, cube, m, NULL, NULL, rep), PCCD_EINVAL, "pccd_index_query: ix: is NULL");
-  FAILS(pccd_index_query(ix, NULL, m, NULL, NULL, rep), PCCD_EINVAL, "body: is NULL");
-  FAILS(pccd_index_query(ix, cube, m, NULL, NULL, NULL), PCCD_EINVAL, "rep: is NULL");
-  FAILS(pccd_index_query(ix, cube, bad, NULL, NULL, rep), PCCD_EINVAL, "motion: ");
-  CHECK(strstr(pccd_last_error(), "pccd_index_query") != NULL &&
-        strstr(pccd_last_error(), "vanishes at t = 1/2") != NULL);
-  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "rep: holds no answer");
-  OK(pccd_scene_options_init(&opt));
-  opt.struct_size = 3;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.struct_size: 3 is not");
-  OK(pccd_scene_options_init(&opt));
-  opt.threads = 0;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.threads: 0 is outside");
-  opt.threads = 1025;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.threads: 1025 is outside");
-  OK(pccd_scene_options_init(&opt));
-  opt.all_contacts = 2;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.all_contacts: 2 is not 0 or 1");
-  OK(pccd_scene_options_init(&opt));
-  opt.broad_phase = 5;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.broad_phase: 5 is not");
-  CHECK(strstr(pccd_last_error(), "PCCD_BROAD_BVH (4)") != NULL);
-  opt.broad_phase = -1;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.broad_phase: -1 is not");
-  OK(pccd_config_init(&cfg));
-  cfg.time_tolerance = "0";
-  FAILS(pccd_index_query(ix, cube, m, &cfg, NULL, rep), PCCD_EINVAL, "pccd_index_query: config.time_tolerance: ");
-  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "rep: holds no answer");
-  /* A failed call leaves no earlier answer readable: solve, then fail on bad options. */
-  OK(pccd_index_query(ix, cube, m, NULL, NULL, rep));
-  OK(pccd_report_collides(rep, &v));
-  OK(pccd_scene_options_init(&opt));
-  opt.threads = 0;
-  FAILS(pccd_index_query(ix, cube, m, NULL, &opt, rep), PCCD_EINVAL, "opt.threads: 0 is outside");
-  FAILS(pccd_report_collides(rep, &v), PCCD_ESTATE, "rep: holds no answer");
-  /* The defaults of pccd_scene_options_init: PCCD_BROAD_AUTO, 1 thread, first contacts. */
-  OK(pccd_scene_options_init(&opt));
-  CHECK(opt.broad_phase == PCCD_BROAD_AUTO && opt.threads == 1 && opt.all_contacts == 0 &&
-        opt.struct_size == sizeof(pccd_scene_options));
-  /* After the errors the index still answers. */
-  OK(pccd_config_init(&cfg));
-  OK(pccd_index_query(ix, cube, m, &cfg, &opt, rep));
-  CHECK(time_is(rep, PCCD_WHOLE, PCCD_WHOLE, 2, "2/3"));
-
-  pccd_index_free(ix);
-  pccd_report_free(rep);
-  pccd_body_free(cube);
-  pccd_motion_free(bad);
-  pccd_motion_free(m);
-}
-
 /* pccd_index_query_many: three queries (the moving cube at t = 2/3, a cube standing at
  * x = 3 that never touches, the cube again on a NULL motion entry -- the unit cube
  * itself, touching the stored one from t = 0) answer as single queries do. */
@@ -449,7 +357,6 @@ int main(void)
       swing(broads[b], t);
     }
   lifetimes();
-  errors();
   for (t = 1; t <= 3; ++t) many(t);
   printf("%d passed, %d failed\n", g_pass, g_fail);
   return g_fail == 0 ? 0 : 1;

@@ -200,7 +200,7 @@ static void errors_linear_radius(void)
   /* radius on a query without balls: some error (the header does not say which) */
   rc = API(pccd_query_set_radius_d(q, 0, 1.0));
   CHECK(rc < 0);
-  CHECK(mentions(pccd_last_error(), "q: radii apply to sphere-sphere queries only"));
+  CHECK(mentions(pccd_last_error(), "radii: only sphere-sphere queries have radii"));
 
   /* radii default to 0; solving needs both > 0 */
   SETS(s, 1, 0, "4", "-4");

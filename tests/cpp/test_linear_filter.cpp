@@ -1,4 +1,5 @@
-// pred::linear_filter and its Bernstein enclosures (lib/pred/linear_filter.h) against
+// pred::linear_verdict (linear_filter and its crossing half, lib/pred/solve_linear.h)
+// and its Bernstein enclosures (lib/pred/linear_filter.h) against
 // exact rational arithmetic (GMP, independent of the filter's floating point):
 //  - every certified coefficient: |value - exact| <= bound, whenever ok;
 //  - every verdict: boxes_apart only when the exact closed boxes are disjoint, no_root
@@ -16,7 +17,7 @@
 #include <vector>
 
 #include "pred/features.h"
-#include "pred/linear_filter.h"
+#include "pred/solve_linear.h"
 
 using pccd::pred::Linear_verdict;
 
@@ -105,7 +106,8 @@ static bool exact_boxes_apart(int n, int split, const double *p0, const double *
 static void check_query(int kind, const double *p0, const double *p1, int round, long &rounded,
                         long verdicts[4]) {
   auto pt = [&](int i) { return std::array<const double *, 2>{p0 + 3 * i, p1 + 3 * i}; };
-  const Linear_verdict v = pccd::pred::linear_filter(kind, p0, p1);
+  pccd::pred::Cubic_bernstein f;
+  const Linear_verdict v = pccd::pred::linear_verdict(kind, p0, p1, f);
   ++verdicts[static_cast<int>(v)];
   const int n = kind == pccd::pred::VERTEX_FACE || kind == pccd::pred::EDGE_EDGE ? 4
                 : kind == pccd::pred::VERTEX_EDGE                                 ? 3

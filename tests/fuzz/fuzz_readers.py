@@ -38,7 +38,7 @@ import atheris
 with atheris.instrument_imports(include=["polyccd"]):
     import polyccd
     from polyccd import InputError, InternalError
-    from polyccd._scene import BROAD_PHASES
+    from polyccd import BROAD_PHASES
     from polyccd.apps import _corpus, _csv, _json, _queries, _scene_file, cli
 
 MAX_TEXT, MAX_EXP = 64, 60

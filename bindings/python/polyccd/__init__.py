@@ -1,9 +1,10 @@
 """polyccd: exact continuous collision detection of moving primitives.
 
-Python bindings of libpolyccd (see bindings/python/API.md). Every answer comes from the C
+Python bindings of libpolyccd (see docs/python.md). Every answer comes from the C
 library; this package converts inputs exactly and raises clear errors. The applications
-(command line, file readers, corpus runner, data loaders, rendering, demo) live in
-polyccd.apps, which `import polyccd` does not import.
+(command line, file readers, corpus runner, data loaders, rendering, dask maps, demo)
+live in polyccd.apps, which `import polyccd` does not import and no module of this core
+imports (tests/test_layers.py checks it).
 """
 __version__ = "0.1.0"
 
@@ -33,24 +34,17 @@ from ._solve import collides_linear, solve, solve_linear  # noqa: E402
 from ._batch import LinearBatch, solve_linear_many  # noqa: E402
 from ._motion import Motion  # noqa: E402
 from ._body import Mesh, Spheres  # noqa: E402
-from ._scene import Body, Contact, PairResult, SceneResult  # noqa: E402
+from ._scene import BROAD_PHASES, Body, Contact, PairResult, SceneResult  # noqa: E402
 from ._scene import check_scene as check  # noqa: E402
 from ._index import Index  # noqa: E402
 from ._limits import Cancel, Limits  # noqa: E402
 from ._chain import Chain  # noqa: E402
 
-__all__ = ["__version__", "KINDS", "solve", "solve_linear", "collides_linear", "solve_linear_many",
+__all__ = ["__version__", "KINDS", "BROAD_PHASES", "solve", "solve_linear", "collides_linear",
+           "solve_linear_many",
            "LinearBatch", "Result", "Answers", "answers",
-           "ContactTime", "Feature", "Motion", "Chain", "Mesh", "Spheres", "Body", "check", "load_scene",
+           "ContactTime", "Feature", "Motion", "Chain", "Mesh", "Spheres", "Body", "check",
            "Index", "Limits", "Cancel",
            "SceneResult", "PairResult", "Contact", "Error", "InputError",
            "LimitError", "InternalError"]
 
-
-def __getattr__(name):
-    """polyccd.load_scene, the scene-file reader of polyccd.apps, imported on first use
-    (so that `import polyccd` does not import the applications)."""
-    if name == "load_scene":
-        from .apps._scene_file import load_scene
-        return load_scene
-    raise AttributeError(f"module 'polyccd' has no attribute {name!r}")

@@ -1,9 +1,17 @@
 """Batches of linear queries in numpy arrays (pccd_solve_linear_batch_d): one C call for
 n queries, so the Python call overhead is paid once per batch, not per query."""
+from __future__ import annotations
+
 from dataclasses import dataclass
 
 import numpy as np
 
+from typing import TYPE_CHECKING, Optional
+
+from ._types import Number
+
+if TYPE_CHECKING:
+    from ._limits import Limits
 from ._arrays import linear_batch
 from ._errors import InputError, check
 from ._pccd import ffi, lib
@@ -31,18 +39,19 @@ class LinearBatch:
         return len(self.collides)
 
 
-def solve_linear_many(kind, t0, t1, *, time_tolerance="1e-12", want_time=True, want_exact=True,
-                      threads=1, limits=None, min_distance=None):
+def solve_linear_many(kind: str, t0: np.ndarray, t1: np.ndarray, *,
+                      time_tolerance: Number = "1e-12", want_time: bool = True,
+                      want_exact: bool = True, threads: int = 1, limits: Optional[Limits] = None,
+                      min_distance: Optional[Number] = None) -> LinearBatch:
     """Every query k of t0[k], t1[k] (float64 arrays of shape (n, npoints, 3): points
     moving linearly from t0 to t1) solved in one call on `threads` workers; answers
     do not depend on the number of threads. Returns a LinearBatch of numpy arrays."""
-    code = kind_code(kind, linear=True)
+    code = kind_code(kind)
     a0 = linear_batch(t0, "t0", _NPOINTS[kind])
     a1 = linear_batch(t1, "t1", _NPOINTS[kind])
     if a0.shape != a1.shape:
         raise InputError(f"t1: expected shape {a0.shape} like t0, got {a1.shape}")
-    if not isinstance(threads, int) or isinstance(threads, bool) or not 1 <= threads <= 1024:
-        raise InputError(f"opt.threads: {threads!r} is outside 1..1024")
+    threads = _limits.thread_count(threads)
     _limits.warn_threads(threads)
     n = a0.shape[0]
     if limits is None:

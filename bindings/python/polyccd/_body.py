@@ -15,11 +15,16 @@ number texts, and the triangles), so that it pickles (it is rebuilt from them, e
 a Dask worker: the C handle itself cannot travel) and can give its coordinates back as
 numpy arrays (Mesh.vertices, Mesh.exact_vertices(), ...).
 """
+from __future__ import annotations
+
 import numbers
 from fractions import Fraction
 
 import numpy as np
 
+from typing import Any, Sequence, Tuple
+
+from ._types import Indices, Number, Points, Vector
 from . import _handles as handles
 from ._errors import InputError, check
 from ._numbers import exact_fraction, number_text, show
@@ -130,13 +135,18 @@ class _Body:
         return tuple(counts)
 
 
+# The 12 outward-facing triangles of a box whose corner i is (+-x, +-y, +-z) by the bits of i.
+_BOX_TRIANGLES = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
+                  [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
+
+
 class Mesh(_Body):
     """A triangle mesh: vertices (n, 3) and triangles (m, 3) of 0-based indices.
     Degenerate triangles (repeated indices, collinear points) are accepted as given."""
 
     __slots__ = ()
 
-    def __init__(self, vertices, triangles):
+    def __init__(self, vertices: Points, triangles: Indices) -> None:
         nv, doubles, texts = _points(vertices, "vertices")
         nt, tris = _indices(triangles)
         self._build(nv, doubles, None if texts is None else tuple(texts), tris)
@@ -157,7 +167,47 @@ class Mesh(_Body):
         return _rebuild, (Mesh, self._inputs)
 
     @classmethod
-    def from_trimesh(cls, mesh):
+    def box(cls, extents: Vector) -> Mesh:
+        """The closed box [-a/2, a/2] x [-b/2, b/2] x [-c/2, c/2] of extents (a, b, c) > 0
+        as 12 outward-facing triangles; halving a double is exact, so its corners are
+        exactly +-extents/2."""
+        e = [float(x) for x in _items(extents, "extents", "3 numbers")]
+        if len(e) != 3 or not all(np.isfinite(x) and x > 0 for x in e):
+            raise InputError(f"extents: expected 3 positive finite numbers, got {show(extents)}")
+        h = [x / 2 for x in e]
+        v = [[h[0] * (1 if i & 1 else -1), h[1] * (1 if i & 2 else -1), h[2] * (1 if i & 4 else -1)]
+             for i in range(8)]
+        return cls(v, _BOX_TRIANGLES)
+
+    @classmethod
+    def cylinder(cls, radius: float, height: float, sections: int = 16) -> Mesh:
+        """A closed prism around the cylinder of this radius and height (axis z, centred at
+        the origin): the regular `sections`-gon whose inscribed circle has radius at least
+        `radius` (vertices at radius / cos(pi / sections), enlarged by 1e-12 relative, which
+        covers the rounding of the doubles, about 1e-16 relative), so the prism contains
+        the cylinder; its distance from the cylinder is at most radius (1 / cos(pi /
+        sections) - 1), 2 % for 16 sections. Collisions are those of the prism."""
+        r, hgt = float(radius), float(height)
+        if not (np.isfinite(r) and r > 0 and np.isfinite(hgt) and hgt > 0):
+            raise InputError(f"radius, height: expected positive finite numbers, got "
+                             f"{show(radius)}, {show(height)}")
+        if not isinstance(sections, numbers.Integral) or sections < 3:
+            raise InputError(f"sections: expected an integer >= 3, got {show(sections)}")
+        big = r / np.cos(np.pi / sections) * (1 + 1e-12)
+        a = 2 * np.pi * (np.arange(sections) + 0.5) / sections
+        ring = [[big * np.cos(x), big * np.sin(x)] for x in a]
+        h = hgt / 2
+        v = [[x, y, -h] for x, y in ring] + [[x, y, h] for x, y in ring]
+        t = []
+        for i in range(sections):
+            j = (i + 1) % sections
+            t += [[i, j, sections + j], [i, sections + j, sections + i]]
+        for i in range(1, sections - 1):
+            t += [[0, i + 1, i], [sections, sections + i, sections + i + 1]]
+        return cls(v, t)
+
+    @classmethod
+    def from_trimesh(cls, mesh: Any) -> Mesh:
         """The Mesh of a trimesh.Trimesh (or any object with .vertices (n, 3) and .faces
         (m, 3)): its float64 vertices taken at their exact binary values, its faces as
         the triangles, as they are (no processing, merging or reorientation). A
@@ -184,7 +234,7 @@ class Mesh(_Body):
         """True when the coordinates were given as doubles (Mesh.vertices is exact)."""
         return self._inputs[1] is not None
 
-    def exact_vertices(self):
+    def exact_vertices(self) -> np.ndarray:
         """The vertices as an (n, 3) object array of Fractions, exactly as the body uses
         them (a float given is its binary value, a decimal text its decimal value)."""
         nv, doubles, texts, _ = self._inputs
@@ -219,7 +269,7 @@ class Mesh(_Body):
             out[i] = v[0], v[1]
         return out
 
-    def edge_triangles(self, i):
+    def edge_triangles(self, i: int) -> Tuple[int, ...]:
         """The indices of the triangles incident to edge i, ascending, as a tuple."""
         if isinstance(i, (bool, np.bool_)) or not isinstance(i, numbers.Integral) or i < 0:
             raise InputError(f"i: {show(i)} is not an edge index")
@@ -241,7 +291,7 @@ class Spheres(_Body):
 
     __slots__ = ()
 
-    def __init__(self, centers, radii):
+    def __init__(self, centers: Points, radii: Sequence[Number]) -> None:
         n, c_doubles, c_texts = _points(centers, "centers")
         nr, r_doubles, r_texts = _points(radii, "radii", width=None)
         if nr != n:
@@ -270,21 +320,6 @@ class Spheres(_Body):
         """Pickles as the exact inputs; unpickling builds new Spheres from them."""
         return _rebuild, (Spheres, self._inputs)
 
-    @classmethod
-    def from_gemmi(cls, source, select=None, *, waters=False, altloc="first", radius_scale=1):
-        """The atoms of a molecule as balls of van der Waals radius (Bondi 1964 for H C N
-        O S P F Cl, else gemmi's table to its 2 decimals; times radius_scale, exact).
-
-        source: a PDB or mmCIF path (str or os.PathLike): the centres are the decimal
-        texts of the file exactly ("14.264" is 14264/1000, not a double); or a
-        gemmi.Structure / gemmi.Model in memory: the centres are gemmi's float64
-        positions at their exact binary values. First model only; select, waters,
-        altloc as polyccd.apps._data.load_pdb. The result carries .info (an AtomInfo
-        naming each ball). Needs gemmi (imported here, not by `import polyccd`)."""
-        from .apps._data import spheres_from_gemmi
-        return spheres_from_gemmi(source, select, waters=waters, altloc=altloc,
-                                  radius_scale=radius_scale)
-
     @property
     def centers(self):
         """The centres as an (n, 3) float64 array (read-only): exactly the body's when
@@ -303,12 +338,12 @@ class Spheres(_Body):
         """True when centres and radii were given as doubles (centers, radii are exact)."""
         return self._inputs[1] is not None
 
-    def exact_centers(self):
+    def exact_centers(self) -> np.ndarray:
         """The centres as an (n, 3) object array of Fractions, exactly as the body uses them."""
         n, c, ct, _, _ = self._inputs
         return _fractions(c, ct, (n, 3))
 
-    def exact_radii(self):
+    def exact_radii(self) -> np.ndarray:
         """The radii as an (n,) object array of Fractions, exactly as the body uses them."""
         n, _, _, r, rt = self._inputs
         return _fractions(r, rt, (n,))

@@ -10,7 +10,7 @@ import numpy as np
 
 from . import _handles as handles
 from ._errors import InputError, check
-from ._motion import Motion
+from ._motion import RECIPE_BUILDERS, Motion, _number
 from ._numbers import show
 from ._pccd import ffi, lib
 
@@ -31,7 +31,7 @@ def _doubles(value, place, size):
 
 class Chain:
     """Links joined by fixed / revolute / continuous / prismatic joints (URDF's
-    conventions); see bindings/python/API.md, "Kinematic chains"."""
+    conventions); see docs/python.md, "Kinematic chains"."""
 
     __slots__ = ("_handle", "_links")
 
@@ -57,6 +57,18 @@ class Chain:
                             tuple(map(float, p)), tuple(map(float, r))))
         return index[0]
 
+    def set_value_place(self, k, place):
+        """Errors about link k's joint value name it "q0" / "q1" followed by place
+        instead of "[k]" (pccd_chain_set_value_place): e.g. a robot says "[2] (elbow)"
+        for its joint 2, and a bad value reads "q1[2] (elbow): ..."."""
+        if not isinstance(place, str):
+            raise InputError(f"place: expected a string, got {show(place)}")
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 0:
+            raise InputError(f"k: expected a link index, got {show(k)}")
+        check(lib.pccd_chain_set_value_place(self._handle, int(k), place.encode()))
+        parent, joint, axis, xyz, rpy = self._links[k][:5]
+        self._links[k] = (parent, joint, axis, xyz, rpy, place)
+
     def __len__(self):
         return len(self._links)
 
@@ -79,7 +91,6 @@ class Chain:
     def joint_values(self, q0, q1, t):
         """The joint values (float64 array, by link) at time t in [0, 1] of the segment:
         outputs, computed from the exact motion (fixed joints: 0)."""
-        from ._motion import _number
         a0, a1 = self._segment(q0, q1)
         n = len(self._links)
         values = np.zeros(n, dtype=np.float64)
@@ -94,8 +105,10 @@ class Chain:
 
 def _chain_from_links(links):
     c = Chain()
-    for parent, joint, axis, xyz, rpy in links:
+    for k, (parent, joint, axis, xyz, rpy, *place) in enumerate(links):
         c.add_link(parent, joint, axis, xyz, rpy)
+        if place:
+            c.set_value_place(k, place[0])
     return c
 
 
@@ -104,3 +117,4 @@ def motion_from_recipe(links, q0, q1, k):
     return _chain_from_links(links).motions(q0, q1)[k]
 
 
+RECIPE_BUILDERS["chain"] = motion_from_recipe

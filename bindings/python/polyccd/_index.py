@@ -1,9 +1,18 @@
-"""The on-line collision problem (bindings/python/API.md, "On-line index").
+"""The on-line collision problem (docs/python.md, "On-line index").
 
 Only conversion here: the index is built in C (pccd_index_new: the stored body's
 primitives as lifted points in range trees) and queried there (pccd_index_query); the
 answers are read back like a two-body scene (body 0 the indexed body, body 1 the query).
 """
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Iterable, List, Optional
+
+from ._types import Number
+
+if TYPE_CHECKING:
+    from ._limits import Limits
+    from ._scene import SceneResult
 from . import _handles as handles
 from . import _limits
 from ._errors import InputError, check
@@ -17,7 +26,7 @@ class Index:
 
     __slots__ = ("body", "_handle")
 
-    def __init__(self, body, *, limits=None):
+    def __init__(self, body: Body, *, limits=None) -> None:
         """limits: a polyccd.Limits for the preprocessing (None: no limits; Ctrl-C still
         ends it)."""
         if not isinstance(body, Body):
@@ -38,8 +47,10 @@ class Index:
         """Pickles as its Body (exact inputs); unpickling preprocesses the body again."""
         return Index, (self.body,)
 
-    def query(self, body, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-              broad_phase="auto", want_exact=True, limits=None, min_distance=None):
+    def query(self, body: Body, *, time_tolerance: Number = "1e-12", all_contacts: bool = False,
+              threads: int = 1, broad_phase: str = "auto", want_exact: bool = True,
+              limits: Optional[Limits] = None, min_distance: Optional[Number] = None
+              ) -> SceneResult:
         """The SceneResult of the two bodies (indexed body, query body); the keyword
         arguments as for polyccd.check."""
         if not isinstance(body, Body):
@@ -51,8 +62,10 @@ class Index:
                           _motion_handle(body.motion), cfg, opt, rep))
         return _read(rep, (self.body, body))
 
-    def query_many(self, bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
-                   broad_phase="auto", want_exact=True, limits=None, min_distance=None):
+    def query_many(self, bodies: Iterable[Body], *, time_tolerance: Number = "1e-12",
+                   all_contacts: bool = False, threads: int = 1, broad_phase: str = "auto",
+                   want_exact: bool = True, limits: Optional[Limits] = None,
+                   min_distance: Optional[Number] = None) -> List[SceneResult]:
         """The SceneResults of every query body, in order (one C call; `threads` workers
         share the queries, each query solved on one thread)."""
         bodies = _bodies_list(bodies)

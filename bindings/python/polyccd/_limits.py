@@ -11,11 +11,15 @@ pccd_cancel when it is made from the main thread and SIGINT has Python's default
 handler: Ctrl-C then sets the flag, the call ends at its next work step, and Python
 raises KeyboardInterrupt as it returns. (A Cancel passed in limits is the one set.)
 """
+from __future__ import annotations
+
 import math
+import numbers
 import signal
 import threading
 import warnings
 
+from typing import Optional
 from ._errors import InputError, check
 from ._numbers import show
 from ._pccd import ffi, lib
@@ -29,17 +33,17 @@ class Cancel:
 
     __slots__ = ("_handle",)
 
-    def __init__(self):
+    def __init__(self) -> None:
         self._handle = handles.new("cancel")
 
-    def set(self):
+    def set(self) -> None:
         lib.pccd_cancel_set(self._handle)
 
-    def reset(self):
+    def reset(self) -> None:
         check(lib.pccd_cancel_reset(self._handle))
 
     @property
-    def is_set(self):
+    def is_set(self) -> bool:
         out = ffi.new("int *")
         check(lib.pccd_cancel_is_set(self._handle, out))
         return bool(out[0])
@@ -60,8 +64,9 @@ class Limits:
 
     __slots__ = ("max_seconds", "max_work", "cancel", "max_number_bits")
 
-    def __init__(self, max_seconds=None, max_work=None, cancel=None,
-                 max_number_bits=DEFAULT_MAX_NUMBER_BITS):
+    def __init__(self, max_seconds: Optional[float] = None, max_work: Optional[int] = None,
+                 cancel: Optional[Cancel] = None,
+                 max_number_bits: Optional[int] = DEFAULT_MAX_NUMBER_BITS) -> None:
         if max_seconds is not None and (isinstance(max_seconds, bool) or
                                         not isinstance(max_seconds, (int, float)) or
                                         not math.isfinite(max_seconds) or max_seconds <= 0):
@@ -112,16 +117,33 @@ def config(limits):
         cfg.max_number_bits = 0
     apply(cfg, limits)
     return cfg
+# The most threads a call takes, from polyccd.h (PCCD_MAX_THREADS; 1024 in headers
+# older than that constant). Only for the ints a C unsigned cannot hold (thread_count).
+_MAX_THREADS = getattr(lib, "PCCD_MAX_THREADS", 1024)
+
+
+def thread_count(threads):
+    """opt.threads (a C unsigned) of a Python int: a conversion. Which counts are valid
+    is the C library's rule (1..PCCD_MAX_THREADS, "opt.threads: 0 is outside 1..1024");
+    the ints an unsigned cannot hold (negative, >= 2^32) never reach C, so they are
+    refused here in the same words."""
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
+        raise InputError(f"opt.threads: expected an integer, got {show(threads)}")
+    if not 0 <= threads <= 0xFFFFFFFF:
+        raise InputError(f"opt.threads: {int(threads)} is outside 1..{_MAX_THREADS}")
+    return int(threads)
 
 
 def warn_threads(threads, place="threads"):
     """Warns (RuntimeWarning, once per count) when threads exceeds what the library
     starts on this machine (pccd_threads_usable): the answers are the same, and the
-    caller learns why the extra threads do not help."""
+    caller learns why the extra threads do not help. A count the library refuses is
+    not warned about: the call itself raises the library's error."""
     if threads <= 1 or threads in _warned:
         return
     out = ffi.new("unsigned *")
-    check(lib.pccd_threads_usable(threads, out))
+    if lib.pccd_threads_usable(threads, out) != 0:
+        return
     if out[0] < threads:
         _warned.add(threads)
         warnings.warn(f"{place}={threads}: this machine runs {out[0]} threads at once, so "

@@ -7,7 +7,7 @@ from typing import Optional, Tuple
 import numpy as np
 
 from ._errors import InternalError, check
-from ._numbers import fraction_from_text, ratio_text
+from ._numbers import fraction_from_text
 from ._pccd import ffi, lib
 
 KINDS = ("vertex-face", "edge-edge", "vertex-edge", "vertex-vertex", "sphere-sphere")
@@ -156,22 +156,3 @@ def answers(results):
     hi[:] = [None if f is None else f.hi for f in firsts]
     return Answers(collides, exact, approx, lo, hi)
 
-
-def time_json(first):
-    """The JSON object of a ContactTime (None: null)."""
-    return None if first is None else {
-        "lo": ratio_text(first.lo.numerator, first.lo.denominator),
-        "hi": ratio_text(first.hi.numerator, first.hi.denominator),
-        "approx": first.approx,
-        "exact": None if first.exact is None
-        else ratio_text(first.exact.numerator, first.exact.denominator),
-    }
-
-
-def result_json(result):
-    """The JSON object of a Result, as `polyccd check` prints it (formats.md)."""
-    return {
-        "collides": result.collides,
-        "first_contact": time_json(result.first_contact),
-        "features": [{"kind": f.kind, "points": list(f.points)} for f in result.features],
-    }

@@ -1,9 +1,9 @@
-"""Scenes: bodies on motions, checked exactly (bindings/python/API.md, "Scenes").
+"""Scenes: bodies on motions, checked exactly (docs/python.md, "Scenes").
 
 Only conversion here: two bodies are solved in C by one call (pccd_pair_solve), more
 as a scene (pccd_scene, pccd_scene_solve), and the answers are read back from a
-pccd_report (one per thread, reused). Scene files are read by
-polyccd.apps._scene_file.
+pccd_report (one per thread, reused). Scene files are read, and results drawn, by the
+applications (polyccd.apps.load_scene, to_png, to_trimesh).
 """
 import struct
 import threading
@@ -78,7 +78,7 @@ class SceneResult:
     pairs: Tuple[PairResult, ...]
     first: Tuple[PairResult, ...]
     stats: dict
-    # The bodies solved (for to_png / to_trimesh): not compared, not pickled.
+    # The bodies solved (for polyccd.apps.to_png / to_trimesh): not compared, not pickled.
     bodies: tuple = field(default=(), compare=False, repr=False)
 
     def __getstate__(self):
@@ -102,31 +102,6 @@ class SceneResult:
                     if (who == body and not isinstance(body, str)) or name == body:
                         found.setdefault(kind, set()).add(k)
         return {kind: np.array(sorted(ks), dtype=np.int64) for kind, ks in sorted(found.items())}
-
-    def to_png(self, path, *, bodies=None, t=None, **options):
-        """Writes a PNG of the bodies at t (default: the first contact, else 0) with the
-        touching features in red (polyccd.apps._render.render_scene, matplotlib);
-        returns the path. bodies: default the ones this result was solved from."""
-        from .apps._render import render_scene
-        bodies = self._bodies_for(bodies)
-        time = t if t is not None else (self.first_contact or 0)
-        return render_scene(bodies, time, self, path, **options)
-
-    def to_trimesh(self, *, bodies=None, t=None):
-        """A trimesh.Scene of the bodies at t (default: the first contact, else 0), the
-        touching triangles, edges, vertices and balls in red (polyccd.apps._export);
-        drawing only: float poses and geometry. Needs trimesh."""
-        from .apps._export import contact_scene
-        bodies = self._bodies_for(bodies)
-        return contact_scene(bodies, t if t is not None else (self.first_contact or 0), self)
-
-    def _bodies_for(self, bodies):
-        if bodies is None:
-            bodies = self.bodies
-        if not bodies:
-            raise InputError("bodies: this result does not hold its bodies (it was "
-                             "pickled or made elsewhere); pass bodies=[...]")
-        return list(bodies)
 
 
 _WHOLE = lib.PCCD_WHOLE
@@ -174,14 +149,18 @@ _OPTIONS_MAX = 64
 
 def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None,
              min_distance=None):
-    """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query."""
+    """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query.
+    Only conversions are cached, by value (the library reads and checks cfg and opt on
+    every call); a call with limits converts them each time (a Limits holds a Cancel
+    and a clock, so it is no cache key)."""
     key = (time_tolerance, type(time_tolerance), all_contacts, type(all_contacts), threads,
-           type(threads), broad_phase, want_exact, type(want_exact), id(limits),
+           type(threads), broad_phase, want_exact, type(want_exact),
            min_distance, type(min_distance))
+    if limits is not None:
+        return _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
+                            limits, min_distance)
     try:
-        hit = _OPTIONS[key]
-        if hit[1][0] is limits:  # the same Limits object (ids are reused after collection)
-            return hit
+        return _OPTIONS[key]
     except KeyError:
         pass
     except TypeError:  # an unhashable argument: built each time (and checked there)
@@ -199,8 +178,7 @@ def _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
     if broad_phase not in BROAD_PHASES:
         raise InputError("broad_phase: expected \"auto\", \"boxes\", \"brute\", \"bvh\" or \"range\", "
                          f"got {show(broad_phase)}")
-    if isinstance(threads, bool) or not isinstance(threads, int) or not 1 <= threads <= 1024:
-        raise InputError(f"threads: expected an integer from 1 to 1024, got {show(threads)}")
+    threads = _limits.thread_count(threads)
     _limits.warn_threads(threads)
     if all_contacts not in (True, False):
         raise InputError(f"all_contacts: expected True or False, got {show(all_contacts)}")
@@ -237,13 +215,11 @@ def _pair_index(x, names, place):
 def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
                 broad_phase="auto", want_exact=True, limits=None, min_distance=None,
                 skip_pairs=()):
-    """Every body pair in contact and the scene's first contact (API.md, Scenes).
+    """Every body pair in contact and the scene's first contact (docs/python.md, "Scenes").
     limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
     min_distance: delta >= 0: contacts are times when bodies are within delta.
     skip_pairs: body pairs (i, j) (indices or names) not to check."""
-    bodies = _bodies_list(bodies)
-    if len(bodies) < 2:
-        raise InputError(f"bodies: a scene needs at least 2 bodies, got {len(bodies)}")
+    bodies = _bodies_list(bodies)  # fewer than 2: pccd_scene_solve says so
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
                                limits, min_distance)
     rep = _scratch.report

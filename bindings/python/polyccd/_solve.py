@@ -4,10 +4,19 @@ No geometry here: every decision is the C library's. This module only checks sha
 converts numbers exactly (see _numbers); the C library names the place of a bad number
 (points[i][axis][coefficient], radii[which], p_t0[i][axis], config.time_tolerance).
 """
+from __future__ import annotations
+
 import threading
 
 import numpy as np
 
+from typing import TYPE_CHECKING, Optional, Sequence
+
+from ._types import Coefficients, Number, Points
+
+if TYPE_CHECKING:
+    from ._limits import Limits
+    from ._results import Result
 from ._arrays import NotDouble, linear_coords, linear_trajectories
 from . import _handles as handles
 from . import _limits
@@ -17,7 +26,6 @@ from ._pccd import ffi, lib
 from ._results import KINDS, read_result
 
 _CODES = {kind: getattr(lib, "PCCD_" + kind.upper().replace("-", "_")) for kind in KINDS}
-_LINEAR = {kind: code for kind, code in _CODES.items() if kind != "sphere-sphere"}
 
 
 def _kind_points(code):
@@ -34,16 +42,13 @@ def npoints(kind):
     return _NPOINTS[kind]
 
 
-def kind_code(kind, linear=False):
-    """The pccd_kind of a kind name, or InputError."""
-    table = _LINEAR if linear else _CODES
+def kind_code(kind):
+    """The pccd_kind of a kind name, or InputError (a conversion: which kinds a call
+    takes is the C library's rule, e.g. the linear calls refuse sphere-sphere)."""
     try:
-        return table[kind]
+        return _CODES[kind]
     except (KeyError, TypeError):
-        pass
-    if linear and kind == "sphere-sphere":
-        raise InputError("kind: sphere-sphere queries need radii: use polyccd.solve")
-    raise InputError(f"kind: {show(kind)} is not one of {', '.join(table)}")
+        raise InputError(f"kind: {show(kind)} is not one of {', '.join(_CODES)}") from None
 
 
 def _items(value, place, what):
@@ -135,40 +140,39 @@ def solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limi
             items = _items(coeffs, place, "a list of polynomial coefficients")
             array, _keep = _texts([number_text(c, f"{place}[{j}]") for j, c in enumerate(items)])
             check(lib.pccd_query_set_coord_s(query, i, axis, array, len(items)))
-    if kind == "sphere-sphere":
-        if radii is None:
-            raise InputError("radii: a sphere-sphere query needs radii (ra, rb)")
+    if radii is not None:  # which kinds take radii, and that they are set: C's rules
         values = _items(radii, "radii", "(ra, rb)")
         if len(values) != 2:
             raise InputError(f"radii: expected 2 radii (ra, rb), got {len(values)}")
         for which, r in enumerate(values):
             text = number_text(r, f"radii[{which}]").encode("utf-8", "replace")
             check(lib.pccd_query_set_radius_s(query, which, text))
-    elif radii is not None:
-        raise InputError(f"radii: only sphere-sphere queries have radii, not {kind}")
     cfg, keep = _config(time_tolerance, want_time, want_exact, limits, min_distance)
     res = handles.new("result")
     check(_limits.run(cfg, lib.pccd_query_solve, query, cfg, res))
     return read_result(res)
 
 
-def solve(kind, points, radii=None, *, time_tolerance="1e-12", want_time=True,
-          want_exact=True, limits=None, min_distance=None):
+def solve(kind: str, points: Sequence[Sequence[Coefficients]],
+          radii: Optional[Sequence[Number]] = None, *, time_tolerance: Number = "1e-12",
+          want_time: bool = True, want_exact: bool = True, limits: Optional[Limits] = None,
+          min_distance: Optional[Number] = None) -> Result:
     """Decides exactly whether the moving primitives touch during [0, 1]; see
-    bindings/python/API.md. points: one [xs, ys, zs] per point, ascending powers of t.
+    docs/python.md. points: one [xs, ys, zs] per point, ascending powers of t.
     limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
     min_distance: delta >= 0: the first time the closed primitives are within delta."""
     return solve_query(kind, points, radii, time_tolerance, want_time, want_exact, limits,
                        min_distance)
 
 
-def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
-                 want_exact=True, limits=None, min_distance=None):
+def solve_linear(kind: str, p_t0: Points, p_t1: Points, *, time_tolerance: Number = "1e-12",
+                 want_time: bool = True, want_exact: bool = True,
+                 limits: Optional[Limits] = None, min_distance: Optional[Number] = None) -> Result:
     """solve() for points moving linearly from p_t0 (t = 0) to p_t1 (t = 1), arrays of
     shape (npoints, 3): float64 (exact binary values), integer or object arrays (int,
     Fraction, float) or nested lists; values that are not exactly doubles take the exact
     path (solve with the trajectories x0 + (x1 - x0) t), with the same answers."""
-    code = kind_code(kind, linear=True)
+    code = kind_code(kind)
     try:
         a0 = linear_coords(p_t0, "p_t0", _NPOINTS[kind])
         a1 = linear_coords(p_t1, "p_t1", _NPOINTS[kind])
@@ -186,11 +190,11 @@ def solve_linear(kind, p_t0, p_t1, *, time_tolerance="1e-12", want_time=True,
 
 
 _ND, _F64 = np.ndarray, np.dtype(np.float64)
-_FAST = {kind: (code, (_NPOINTS[kind], 3)) for kind, code in _LINEAR.items()}
+_FAST = {kind: (code, (_NPOINTS[kind], 3)) for kind, code in _CODES.items()}
 _from_buffer, _solve_linear_d = ffi.from_buffer, lib.pccd_solve_linear_d
 
 
-def collides_linear(kind, p_t0, p_t1):
+def collides_linear(kind: str, p_t0: Points, p_t1: Points) -> bool:
     """True when the primitives moving linearly from p_t0 to p_t1 touch during [0, 1].
 
     The low-overhead decide-only path for benchmarks: no Result is built, a per-thread
@@ -200,7 +204,7 @@ def collides_linear(kind, p_t0, p_t1):
     try:
         code, shape = _FAST[kind]
     except (KeyError, TypeError):
-        kind_code(kind, linear=True)  # raises the right message
+        kind_code(kind)  # raises the right message
     try:
         if not (type(p_t0) is _ND and p_t0.dtype is _F64 and p_t0.shape == shape
                 and p_t0.flags.c_contiguous):

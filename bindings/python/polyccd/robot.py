@@ -3,15 +3,17 @@ geometry as polyccd bodies, checked exactly over joint-space segments.
 
 Reading only: the URDF is parsed by yourdfpy (links, joints, mimic joints, mesh file
 names), meshes by trimesh; both are imported when a URDF is loaded, never by
-`import polyccd`. The exact origins (xyz, rpy) are read from the URDF's own text (yourdfpy
-keeps only a 4x4 float matrix). Every kinematic computation is the C library's
-(pccd_chain_*, pccd_motion_*, pccd_scene_*). See bindings/python/API.md, "Robots".
+`import polyccd`. The origins (xyz, rpy) are read from the URDF's own text, each number
+the double nearest its decimal, which the chain then takes exactly (yourdfpy keeps only
+a 4x4 matrix computed in floats). Every kinematic computation is the C library's
+(pccd_chain_*, pccd_motion_*, pccd_scene_*). See docs/python.md, "Robots".
 
 Policies (stated once, checked here or by the C library):
   - joints: fixed, revolute, continuous (a revolute joint without limits), prismatic;
-    floating and planar joints are rejected (compose a base motion onto the robot with
-    Robot.motions(..., base=Motion) instead). A segment of a revolute or continuous joint
-    must turn by less than 2 pi (split it). Limits are not checked.
+    floating and planar joints are rejected (move the base yourself: each Motion of
+    Robot.motions(q0, q1) composed with a base Motion, link.then(base)). A segment of a
+    revolute or continuous joint must turn by less than 2 pi (split it; the C library
+    decides and names the joint, "q1[2] (elbow): ..."). Limits are not checked.
   - mimic joints follow their leader at the segment's ends (value = multiplier * leader +
     offset, in doubles); in between a prismatic mimic follows exactly (both linear), a
     revolute one interpolates its own half-angle tangent.
@@ -32,11 +34,9 @@ import numpy as np
 from ._body import Mesh, Spheres
 from ._chain import Chain
 from ._errors import InputError
+from ._extras import need
 
 SUPPORTED = ("fixed", "revolute", "continuous", "prismatic")
-BOX_TRIANGLES = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
-                 [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
-
 
 def _floats(text, place, n=3):
     try:
@@ -57,32 +57,8 @@ def _origin(element, place):
             _floats(o.get("rpy", "0 0 0"), place + ".origin.rpy"))
 
 
-def _box_mesh(size):
-    h = [float(s) / 2 for s in size]  # halving a double is exact
-    v = [[h[0] * (1 if i & 1 else -1), h[1] * (1 if i & 2 else -1), h[2] * (1 if i & 4 else -1)]
-         for i in range(8)]
-    return Mesh(v, BOX_TRIANGLES)
-
-
-def _cylinder_mesh(radius, length, sides=16):
-    # The 16-gon with inradius >= radius (its vertices at radius / cos(pi / 16), enlarged
-    # by 1e-12 relative so that the rounding of the doubles cannot cut into the circle).
-    R = radius / np.cos(np.pi / sides) * (1 + 1e-12)
-    a = 2 * np.pi * (np.arange(sides) + 0.5) / sides
-    ring = [[R * np.cos(x), R * np.sin(x)] for x in a]
-    h = length / 2
-    v = [[x, y, -h] for x, y in ring] + [[x, y, h] for x, y in ring]
-    t = []
-    for i in range(sides):
-        j = (i + 1) % sides
-        t += [[i, j, sides + j], [i, sides + j, sides + i]]
-    for i in range(1, sides - 1):
-        t += [[0, i + 1, i], [sides, sides + i, sides + i + 1]]
-    return Mesh(v, t)
-
-
 def _mesh_file(filename, scale, place):
-    import trimesh
+    trimesh = need("polyccd.robot.load_urdf (mesh files)", "robot", "trimesh")
     if not os.path.isfile(filename):
         raise InputError(f"{place}: mesh file {filename!r} not found")
     try:
@@ -131,11 +107,10 @@ class Robot:
         return out
 
     def motions(self, q0, q1):
-        """The exact world Motion of every chain link over the segment q0 -> q1."""
-        try:
-            return self.chain.motions(self.chain_values(q0), self.chain_values(q1))
-        except InputError as e:
-            raise InputError(self._joint_place(str(e))) from None
+        """The exact world Motion of every chain link over the segment q0 -> q1. A bad
+        joint value is named by the C library in q's terms ("q1[2] (elbow): ...": load_urdf
+        gives the chain each value's place, Chain.set_value_place)."""
+        return self.chain.motions(self.chain_values(q0), self.chain_values(q1))
 
     def link_motions(self, q0, q1):
         """{URDF link name: Motion} over the segment q0 -> q1."""
@@ -146,15 +121,6 @@ class Robot:
         """{actuated joint name: value at time t} of the segment (floats; outputs)."""
         v = self.chain.joint_values(self.chain_values(q0), self.chain_values(q1), t)
         return {name: float(v[self._joint_link[name]]) for name in self.joints}
-
-    def _joint_place(self, message):
-        """A chain error "q1[k]: ..." with k the chain link, as "q1[j] (joint name): ..."."""
-        head, sep, rest = message.partition(": ")
-        for name, k in self._joint_link.items():
-            for q in ("q0", "q1"):
-                if head == f"{q}[{k}]":
-                    return f"{q}[{self.joints.index(name)}] ({name}){sep}{rest}"
-        return message
 
     def adjacent_pairs(self):
         """The default allowed link pairs: URDF links joined by a path of joints with at
@@ -290,7 +256,7 @@ def load_urdf(path, *, geometry="collision"):
     Mesh file names ("package://...", relative) are resolved by yourdfpy's default
     handler (relative to the URDF file and its parent folders). InputError for a
     missing or unreadable file, an unsupported joint type, a zero axis, a bad number."""
-    import yourdfpy
+    yourdfpy = need("polyccd.robot.load_urdf", "robot", "yourdfpy")
     if geometry not in ("collision", "visual"):
         raise InputError(f'geometry: {geometry!r} is not "collision" or "visual"')
     if not os.path.isfile(path):
@@ -319,6 +285,7 @@ def load_urdf(path, *, geometry="collision"):
                          f"not one")
 
     chain, names, joint_link, mimic, limits = Chain(), [], {}, {}, {}
+    mimic_joint = {}  # chain index -> the mimic joint's name
     geometry_at = []  # (URDF link, geometry index, chain index, xml element, yourdfpy geometry)
 
     def add(parent, joint, axis, xyz, rpy, place):
@@ -341,6 +308,7 @@ def load_urdf(path, *, geometry="collision"):
             k = add(parent, j.type, axis, xyz, rpy, f"joints.{j.name}")
             if j.type != "fixed":
                 if j.mimic is not None:
+                    mimic_joint[k] = j.name
                     mimic[k] = (j.mimic.joint, float(j.mimic.multiplier if j.mimic.multiplier is not None else 1),
                                 float(j.mimic.offset or 0))
                 else:
@@ -359,6 +327,12 @@ def load_urdf(path, *, geometry="collision"):
         if leader not in joint_link:
             raise InputError(f"joints: a mimic joint follows {leader!r}, which is not an "
                              f"actuated joint")
+    # Chain errors name a value as the user's q does: "q1[2] (elbow)", "q1[3] (finger2,
+    # mimic of finger1)" for the value a mimic joint derives from q[3].
+    for j, name in enumerate(actuated):
+        chain.set_value_place(joint_link[name], f"[{j}] ({name})")
+    for k, (leader, _, _) in mimic.items():
+        chain.set_value_place(k, f"[{actuated.index(leader)}] ({mimic_joint[k]}, mimic of {leader})")
 
     shapes = []
     for link_name, i, k, g in geometry_at:
@@ -384,14 +358,14 @@ def _geometry(g, urdf, place):
         raise InputError(f"{place}.geometry: missing")
     e = g[0]
     if e.tag == "box":
-        return _box_mesh(_floats(e.get("size"), place + ".geometry.box.size"))
+        return Mesh.box(_floats(e.get("size"), place + ".geometry.box.size"))
     if e.tag == "sphere":
         r = _floats(e.get("radius"), place + ".geometry.sphere.radius", 1)[0]
         return Spheres([[0, 0, 0]], [r])
     if e.tag == "cylinder":
         r = _floats(e.get("radius"), place + ".geometry.cylinder.radius", 1)[0]
         h = _floats(e.get("length"), place + ".geometry.cylinder.length", 1)[0]
-        return _cylinder_mesh(r, h)
+        return Mesh.cylinder(r, h)
     if e.tag == "mesh":
         name = e.get("filename")
         if not name:

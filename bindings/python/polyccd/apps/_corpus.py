@@ -1,15 +1,15 @@
 """Corpus cases: solve a case file and compare the answer with its `expect` block
-(shared/design/formats.md, EXPECT)."""
+(docs/formats.md, "EXPECT")."""
 import glob
 from fractions import Fraction
 from pathlib import Path
 
-from .._errors import Error, InputError
+from .. import Error, InputError
+from .. import check as check_scene
+from .._numbers import exact_fraction, ratio_text  # number texts: no public twin yet
+from .._solve import solve_query                    # a query from lists: no public twin
 from ._json import SceneNotSupported, load, query_case
-from .._numbers import exact_fraction, ratio_text
-from .._scene import check_scene
 from ._scene_file import scene_from_doc
-from .._solve import solve_query
 
 DEFAULT_TOLERANCE = "1e-12"
 

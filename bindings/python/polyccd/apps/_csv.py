@@ -1,4 +1,4 @@
-"""Reading the benchmark CSV query files (shared/design/formats.md, Benchmark CSV).
+"""Reading the benchmark CSV query files (docs/formats.md, "Benchmark CSV").
 
 8 rows per query of 7 integer columns x_num, x_den, y_num, y_den, z_num, z_den, truth;
 rows: the 4 points at t = 0, then the same 4 points at t = 1. A coordinate that is not
@@ -14,7 +14,7 @@ from typing import Dict, List
 
 import numpy as np
 
-from .._errors import InputError, LimitError
+from .. import InputError, LimitError
 from .._numbers import int_from_text, ratio_text, show
 from .._pccd import lib
 

@@ -21,8 +21,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .._body import Mesh, Spheres
-from .._errors import InputError
+from .. import InputError, Mesh, Spheres
 
 # Where Debian puts the tarballs of libcgal-demo (/usr/share/doc/libcgal-demo is a
 # symbolic link to libcgal-dev's folder in bookworm).
@@ -355,9 +354,15 @@ def load_pdb(path, select=None, *, waters=False, altloc="first", radius_scale=1)
 
 
 def spheres_from_gemmi(source, select=None, *, waters=False, altloc="first", radius_scale=1):
-    """polyccd.Spheres.from_gemmi: a path (load_pdb: the file's decimal texts, exactly)
-    or a gemmi.Structure / gemmi.Model (gemmi's float64 positions at their exact binary
-    values); the LoadedSpheres, its .info naming the balls."""
+    """The atoms of a molecule as balls of van der Waals radius (Bondi 1964 for H C N O
+    S P F Cl, else gemmi's table to its 2 decimals; times radius_scale, exact).
+
+    source: a PDB or mmCIF path (str or os.PathLike): the centres are the decimal texts
+    of the file exactly ("14.264" is 14264/1000, not a double; load_pdb); or a
+    gemmi.Structure / gemmi.Model in memory: the centres are gemmi's float64 positions
+    at their exact binary values. First model only; select, waters, altloc as load_pdb.
+    Returns a LoadedSpheres (a polyccd.Spheres) whose .info (an AtomInfo) names each
+    ball. Needs gemmi."""
     import gemmi
     if isinstance(source, (str, os.PathLike)):
         return load_pdb(source, select, waters=waters, altloc=altloc,

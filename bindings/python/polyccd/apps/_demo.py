@@ -5,7 +5,7 @@ from fractions import Fraction
 from pathlib import Path
 
 from .._numbers import ratio_text
-from .._solve import solve
+from .. import solve
 
 # A static triangle in the plane z = 0 (used by the vertex-face cases).
 TRIANGLE = [[[0], [0], [0]], [[1], [0], [0]], [[0], [1], [0]]]

@@ -19,7 +19,7 @@ from fractions import Fraction as F
 import numpy as np
 
 from ._data import cgal_data_file, load_mesh, load_pdb
-from .._motion import Motion
+from .. import Motion
 
 SceneBody = namedtuple("SceneBody", "shape motion name")
 

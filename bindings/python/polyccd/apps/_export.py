@@ -1,15 +1,17 @@
-"""A result's contact as a trimesh.Scene (SceneResult.to_trimesh): every body at a time
+"""A result's contact as a trimesh.Scene (polyccd.apps.to_trimesh): every body at a time
 t, the touching features in red.
 
 Drawing only, in floating point, like polyccd.apps._render: each body's pose at t is
-taken exactly from its Motion and rounded once (_render._float_pose), the geometry is
+taken exactly from its Motion and rounded once (_draw_geometry._float_pose), the geometry is
 the shapes' float arrays (Mesh.vertices / .triangles, Spheres.centers / .radii). Balls
 are icospheres (subdivision 1); touching edges are red line paths, touching vertices
 red points, touching triangles and balls red faces.
 """
 import numpy as np
 
-from ._render import BODY_COLORS, HIGHLIGHT, _arrays, _contacts, _edges_of, _float_pose, _parts
+from .._extras import need
+
+from ._draw_geometry import BODY_COLORS, HIGHLIGHT, _arrays, _contacts, _edges_of, _float_pose, _parts
 
 
 def _rgba(hex_color):
@@ -21,7 +23,8 @@ def contact_scene(bodies, t, contacts):
     (number, str or ContactTime) with the features of contacts (a SceneResult, PairResults
     or (body, (kind, k)) items) in red. Geometry node names: the body names, and
     "<name>/touching-edges", "<name>/touching-vertices" for the highlighted features."""
-    import trimesh
+    # trimesh's paths (the touching edges) import scipy.
+    trimesh = need("polyccd.apps.to_trimesh", "interop", "trimesh", "scipy.sparse")
     scene = trimesh.Scene()
     features = _contacts(contacts, len(bodies))
     red = _rgba(HIGHLIGHT)

@@ -1,4 +1,4 @@
-"""Exact reading of polyccd JSON files (shared/design/formats.md).
+"""Exact reading of polyccd JSON files (docs/formats.md).
 
 A JSON number means exactly the decimal written, so numbers are kept as their literal
 text (JsonNumber) and parsed by the C library, never by float(). Every error names the
@@ -10,9 +10,8 @@ from dataclasses import dataclass
 from fractions import Fraction
 from typing import List, Optional, Tuple, Union
 
-from .._errors import InputError
-from .._numbers import exact_fraction, show
-from .._results import KINDS
+from .. import KINDS, InputError
+from .._numbers import exact_fraction, ratio_text, show  # number texts: no public twin yet
 from .._solve import npoints
 from ._reading import tick
 
@@ -262,3 +261,23 @@ def min_distance_option(top):
 def read_query(path):
     """Reads and validates a query file; InputError (or SceneNotSupported) otherwise."""
     return query_case(load(path))
+
+
+def time_json(first):
+    """The JSON object of a ContactTime (None: null)."""
+    return None if first is None else {
+        "lo": ratio_text(first.lo.numerator, first.lo.denominator),
+        "hi": ratio_text(first.hi.numerator, first.hi.denominator),
+        "approx": first.approx,
+        "exact": None if first.exact is None
+        else ratio_text(first.exact.numerator, first.exact.denominator),
+    }
+
+
+def result_json(result):
+    """The JSON object of a Result, as `polyccd check` prints it (formats.md)."""
+    return {
+        "collides": result.collides,
+        "first_contact": time_json(result.first_contact),
+        "features": [{"kind": f.kind, "points": list(f.points)} for f in result.features],
+    }

@@ -6,7 +6,8 @@ from typing import List, Tuple
 import numpy as np
 
 from ._csv import ROWS, kind_of, read_csv
-from .._solve import collides_linear, solve_query
+from .. import collides_linear
+from .._solve import solve_query
 
 
 @dataclass

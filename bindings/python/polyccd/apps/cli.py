@@ -1,10 +1,10 @@
-"""The polyccd command line (shared/design/formats.md, Command line).
+"""The polyccd command line (docs/formats.md, "The command line").
 
 Exit status: 0 success; 1 a failed case, a wrong answer or an internal error; 2 an input
 error (the message on stderr names the file and the place in it).
 
 check, index, corpus and queries take --workers N / --scheduler ADDRESS to run on a
-dask.distributed cluster (polyccd.distributed: an embedded LocalCluster of N worker
+dask.distributed cluster (polyccd.apps.distributed: an embedded LocalCluster of N worker
 processes, or the running scheduler at ADDRESS); the output is the serial run's, in the
 same order. Long runs show a progress bar on stderr when stdout and stderr are
 terminals, never with --quiet (polyccd.apps._progress).
@@ -14,20 +14,17 @@ import contextlib
 import json
 import sys
 
-from .. import __version__
+import polyccd
+from polyccd import Error, Index, InputError, Limits, __version__
 from ._corpus import (DEFAULT_TOLERANCE, check_case, files_under, read_case, solve_case,
                       solve_scene_case)
 from ._csv import CSV_KINDS
 from ._demo import query_dir, run_cases
-from .._errors import Error, InputError
-from .._index import Index
+from ._json import result_json, time_json
 from ._queries import mismatch_lines, run_file
-from .._results import result_json, time_json
-from .._scene import BROAD_PHASES
 from ._progress import bar, echo
 from ._reading import read_within
 from ._scene_file import load_scene
-from .._limits import DEFAULT_MAX_NUMBER_BITS, Limits
 
 OK, FAILED, BAD_INPUT = 0, 1, 2
 
@@ -39,9 +36,9 @@ def _distributed(args):
 
 @contextlib.contextmanager
 def _cluster(args):
-    """The dask Client of --workers / --scheduler (polyccd.distributed.cluster)."""
+    """The dask Client of --workers / --scheduler (polyccd.apps.distributed.cluster)."""
     try:
-        from .. import distributed
+        from . import distributed
     except ImportError as e:
         raise InputError(f"--workers / --scheduler: {e}") from None
     with distributed.cluster(scheduler=args.scheduler, workers=args.workers) as client:
@@ -339,7 +336,7 @@ def _limit_flags(c):
                    help="end a file's check after N work steps (deterministic: the same "
                    "files end on every machine and thread count)")
     c.add_argument("--max-number-bits", type=_positive(int), metavar="B",
-                   help=f"largest input number in bits (default {DEFAULT_MAX_NUMBER_BITS}); "
+                   help=f"largest input number in bits (default {Limits().max_number_bits}); "
                    "raise it for inputs with longer numbers")
 
 
@@ -348,7 +345,7 @@ def _limits(args):
     if args.max_seconds is None and args.max_work is None and args.max_number_bits is None:
         return None
     return Limits(max_seconds=args.max_seconds, max_work=args.max_work,
-                  max_number_bits=args.max_number_bits or DEFAULT_MAX_NUMBER_BITS)
+                  max_number_bits=args.max_number_bits or Limits().max_number_bits)
 
 
 def _threads(text):
@@ -372,7 +369,7 @@ def _workers(text):
 
 
 def _cluster_flags(c):
-    """--workers, --scheduler (polyccd.distributed) and --quiet."""
+    """--workers, --scheduler (polyccd.apps.distributed) and --quiet."""
     c.add_argument("--workers", type=_workers, metavar="N",
                    help="run on a dask cluster: an embedded LocalCluster of N worker "
                    "processes (with --scheduler: wait for N workers); needs dask[distributed]")
@@ -385,7 +382,7 @@ def _cluster_flags(c):
 def parser():
     p = argparse.ArgumentParser(
         prog="polyccd", description="Exact continuous collision detection of moving "
-        "primitives (file formats: shared/design/formats.md).")
+        "primitives (file formats: docs/formats.md in the source repository).")
     p.add_argument("--version", action="version", version=f"polyccd {__version__}")
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
     c = sub.add_parser("check", help="solve one scene or query file and print the JSON result "
@@ -399,7 +396,7 @@ def parser():
                        "body against it (one JSON line per query body)")
     c.add_argument("file", metavar="SCENE.json")
     c.add_argument("--stored", metavar="NAME", help="the body to index (default: the first)")
-    c.add_argument("--broad-phase", choices=sorted(BROAD_PHASES), default="auto",
+    c.add_argument("--broad-phase", choices=sorted(polyccd.BROAD_PHASES), default="auto",
                    help="how candidate feature pairs are found (default auto; all give the "
                    "same answers)")
     c.add_argument("--all-contacts", action="store_true",

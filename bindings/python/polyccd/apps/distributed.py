@@ -1,18 +1,18 @@
-"""polyccd.distributed: batches of polyccd work mapped over a dask.distributed cluster.
+"""polyccd.apps.distributed: batches of polyccd work mapped over a dask.distributed cluster.
 
-    import polyccd.distributed as pd
+    import polyccd.apps.distributed as pd
     with pd.cluster(workers=2) as client:            # an embedded LocalCluster
         for r in pd.index_map(body, queries, client=client):
             ...                                        # SceneResults, in query order
 
 Every map splits its items into chunks, submits one task per chunk and yields the
 answers in the order of the items as they stream back (a tqdm bar on stderr when both
-stdout and stderr are terminals, see polyccd.apps._progress), each equal to the serial
+stdout and stderr are terminals, see _progress), each equal to the serial
 call's answer: the workers run the same library calls on the same exact inputs.
 
 Shipping: the C handles cannot be pickled, so bodies, motions and Index objects travel
 as their exact inputs (Mesh / Spheres / Motion / Body pickle that way, see
-polyccd._body) and are rebuilt on arrival. A body shared by every task (the Index's
+docs/python.md) and are rebuilt on arrival. A body shared by every task (the Index's
 stored body) is scattered to every worker once (client.scatter(broadcast=True)) and
 each worker process builds its Index from it once, lazily on its first task, then
 keeps it (_cached_index). Files (CSV query sets, scene and query files, corpus cases)
@@ -24,25 +24,25 @@ embedded cluster has a nanny that restarts it), and the broadcast body has a cop
 every worker. Needs dask.distributed (`pip install polyccd[dask]`); `import polyccd`
 never imports this module.
 """
+import dataclasses
 import os
 import threading
 import uuid
 from contextlib import contextmanager
 
-from ._errors import InputError, InternalError
-from ._index import Index
-from ._scene import Body, _bodies_list
-from .apps._progress import bar
+from .. import Body, Index, InputError, InternalError
+from ._progress import bar
 
 try:
     import distributed as _distributed
 except ImportError as _e:  # pragma: no cover - depends on the install
-    raise ImportError("polyccd.distributed needs dask.distributed: pip install "
+    raise ImportError("polyccd.apps.distributed needs dask.distributed: pip install "
                       "'polyccd[dask]' (or dask[distributed])") from _e
 
-LOOPBACK = "127.0.0.1"  # the embedded cluster's only interface (cluster())
-
 __all__ = ["cluster", "map_chunks", "index_map", "check_map", "corpus_map", "queries_map"]
+
+
+LOOPBACK = "127.0.0.1"  # the embedded cluster's only interface (cluster())
 
 
 @contextmanager
@@ -87,7 +87,7 @@ def _client(client):
             return _distributed.get_client()
         except ValueError:
             raise InputError("client: no dask.distributed Client given and none is active "
-                             "(use `with polyccd.distributed.cluster() as client:`)") from None
+                             "(use `with polyccd.apps.distributed.cluster() as client:`)") from None
     return client
 
 
@@ -142,6 +142,13 @@ def _completed(futures):
         yield from batch
 
 
+# ------------------------------------------------------------------- on-line index ---
+
+_INDEXES = {}  # per worker process: token -> Index (a few, the latest)
+_INDEX_LOCK = threading.Lock()
+_BUILDS = [0]  # Index objects built in this process (tests read it on the workers)
+
+
 def _kept_going(place, fn, *args):
     """fn(*args), or the error of this one item (returned, not raised, so that the other
     items of its chunk and of the batch still get their answers): an InputError (or
@@ -152,13 +159,6 @@ def _kept_going(place, fn, *args):
         return type(e)(f"{place}: {e}" if place else str(e))
     except Exception as e:  # a bug: reported for this item, the batch goes on
         return InternalError(f"{place + ': ' if place else ''}{type(e).__name__}: {e}")
-
-
-# ------------------------------------------------------------------- on-line index ---
-
-_INDEXES = {}  # per worker process: token -> Index (a few, the latest)
-_INDEX_LOCK = threading.Lock()
-_BUILDS = [0]  # Index objects built in this process (tests read it on the workers)
 
 
 def _cached_index(token, body):
@@ -198,7 +198,7 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
     body = index.body if isinstance(index, Index) else index
     if not isinstance(body, Body):
         raise InputError(f"index: expected a polyccd.Index or polyccd.Body, got {type(index).__name__}")
-    queries = _bodies_list([q if isinstance(q, Body) else Body(*q) for q in queries])
+    queries = [q if isinstance(q, Body) else Body(*q) for q in queries]
     token = uuid.uuid4().hex
     answers = map_chunks(_index_chunk, list(enumerate(queries)), body, token, options, client=client,
                          chunk_size=chunk_size, progress=progress, desc="index queries",
@@ -211,13 +211,26 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
 
 # ---------------------------------------------------------------------------- files ---
 
-def _check_chunk(paths, threads, limits=None):
-    from .apps._corpus import read_case, solve_case, solve_scene_case
-    def solve(path):
-        what, case = read_case(path)
+def _files(paths):
+    """(shown, absolute) for each path: a worker of a separately started cluster runs in
+    its own directory, so it opens the absolute path; messages and reports show the path
+    as the caller gave it (the serial run's output)."""
+    return [(str(p), os.path.abspath(p)) for p in paths]
+
+
+def _as_given(text, shown, real):
+    return text.replace(real, shown)
+
+
+def _check_chunk(files, threads, limits=None):
+    from ._corpus import read_case, solve_case, solve_scene_case
+    def solve(real):
+        what, case = read_case(real)
         return (solve_scene_case(case, limits=limits, threads=threads) if what == "scene"
                 else solve_case(case, limits))
-    return [_kept_going("", solve, path) for path in paths]
+    out = [_kept_going("", solve, real) for _, real in files]
+    return [type(r)(_as_given(str(r), shown, real)) if isinstance(r, Exception) else r
+            for r, (shown, real) in zip(out, files)]
 
 
 def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None, limits=None):
@@ -225,31 +238,36 @@ def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None, lim
     SceneResult or Result, or the InputError of a bad file (returned, not raised; an
     InternalError for a bug met on one file: the other files still get their answers).
     limits: a polyccd.Limits without a Cancel (each worker applies it to each file)."""
-    return map_chunks(_check_chunk, [str(p) for p in paths], threads, limits, client=client,
+    return map_chunks(_check_chunk, _files(paths), threads, limits, client=client,
                       chunk_size=chunk_size, progress=progress, desc="check", unit="file")
 
 
-def _corpus_chunk(paths):
-    from .apps._corpus import check_case
-    return [_kept_going(p, check_case, p) for p in paths]
+def _corpus_chunk(files):
+    from ._corpus import check_case
+    out = [_kept_going(shown, check_case, real) for shown, real in files]
+    return [type(r)(_as_given(str(r), shown, real)) if isinstance(r, Exception)
+            else [_as_given(reason, shown, real) for reason in r]
+            for r, (shown, real) in zip(out, files)]
 
 
 def corpus_map(paths, *, client=None, chunk_size=None, progress=None):
     """Yields check_case(path) (the reasons a corpus case fails; empty: it passes) for
     every case file, in order; an error met on one case is yielded as "PATH: ..." in
     its place (returned, not raised)."""
-    return map_chunks(_corpus_chunk, [str(p) for p in paths], client=client,
+    return map_chunks(_corpus_chunk, _files(paths), client=client,
                       chunk_size=chunk_size, progress=progress, desc="corpus", unit="case")
 
 
-def _queries_chunk(paths, kind):
-    from .apps._queries import run_file
-    return [_kept_going(path, run_file, path, kind) for path in paths]
+def _queries_chunk(files, kind):
+    from ._queries import run_file
+    out = [_kept_going(shown, run_file, real, kind) for shown, real in files]
+    return [type(r)(_as_given(str(r), shown, real)) if isinstance(r, Exception)
+            else dataclasses.replace(r, file=shown) for r, (shown, real) in zip(out, files)]
 
 
 def queries_map(paths, kind=None, *, client=None, chunk_size=1, progress=None):
     """Yields run_file(path, kind) (a FileReport: counts against the truth column, the
     time per query measured on the worker) for every CSV file, in order, or the
     InputError of a bad file (returned, not raised)."""
-    return map_chunks(_queries_chunk, [str(p) for p in paths], kind, client=client,
+    return map_chunks(_queries_chunk, _files(paths), kind, client=client,
                       chunk_size=chunk_size, progress=progress, desc="queries", unit="file")
