@@ -25,7 +25,8 @@ def test_a_symlinked_output_keeps_its_target(tmp_path):
     secret.write_text("keep me")
     link = tmp_path / "out.png"
     link.symlink_to(secret)
-    written = contact().to_png(link)
+    from polyccd.apps import to_png
+    written = to_png(contact(), link)
     assert secret.read_text() == "keep me"
     assert not link.is_symlink() and link.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert written == link
