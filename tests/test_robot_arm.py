@@ -28,9 +28,9 @@ ARM = """<?xml version="1.0"?>
   <link name="lower"><collision><origin xyz="0.4 0 0"/><geometry><box size="0.8 0.1 0.1"/></geometry></collision>
                      <collision><origin xyz="0.8 0 0" rpy="0 0 0.5"/><geometry><sphere radius="0.08"/></geometry></collision></link>
   <joint name="shoulder" type="revolute"><parent link="base"/><child link="upper"/>
-    <origin xyz="0 0 0.2" rpy="0 0 0"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
+    <origin xyz="0 0 0.2" rpy="0 0 0"/><axis xyz="0 0 1"/><limit lower="-6" upper="6" effort="1" velocity="1"/></joint>
   <joint name="elbow" type="%s"><parent link="upper"/><child link="lower"/>
-    <origin xyz="1 0 0" rpy="0 0 0"/><axis xyz="%s"/><limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
+    <origin xyz="1 0 0" rpy="0 0 0"/><axis xyz="%s"/><limit lower="-6" upper="6" effort="1" velocity="1"/></joint>
 </robot>
 """
 

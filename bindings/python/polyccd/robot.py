@@ -13,7 +13,14 @@ Policies (stated once, checked here or by the C library):
     floating and planar joints are rejected (move the base yourself: each Motion of
     Robot.motions(q0, q1) composed with a base Motion, link.then(base)). A segment of a
     revolute or continuous joint must turn by less than 2 pi (split it; the C library
-    decides and names the joint, "q1[2] (elbow): ..."). Limits are not checked.
+    decides and names the joint, "q1[2] (elbow): ...").
+  - joint limits (URDF <limit lower upper>, actuated revolute and prismatic joints;
+    continuous joints have none): Robot.check and check_path take
+    joint_limits="error" (default): an InputError naming the waypoint, the joint and
+    the value when q0 or q1 is outside [lower, upper] (closed; doubles compared as
+    they are), or joint_limits="ignore". The ends suffice: each joint moves
+    monotonically between its two end values (chain.h). Mimic joints follow their
+    leader and are not checked against limits of their own.
   - mimic joints follow their leader at the segment's ends (value = multiplier * leader +
     offset, in doubles); in between a prismatic mimic follows exactly (both linear), a
     revolute one interpolates its own half-angle tangent.
@@ -122,6 +129,28 @@ class Robot:
         v = self.chain.joint_values(self.chain_values(q0), self.chain_values(q1), t)
         return {name: float(v[self._joint_link[name]]) for name in self.joints}
 
+    def check_joint_limits(self, q0, q1, joint_limits="error"):
+        """The joint-limit policy of check() (see the module comment): InputError
+        "q0[j] (joint): value is outside the joint limits [lower, upper]" unless
+        joint_limits is "ignore". Non-finite values are left to the chain's check."""
+        if joint_limits == "ignore":
+            return
+        if joint_limits != "error":
+            raise InputError(f'joint_limits: {joint_limits!r} is not "error" or "ignore"')
+        for place, q in (("q0", q0), ("q1", q1)):
+            self.chain_values(q)  # the shape check and its message
+            q = np.asarray(q, dtype=np.float64)
+            for j, name in enumerate(self.joints):
+                lim = self.limits.get(name)
+                x = float(q[j])
+                if lim is None or not np.isfinite(x):
+                    continue
+                lo, hi = (-np.inf if lim[0] is None else lim[0]), (np.inf if lim[1] is None else lim[1])
+                if not lo <= x <= hi:
+                    raise InputError(f"{place}[{j}] ({name}): {x!r} is outside the joint limits "
+                                     f"[{lo!r}, {hi!r}] of the URDF (joint_limits=\"ignore\" "
+                                     f"allows it)")
+
     def adjacent_pairs(self):
         """The default allowed link pairs: URDF links joined by a path of joints with at
         most one moving joint (fixed joints merge links into one rigid group; a group and
@@ -158,7 +187,7 @@ class Robot:
 
     def check(self, q0, q1, obstacles=(), *, self_collision=True, allowed=None,
               time_tolerance="1e-12", all_contacts=False, threads=1, broad_phase="auto",
-              min_distance=None, limits=None):
+              min_distance=None, limits=None, joint_limits="error"):
         """The exact first contact over the segment q0 -> q1 of the robot with the
         obstacles (polyccd.Body, stationary or moving) and, when self_collision, of its
         links with each other except the allowed pairs (an iterable of link-name pairs;
@@ -167,9 +196,11 @@ class Robot:
         min_distance: delta >= 0 (pccd_config.min_distance): a contact is the first time
         the checked pairs come within delta (the broad phases grow their boxes by delta).
         limits: a polyccd.Limits (time, work, cancel, number size) for the whole check.
+        joint_limits: "error" (default) or "ignore", check_joint_limits().
         Returns a RobotResult (first contact, contacts by link name and feature, joint
         values at the ends of the time enclosure)."""
         from ._scene import Body, check_scene
+        self.check_joint_limits(q0, q1, joint_limits)
         obstacles = list(obstacles)
         for i, o in enumerate(obstacles):
             if not isinstance(o, Body):
