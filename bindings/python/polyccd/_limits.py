@@ -110,13 +110,24 @@ def apply(cfg, limits):
 
 def config(limits):
     """A pccd_config of limits for the calls that had none before (Index, Motion.position,
-    Motion.validate): None is no limit at all, not even the input limit."""
+    Motion.validate): None is no limit at all, not even the input limit (one config per
+    thread, made once: run() only lends it the thread's Ctrl-C flag during a call)."""
+    if limits is None:
+        cfg = getattr(_unlimited, "cfg", None)
+        if cfg is not None:
+            return cfg
     cfg = ffi.new("pccd_config *")
     check(lib.pccd_config_init(cfg))
     if limits is None:
         cfg.max_number_bits = 0
+        _unlimited.cfg = cfg
     apply(cfg, limits)
     return cfg
+
+
+_unlimited = threading.local()
+
+
 # The most threads a call takes, from polyccd.h (PCCD_MAX_THREADS; 1024 in headers
 # older than that constant). Only for the ints a C unsigned cannot hold (thread_count).
 _MAX_THREADS = getattr(lib, "PCCD_MAX_THREADS", 1024)
