@@ -173,7 +173,12 @@ typedef struct pccd_config {
                                  rational string; NULL means "1e-12". Copied. */
   int want_time;              /* 1 (default): enclose the first contact time;
                                  0: decide only whether there is a contact (the
-                                 reported enclosure is then some enclosure, maybe [0,1]) */
+                                 reported enclosure is then some enclosure, maybe [0,1]).
+                                 Scenes, pair solves, index queries and robots: decide
+                                 mode, the solve stops at the first body pair found in
+                                 contact and reports it alone with a witness (features,
+                                 an enclosure of one of its contact times);
+                                 pccd_report_free_until. */
   int want_exact;             /* 1 (default): when the first contact time is rational,
                                  report it exactly (pccd_result_time_is_exact). Only
                                  used when want_time is 1. */
@@ -764,6 +769,66 @@ PCCD_API int pccd_report_contact(const pccd_report *rep, size_t pair, size_t con
                                  int *feature_i, size_t *index_i, int *feature_j,
                                  size_t *index_j);
 
+/* Contact geometry: a contact point and normal of feature (feature_a, index_a) of body a
+ * on motion ma and feature (feature_b, index_b) of body b on mb (NULL: stationary) that
+ * touch at a time t* in [t_lo, t_hi] (rational strings; a report's contact and its time:
+ * t_lo = t_hi when the time is exact). Positions are world positions at t*; an edge runs
+ * from its vertex v[0] to v[1] (pccd_body_edge), a triangle has the winding given.
+ * Point:  vertex-X: the vertex.  edge-edge: the crossing a0 + s d_a of the two segments,
+ *         s = ((b0 - a0) x d_b) . n / |n|^2, n = d_a x d_b (parallel segments: the first
+ *         of a0, a1, b0, b1 on the other segment).  sphere-sphere: c_a + r_a / (r_a + r_b)
+ *         (c_b - c_a) (in both balls).  sphere-X: the closest point of X to the centre.
+ *         edge-triangle, triangle-triangle (the static test at t = 0): a point of both
+ *         (lib/narrow/contact_geometry.h: which one).
+ * Normal (orientation): vertex-triangle (either order): (v1 - v0) x (v2 - v0) of the
+ *         triangle (its winding); edge-edge: d_a x d_b; sphere-sphere: c_b - c_a; sphere-X:
+ *         from a's feature towards b's (point - c_a, or c_b - point). No normal for
+ *         vertex-vertex, vertex-edge, edge-triangle, triangle-triangle, parallel edges, or
+ *         a zero vector.
+ * t_lo = t_hi: exact values, checked: PCCD_EINVAL "the features do not touch at t = ..."
+ * when the point is not on both features (e.g. a contact of a solve with
+ * config.min_distance > 0: its features are within the distance, maybe apart; no
+ * point is defined then). t_lo < t_hi (t* irrational): enclosures from the same
+ * formulas in interval arithmetic over [t_lo, t_hi], or, where those are uncertain, the
+ * intersection of the two features' boxes over [t_lo, t_hi]; they contain the true
+ * values whenever the features touch in [t_lo, t_hi] (PCCD_EINVAL when they certainly
+ * do not), and shrink with t_hi - t_lo (config.time_tolerance).
+ * PCCD_EINVAL names the argument: a, b or out NULL, out->struct_size wrong, a feature not
+ * a pccd_feature or not of the body's kind ("feature_b: triangle is not a feature of a
+ * sphere body (sphere)"), an index out of range ("index_a: 12 out of range (10
+ * vertices)"), a time unparsable or outside [0, 1] ("t_hi: 3/2 is outside [0, 1]"),
+ * t_lo > t_hi, an invalid motion ("ma: ..."). */
+typedef enum pccd_normal_state {
+  PCCD_NORMAL_NONE = 0,     /* no normal is defined for these features at t* */
+  PCCD_NORMAL_ENCLOSED = 1, /* normal_lo <= the unit normal <= normal_hi */
+  PCCD_NORMAL_UNKNOWN = 2   /* t* enclosed too loosely to decide; normal_lo/hi = -1/1 */
+} pccd_normal_state;
+
+typedef struct pccd_contact_geometry {
+  size_t struct_size;   /* the caller sets sizeof(pccd_contact_geometry) */
+  double point_lo[3], point_hi[3]; /* point_lo <= the contact point <= point_hi */
+  int normal_state;     /* a pccd_normal_state */
+  double normal_lo[3], normal_hi[3];
+  int exact;            /* 1 when t_lo = t_hi: pccd_contact_geometry_exact has the values */
+} pccd_contact_geometry;
+
+PCCD_API int pccd_contact_geometry_compute(const pccd_body *a, const pccd_motion *ma, int feature_a,
+                                   size_t index_a, const pccd_body *b, const pccd_motion *mb,
+                                   int feature_b, size_t index_b, const char *t_lo,
+                                   const char *t_hi, pccd_contact_geometry *out);
+
+/* The exact values at an exact time (t_lo = t_hi = t), same arguments: which 0 = the
+ * point, 1 = the normal (unnormalized, as defined above), written as "x y z" (rationals
+ * "p/q" or "p", single spaces) with the buffer protocol (PCCD_ERANGE, *needed).
+ * PCCD_ESTATE when t_lo != t_hi (t* not exact: use the enclosures of
+ * pccd_contact_geometry_compute) or, for which = 1, when no normal is defined;
+ * PCCD_EINVAL as pccd_contact_geometry_compute, or which not 0 or 1. */
+PCCD_API int pccd_contact_geometry_exact(const pccd_body *a, const pccd_motion *ma, int feature_a,
+                                         size_t index_a, const pccd_body *b,
+                                         const pccd_motion *mb, int feature_b, size_t index_b,
+                                         const char *t_lo, const char *t_hi, int which,
+                                         char *buf, size_t cap, size_t *needed);
+
 /* ------------------------------------------------------------------------------------
  * The on-line collision problem (the paper's section 3): one body on its motion is
  * preprocessed once (its vertices, edges and triangles, or its balls, as lifted points
@@ -812,12 +877,194 @@ PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const 
                                    const pccd_config *cfg, const pccd_scene_options *opt,
                                    pccd_report *const *reports);
 
+/* A certified contact-free prefix of a solved report: no checked pair touches at any
+ * t < free_until (as text, like pccd_report_time; buf NULL with cap 0: only *needed and
+ * *below), and *below (when not NULL) a double <= free_until. Without a contact free_until is 1 (then nothing touches on [0, 1]).
+ * First-contact mode: the first contact's lo. Decide mode (cfg->want_time = 0): the
+ * certified lower bound of the pair that stopped the solve (a robot check's filter
+ * bound, pccd_robot_check; 0 for a scene). For a planner's last valid state (OMPL's
+ * checkMotion(s1, s2, lastValid)): every state at t < free_until is contact-free. */
+PCCD_API int pccd_report_free_until(const pccd_report *rep, char *buf, size_t cap, size_t *needed,
+                                    double *below);
+
+/* ------------------------------------------------------------------------------------
+ * Robots: a kinematic chain (pccd_chain) with bodies fixed to its links, kept across
+ * segments (bodies and their hierarchies are made once), checked over one joint-space
+ * segment q0 -> q1 against obstacles and itself.
+ *
+ * Each robot body belongs to a group (e.g. its URDF link): bodies of one group are never
+ * checked against each other, nor two groups whose pair is allowed
+ * (pccd_robot_set_allowed: adjacency, SRDF disable_collisions). Before any exact link
+ * motion is built, every body pair is tested by a certified filter: each link's pose is
+ * enclosed over time pieces in outward-rounded interval arithmetic straight from the
+ * joint path, and the link's hierarchy against the other body's; the exact link motions
+ * (those of pccd_chain_segment_motions) are built only for the links of pairs the filter
+ * cannot separate, and those pairs are solved in the order of the filter's lower bound.
+ * The answer is that of the exact solve of every pair.
+ *
+ * Report (a pccd_report, body indices: the robot's bodies in order of
+ * pccd_robot_add_body, then the obstacles):
+ *  - first-contact mode (default): collides, the first contact time and the pairs and
+ *    features touching first, as a scene's; the pairs listed are those found in contact
+ *    on the way (pairs that cannot touch before the best bound so far are not solved),
+ *    and a start pose with touching bodies answers with one touching triangle pair
+ *    per pair found at t = 0 rather than every one. With all_contacts every pair in
+ *    contact with every touching feature pair.
+ *  - decide mode (cfg->want_time = 0): stops at the first pair found in contact; the
+ *    report holds that pair with a witness (some touching features, some enclosure of
+ *    one of its contact times), and pccd_report_free_until a certified contact-free
+ *    prefix.
+ * ---------------------------------------------------------------------------------- */
+typedef struct pccd_robot pccd_robot;
+
+/* A robot of the chain (copied: later changes to chain do not reach it). */
+PCCD_API int pccd_robot_new(pccd_robot **out, const pccd_chain *chain);
+PCCD_API void pccd_robot_free(pccd_robot *r);
+/* Fixes body to chain link `link` (in the link's frame), in group `group`; *index (when
+ * not NULL) receives its body index. PCCD_EINVAL: link out of range, NULL r or body. */
+PCCD_API int pccd_robot_add_body(pccd_robot *r, size_t link, size_t group, const pccd_body *body,
+                                 size_t *index);
+/* Replaces the allowed group pairs: (groups[2k], groups[2k + 1]) for k < n, either order. */
+PCCD_API int pccd_robot_set_allowed(pccd_robot *r, const size_t *groups, size_t n);
+
+typedef struct pccd_robot_options {
+  size_t struct_size;  /* set by pccd_robot_options_init */
+  int self_collision;  /* 1 (default): robot body pairs too (groups, allowed pairs); 0: none */
+  int filter;          /* 1 (default): the certified filter first; 0: every pair exactly
+                          (the same answers; for tests) */
+} pccd_robot_options;
+PCCD_API int pccd_robot_options_init(pccd_robot_options *opt);
+
+/* Checks the segment q0 -> q1 (n = the chain's link count, values as
+ * pccd_chain_segment_motions) against obstacles[k] on motions[k] (motions NULL or
+ * motions[k] NULL: stationary) into rep. cfg, opt, ropt may be NULL (defaults).
+ * PCCD_EINVAL: a rejected segment ("q1[3]: ..."), an obstacle motion whose quaternion
+ * vanishes ("obstacles[1].motion: ..."), fewer than two bodies ("obstacles: nothing to
+ * check ..."), bad options. PCCD_ELIMIT as pccd_scene_solve (input numbers: the bodies
+ * as "bodies[k]", obstacles as "obstacles[k]"). On any error rep holds no answer. */
+PCCD_API int pccd_robot_check(const pccd_robot *r, const double *q0, const double *q1, size_t n,
+                              const pccd_body *const *obstacles, const pccd_motion *const *motions,
+                              size_t n_obstacles, const pccd_config *cfg,
+                              const pccd_scene_options *opt, const pccd_robot_options *ropt,
+                              pccd_report *rep);
+
 /* Work counters of the last solve (for benchmarks). */
 typedef struct pccd_scene_stats {
   unsigned long long pieces, leaves, candidates, solved, static_tests, refined;
   unsigned long long by_stage[5]; /* solved feature pairs by the pccd_stage that decided */
 } pccd_scene_stats;
 PCCD_API int pccd_report_stats(const pccd_report *rep, pccd_scene_stats *stats);
+
+/* ------------------------------------------------------------------------------------
+ * Steps of deforming meshes (a simulator's time step): every vertex moves on its own
+ * straight path from its position at t = 0 to its position at t = 1 (doubles at their
+ * exact values). A step holds one or more meshes (triangles, edges, isolated points);
+ * pccd_step_solve checks every primitive pair exactly over t in [0, 1]:
+ *   VERTEX_FACE    every vertex used by a face, edge or point against every face not
+ *                  holding it,
+ *   EDGE_EDGE      every edge against every edge with no common vertex,
+ *   VERTEX_EDGE, VERTEX_VERTEX   every isolated point against every edge not ending at
+ *                  it and every other point,
+ * within a mesh (self-collision) and between meshes, for the mesh pairs checked
+ * (pccd_step_set_pair_check; all by default). Pairs sharing a vertex are left out (they
+ * touch from the start), as in every simulator's CCD. A static obstacle is a mesh with
+ * v_t1 = v_t0. config.min_distance > 0 makes a contact "within delta" (pccd_config).
+ * The broad phase (swept boxes in a translating frame, a bounding-volume hierarchy
+ * rebuilt per step, on opt.threads threads) never changes an answer.
+ * ---------------------------------------------------------------------------------- */
+typedef struct pccd_step pccd_step;
+typedef struct pccd_step_report pccd_step_report;
+
+PCCD_API int pccd_step_new(pccd_step **out);
+PCCD_API void pccd_step_free(pccd_step *s);
+
+/* Appends a mesh of nv vertices: vertex i moves from v_t0[3i..3i+2] to v_t1[3i..3i+2].
+ * faces: nf index triples (may be 0); edges: ne index pairs, or edges = NULL to derive
+ * them from the faces (every side once; ne is then ignored); points: np isolated points (vertex indices:
+ * particles, or rod ends). *index (when not NULL) receives the mesh's position.
+ * PCCD_EINVAL, naming the place: s NULL, a NULL array with a nonzero count, a non-finite
+ * coordinate ("v_t1[4][2]"), an index out of range ("faces[3][1]: index 12 out of range
+ * (10 vertices)"), a face or edge repeating a vertex ("faces[3]: repeats vertex 5 (a
+ * degenerate face)"); PCCD_ELIMIT: a count above PCCD_MAX_BODY_ELEMENTS. On error the
+ * step is unchanged. */
+PCCD_API int pccd_step_add_mesh_d(pccd_step *s, const double *v_t0, const double *v_t1, size_t nv,
+                                  const unsigned int *faces, size_t nf, const unsigned int *edges,
+                                  size_t ne, const unsigned int *points, size_t np, size_t *index);
+
+/* Replaces the positions of mesh `mesh` (the next step of a simulation: same topology,
+ * nv its vertex count). Errors as pccd_step_add_mesh_d, and "mesh", "nv" out of range. */
+PCCD_API int pccd_step_set_positions_d(pccd_step *s, size_t mesh, const double *v_t0,
+                                       const double *v_t1, size_t nv);
+
+/* Whether the mesh pair (i, j) is checked: check = 1 (default) or 0; i == j is mesh i's
+ * self-collision. PCCD_EINVAL: i or j not a mesh ("j: 4 out of range (3 meshes)"),
+ * check not 0 or 1. */
+PCCD_API int pccd_step_set_pair_check(pccd_step *s, size_t i, size_t j, int check);
+
+/* What pccd_step_solve answers. */
+typedef enum pccd_step_mode {
+  PCCD_STEP_FIRST = 0,  /* the exact first contact time, the pairs touching first and the
+                           step size (pccd_step_report_stepsize) */
+  PCCD_STEP_DECIDE = 1, /* only whether anything touches: stops at the first contacts
+                           found (reported without times) */
+  PCCD_STEP_ALL = 2     /* FIRST, and every touching pair with its own first time */
+} pccd_step_mode;
+
+typedef struct pccd_step_options {
+  size_t struct_size; /* set by pccd_step_options_init */
+  unsigned threads;   /* worker threads, 1 to 1024 (default 1); answers do not depend on it */
+  int mode;           /* a pccd_step_mode (default PCCD_STEP_FIRST) */
+} pccd_step_options;
+PCCD_API int pccd_step_options_init(pccd_step_options *opt);
+
+/* Solves the step into rep (cfg, opt: NULL for the defaults; cfg->want_time is ignored:
+ * the mode says what is computed). PCCD_EINVAL on bad options; PCCD_ELIMIT when a work
+ * limit or the input limit of cfg is reached. On error rep holds no answer. */
+PCCD_API int pccd_step_solve(const pccd_step *s, const pccd_config *cfg,
+                             const pccd_step_options *opt, pccd_step_report *rep);
+
+PCCD_API int pccd_step_report_new(pccd_step_report **out);
+PCCD_API void pccd_step_report_free(pccd_step_report *rep);
+PCCD_API int pccd_step_report_collides(const pccd_step_report *rep, int *collides);
+/* The first contact time t* (modes FIRST, ALL) as text; which: 0 = lo, 1 = hi, 2 = exact.
+ * PCCD_ESTATE without contact, in mode DECIDE, or (2) when t* is not known exactly. */
+PCCD_API int pccd_step_report_time(const pccd_step_report *rep, int which, char *buf, size_t cap,
+                                   size_t *needed);
+/* *exact = 1 when t* is known exactly; lo, hi: t*'s enclosure rounded outward to doubles.
+ * Any pointer may be NULL. PCCD_ESTATE as pccd_step_report_time. */
+PCCD_API int pccd_step_report_time_info(const pccd_step_report *rep, int *exact, double *lo,
+                                        double *hi);
+/* The largest double <= t* (modes FIRST, ALL), 1.0 when nothing touches: the step may
+ * be scaled by it and every position strictly before it is contact-free (at it, the
+ * first contact when t* is a double). PCCD_ESTATE in mode DECIDE. */
+PCCD_API int pccd_step_report_stepsize(const pccd_step_report *rep, double *stepsize);
+PCCD_API int pccd_step_report_contact_count(const pccd_step_report *rep, size_t *count);
+/* Contacts first .. first + n - 1 into caller arrays (any may be NULL), sorted by (kind,
+ * mesh and index of a, mesh and index of b):
+ *   kind[k]          a pccd_kind: VERTEX_FACE (a vertex, b face), EDGE_EDGE (two edges),
+ *                    VERTEX_EDGE (a point's vertex, b edge), VERTEX_VERTEX (two vertices);
+ *   index[4k..4k+3]  mesh of a, index of a in its mesh, mesh of b, index of b (edges
+ *                    numbered as pccd_step_edge gives them);
+ *   lo[k], hi[k]     the pair's first contact time rounded outward (NaN in mode DECIDE);
+ *   exact[k]         1 when that time is exact.
+ * PCCD_EINVAL when first + n exceeds the count. */
+PCCD_API int pccd_step_report_contacts(const pccd_step_report *rep, size_t first, size_t n,
+                                       int *kind, size_t *index, double *lo, double *hi,
+                                       unsigned char *exact);
+/* Edges first .. first + n - 1 of mesh `mesh` into v[2k], v[2k + 1] (given or derived
+ * edges as (a, b) with a < b, sorted, each once). PCCD_EINVAL: beyond the edge count. */
+PCCD_API int pccd_step_edges(const pccd_step *s, size_t mesh, size_t first, size_t n, size_t *v);
+/* Sizes of mesh `mesh`: vertices, faces, edges, isolated points (pointers may be NULL). */
+PCCD_API int pccd_step_mesh_counts(const pccd_step *s, size_t mesh, size_t *nv, size_t *nf,
+                                   size_t *ne, size_t *np);
+
+typedef struct pccd_step_stats {
+  unsigned long long queries;    /* broad-phase queries run (vertices, edges, points) */
+  unsigned long long candidates; /* primitive pairs whose boxes met: each solved exactly */
+  unsigned long long refined;    /* re-solves with a finer time tolerance */
+  unsigned long long by_stage[5]; /* solved pairs by the pccd_stage that decided */
+} pccd_step_stats;
+PCCD_API int pccd_step_report_stats(const pccd_step_report *rep, pccd_step_stats *stats);
 
 #ifdef __cplusplus
 }

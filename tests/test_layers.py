@@ -1,6 +1,7 @@
 """The layers of lib/ include only the layers before them (docs/design.md, "Layout").
 
-Order: arith -> poly -> motion -> pred -> narrow -> boxes -> bvh -> range -> scene -> api, with
+Order: arith -> poly -> motion -> pred -> narrow -> enclose -> boxes -> bvh -> range -> scene
+-> step -> api, with
 util (threads) below every layer that needs it. Only lib/api includes the public
 header; inner layers keep their own copies of its constants (lib/api/constants.cpp).
 Also house rules checked on every file: no file in lib/, bindings/ or tests/ is over 450
@@ -13,7 +14,8 @@ from pathlib import Path
 import pytest
 
 LIB = Path(__file__).resolve().parent.parent / "lib"
-ORDER = ["util", "arith", "poly", "motion", "pred", "narrow", "enclose", "boxes", "bvh", "range", "scene", "api"]
+ORDER = ["util", "arith", "poly", "motion", "pred", "narrow", "enclose", "boxes", "bvh", "range", "scene", "step",
+         "api"]
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 
 

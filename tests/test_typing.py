@@ -8,11 +8,11 @@ import typing
 import pytest
 
 import polyccd
-from polyccd import _batch, _body, _index, _limits, _motion, _solve, _types
+from polyccd import _batch, _body, _index, _limits, _motion, _solve, _step, _types
 
 PUBLIC = [polyccd.solve, polyccd.solve_linear, polyccd.collides_linear, polyccd.solve_linear_many,
           polyccd.Motion, polyccd.Mesh, polyccd.Spheres, polyccd.Index, polyccd.Limits,
-          polyccd.Cancel]
+          polyccd.Cancel, polyccd.check_step, polyccd.collision_free_stepsize]
 
 
 def callables():
@@ -36,7 +36,7 @@ def test_public_callables_are_annotated(name, fn):
     assert sig.return_annotation is not inspect.Signature.empty, f"{name}: no return type"
 
 
-@pytest.mark.parametrize("module", [_batch, _body, _index, _limits, _motion, _solve])
+@pytest.mark.parametrize("module", [_batch, _body, _index, _limits, _motion, _solve, _step])
 def test_annotations_resolve(module):
     """Every annotation evaluates in its module (names imported for type checking only
     included), as a type checker would read it."""

@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "api/chain_handle.h"
 #include "api/guard.h"
 #include "api/motion_handle.h"
 #include "motion/chain.h"
@@ -11,10 +12,6 @@ using pccd::api::guard;
 using pccd::api::place;
 using pccd::api::require;
 using pccd::arith::Input_error;
-
-struct pccd_chain {
-  pccd::motion::Chain c;
-};
 
 namespace {
 

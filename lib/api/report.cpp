@@ -149,3 +149,28 @@ PCCD_API int pccd_report_stats(const pccd_report *rep, pccd_scene_stats *stats) 
 }
 
 }  // extern "C"
+
+extern "C" {
+
+PCCD_API int pccd_report_free_until(const pccd_report *rep, char *buf, size_t cap, size_t *needed,
+                                    double *below) {
+  return guard(__func__, [&]() -> int {
+    require_solved(rep, "rep");
+    const Rational &f = rep->r.free_until;
+    if (below) {  // a double <= f: the nearest, stepped down when above
+      double d = pccd::arith::nearest_double(f);
+      Rational dq;
+      mpq_set_d(dq.get_mpq_t(), d);
+      if (dq > f) d = pccd::arith::round_down(d);
+      *below = d;
+    }
+    const std::string text = pccd::arith::to_string(f);
+    if (!buf && cap == 0) {  // only *below (or the size) wanted
+      if (needed) *needed = text.size() + 1;
+      return PCCD_OK;
+    }
+    return pccd::api::write_text(text, buf, cap, needed);
+  });
+}
+
+}  // extern "C"

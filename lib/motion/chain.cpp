@@ -43,19 +43,20 @@ struct Ends {
 
 Ends joint_ends(const Chain_link &L, size_t k, double q0, double q1) {
   const Rational a = exact(q0, where("q0", L, k)), b = exact(q1, where("q1", L, k));
+  const Joint_doubles d = joint_doubles(L, q0, q1);
   Ends e;
   if (L.joint == Joint_type::prismatic) {
-    e.e0 = exact(q0 / L.axis_norm, where("q0", L, k));
-    e.e1 = exact(q1 / L.axis_norm, where("q1", L, k));
+    e.e0 = exact(d.e0, where("q0", L, k));
+    e.e1 = exact(d.e1, where("q1", L, k));
     return e;
   }
-  e.c0 = exact(std::cos(q0 / 2), where("q0", k));  // finite: q0, q1 are, and |a| ~ 1
-  e.s0 = exact(std::sin(q0 / 2) / L.axis_norm, where("q0", k));
-  e.c1 = exact(std::cos(q1 / 2), where("q1", k));
-  e.s1 = exact(std::sin(q1 / 2) / L.axis_norm, where("q1", k));
-  const Rational d = b - a;
-  const int sd = sgn(d);
-  const Rational ad = sd < 0 ? Rational(-d) : d;
+  e.c0 = exact(d.c0, where("q0", k));  // finite: q0, q1 are, and |a| ~ 1 (add_link)
+  e.s0 = exact(d.s0, where("q0", k));
+  e.c1 = exact(d.c1, where("q1", k));
+  e.s1 = exact(d.s1, where("q1", k));
+  const Rational dq = b - a;
+  const int sd = sgn(dq);
+  const Rational ad = sd < 0 ? Rational(-dq) : dq;
   if (!(ad < Rational(kTwo_pi)))
     throw Input_error(where("q1", L, k) + ": the revolute segment from " + text(q0) + " to " + text(q1) +
                       " turns by 2 pi or more; split it into shorter segments");
@@ -73,6 +74,25 @@ Ends joint_ends(const Chain_link &L, size_t k, double q0, double q1) {
 }
 
 }  // namespace
+
+Joint_doubles joint_doubles(const Chain_link &L, double q0, double q1) {
+  Joint_doubles d;
+  if (L.joint == Joint_type::prismatic) {
+    d.e0 = q0 / L.axis_norm;
+    d.e1 = q1 / L.axis_norm;
+  } else if (L.joint != Joint_type::fixed) {
+    d.c0 = std::cos(q0 / 2);
+    d.s0 = std::sin(q0 / 2) / L.axis_norm;
+    d.c1 = std::cos(q1 / 2);
+    d.s1 = std::sin(q1 / 2) / L.axis_norm;
+  }
+  return d;
+}
+
+void Chain::check_segment(const double *q0, const double *q1) const {
+  for (size_t k = 0; k < links_.size(); ++k)
+    if (links_[k].joint != Joint_type::fixed) joint_ends(links_[k], k, q0[k], q1[k]);
+}
 
 size_t Chain::add_link(long parent, int joint, const double *axis, const double xyz[3],
                        const double rpy[3]) {
@@ -147,14 +167,26 @@ Rigid_motion Chain::joint_motion(size_t k, double q0, double q1) const {
 }
 
 std::vector<Rigid_motion> Chain::segment_motions(const double *q0, const double *q1,
-                                                std::vector<Mat3_poly> *rn) const {
+                                                std::vector<Mat3_poly> *rn,
+                                                const std::vector<bool> *needed) const {
   std::vector<Rigid_motion> out;
   out.reserve(links_.size());
   std::vector<Mat3_poly> local;
   std::vector<Mat3_poly> &R = rn ? *rn : local;
   R.clear();
   R.reserve(links_.size());
+  std::vector<bool> need(links_.size(), true);
+  if (needed) {  // the needed links and their ancestors (parents come first)
+    need = *needed;
+    for (size_t k = links_.size(); k-- > 0;)
+      if (need[k] && links_[k].parent >= 0) need[links_[k].parent] = true;
+  }
   for (size_t k = 0; k < links_.size(); ++k) {
+    if (!need[k]) {
+      out.emplace_back();
+      R.emplace_back();
+      continue;
+    }
     Rigid_motion j = joint_motion(k, q0[k], q1[k]);
     // Every factor is valid by construction (a joint quaternion never vanishes, above),
     // so the composition needs no vanishing check. Links come after their parents.

@@ -51,6 +51,15 @@ struct Chain_link {
   std::string value_place;           // errors name the joint value "q0" + this ("": "[k]")
 };
 
+// The doubles a joint's exact motion interpolates (taken exactly by segment_motions; the
+// interval path of motion/chain_path.h encloses the same): revolute and continuous
+// (c_i, s_i) = (cos(q_i / 2), sin(q_i / 2) / |a|); prismatic e_i = q_i / |a|.
+struct Joint_doubles {
+  double c0 = 1, s0 = 0, c1 = 1, s1 = 0;
+  double e0 = 0, e1 = 0;
+};
+Joint_doubles joint_doubles(const Chain_link &L, double q0, double q1);
+
 class Chain {
  public:
   // Appends a link; returns its index. Input_error naming "parent", "joint",
@@ -68,8 +77,14 @@ class Chain {
   // non-finite value, "q1[k]" for a revolute segment the policy above rejects.
   // rn: when given, also rotation_numerator(r) of every link's motion (computed once
   // per link: each serves its children's compositions and the link's own data).
+  // needed: when given (one flag per link), only the needed links' motions and their
+  // ancestors' are built; the others are left as the identity (a robot check builds
+  // the motions of the links its filter cannot clear: scene/robot.h).
   std::vector<Rigid_motion> segment_motions(const double *q0, const double *q1,
-                                            std::vector<Mat3_poly> *rn = nullptr) const;
+                                            std::vector<Mat3_poly> *rn = nullptr,
+                                            const std::vector<bool> *needed = nullptr) const;
+  // Input_error as segment_motions for a segment it would reject, without building.
+  void check_segment(const double *q0, const double *q1) const;
   // The joint values at time t in [0, 1] of the same segment (as above; fixed: 0).
   std::vector<double> joint_values(const double *q0, const double *q1, const arith::Rational &t) const;
 

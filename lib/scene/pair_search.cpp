@@ -18,21 +18,43 @@ class Driver final : public narrow::Candidate_sink {
 
   void run() {
     std::unique_ptr<narrow::Candidate_source> source = make_source(opt_.phase, ctx_, opt_.stored, reach_);
-    if (ctx_.side(0).is_mesh() && ctx_.side(1).is_mesh()) {
+    if (ctx_.side(0).is_mesh() && ctx_.side(1).is_mesh() && !opt_.apart_at_zero) {
       whole(source->static_candidates(pool_));
       if (found_any_ && !opt_.all_contacts) return;
     }
     source->run(*this, out_.stats, pool_);
   }
 
+  // A piece starting after the best upper bound, or after the caller's solve.until (a
+  // scene's bound from other pairs: scene.h, solve_planned), holds no contact to report.
   bool pruned(double a) const override {
-    if (opt_.all_contacts || !have_best_) return false;
+    if (opt_.all_contacts || (!have_best_ && !(opt_.solve.until < 1))) return false;
     Rational ra;
     mpq_set_d(ra.get_mpq_t(), a);
-    return ra > best_hi_;
+    return (have_best_ && ra > best_hi_) || ra > opt_.solve.until;
   }
 
-  void whole(std::vector<Prim_pair> cand) override { solve_batch(fresh_of(std::move(cand), 1.0), 1.0); }
+  void whole(std::vector<Prim_pair> cand) override {
+    std::vector<Prim_pair> fresh = fresh_of(std::move(cand), 1.0);
+    bool all_tt = true;  // the static pass (a contact at t = 0 is first)
+    for (const Prim_pair &p : fresh) all_tt = all_tt && p.type == narrow::TT;
+    if (!opt_.witness || opt_.all_contacts || (opt_.solve.want_time && !all_tt)) return solve_batch(fresh, 1.0);
+    // Search_options::witness: chunks in key order; of the chunk that ends the search
+    // only its first touching pair is kept, which is then the touching pair of least key
+    // (the same for every broad phase: each lists every pair touching at t = 0).
+    constexpr size_t kChunk = 64;
+    for (size_t i = 0; i < fresh.size() && !witness_done(); i += kChunk) {
+      const size_t before = out_.solved.size();
+      solve_batch(std::vector<Prim_pair>(fresh.begin() + i, fresh.begin() + std::min(fresh.size(), i + kChunk)),
+                  1.0);
+      if (witness_done() && out_.solved.size() > before + 1) out_.solved.resize(before + 1);
+    }
+  }
+
+  // Search_options::witness: a contact without times, or one at t = 0, ends the search.
+  bool witness_done() const {
+    return found_any_ && (!opt_.solve.want_time || (have_best_ && sgn(best_hi_) == 0));
+  }
 
   // Solves the candidates of [a, b] in the order of the first of kSub equal sub-pieces
   // on which their two boxes meet (pair_search.h). A pair about to be solved is first
@@ -127,7 +149,7 @@ class Driver final : public narrow::Candidate_sink {
   pred::Solve_options bounded_options(double horizon) const {
     pred::Solve_options o = opt_.solve;
     if (opt_.all_contacts || !opt_.solve.want_time) return o;
-    if (horizon < 1) o.until = Rational(horizon);  // exact: a double
+    if (horizon < 1 && Rational(horizon) < o.until) o.until = Rational(horizon);  // exact: a double
     if (have_best_ && best_hi_ < o.until) o.until = best_hi_;
     return o;
   }

@@ -41,6 +41,15 @@ struct Search_options {
   Broad_phase phase = Broad_phase::boxes;  // resolved (not automatic)
   double reach = 0;           // enclose::reach_of(solve.delta) (Scene_options::reach)
   int stored = -1;            // range: the side (0, 1) held in the trees; -1: the larger
+  // A witness is enough where the first time is known or not wanted: without times
+  // (solve.want_time false) or once a feature pair touches at t = 0 (the static pass),
+  // candidates are solved in chunks of 64 and the search stops after the chunk that
+  // found a contact, rather than reporting every touching feature pair (a robot's
+  // overlapping links hold thousands). Not with all_contacts.
+  bool witness = false;
+  // The pair is known apart at t = 0 (a filter's lower bound > 0: scene/robot.h): the
+  // static pass, which looks for contacts at t = 0 only, is skipped.
+  bool apart_at_zero = false;
 };
 
 struct Solved_pair {

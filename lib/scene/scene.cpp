@@ -54,20 +54,25 @@ Moving_body prepare_body(const Scene_body &b) {
   return narrow::prepare_body(b.body, narrow::identity_motion());
 }
 
-Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt,
-                         const Pair_set &skipped) {
-  if (bodies.size() < 2)  // the one check (Python converts and raises this message)
-    throw arith::Input_error("bodies: a scene needs at least 2 bodies, got " +
-                             std::to_string(bodies.size()));
+std::vector<Moving_body> prepare_bodies(const std::vector<Scene_body> &bodies, const std::string &name) {
   std::vector<Moving_body> mb;
   mb.reserve(bodies.size());
   for (size_t k = 0; k < bodies.size(); ++k) {
     try {
       mb.push_back(prepare_body(bodies[k]));
     } catch (const arith::Input_error &e) {
-      throw arith::Input_error("bodies[" + std::to_string(k) + "].motion: " + e.what());
+      throw arith::Input_error(name + "[" + std::to_string(k) + "].motion: " + e.what());
     }
   }
+  return mb;
+}
+
+Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_options &opt,
+                         const Pair_set &skipped) {
+  if (bodies.size() < 2)  // the one check (Python converts and raises this message)
+    throw arith::Input_error("bodies: a scene needs at least 2 bodies, got " +
+                             std::to_string(bodies.size()));
+  const std::vector<Moving_body> mb = prepare_bodies(bodies, "bodies");
   std::vector<std::pair<size_t, size_t>> pairs;
   for (size_t i = 0; i < mb.size(); ++i)
     for (size_t j = i + 1; j < mb.size(); ++j)
@@ -80,26 +85,73 @@ Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_opti
 Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
                             const std::vector<std::pair<size_t, size_t>> &pairs,
                             const Scene_options &opt, int stored) {
+  std::vector<Pair_plan> plans;
+  plans.reserve(pairs.size());
+  for (const auto &ij : pairs) plans.push_back({ij.first, ij.second, 0.0});
+  return solve_planned([&](size_t k) -> const Moving_body & { return *mb[k]; }, plans, opt, stored, false);
+}
+
+Scene_report solve_planned(const std::function<const Moving_body &(size_t)> &body,
+                           const std::vector<Pair_plan> &plans, const Scene_options &opt,
+                           int stored, bool witness) {
   Thread_pool pool(std::max(1u, opt.threads));
+  const bool decide = !opt.solve.want_time && !opt.all_contacts;
+  witness = witness && opt.solve.want_time && !opt.all_contacts;
   Search_options so;
   so.solve = opt.solve;
   so.all_contacts = opt.all_contacts;
   so.phase = opt.broad_phase;
   so.reach = opt.reach;
   so.stored = stored;
+  so.witness = decide || witness;
 
   std::vector<std::unique_ptr<Pair_work>> work;
   Scene_report rep;
-  for (const auto &ij : pairs) {
+  bool have_best = false;  // witness: the smallest upper bound of a contact found
+  Rational best;
+  for (const Pair_plan &plan : plans) {
+    if (have_best) {
+      if (Rational(plan.lower) > best) break;  // sorted: every later pair too
+      if (best < so.solve.until) so.solve.until = best;
+    }
     auto w = std::make_unique<Pair_work>();
-    w->i = ij.first;
-    w->j = ij.second;
-    w->ctx = std::make_unique<Pair_ctx>(*mb[w->i], *mb[w->j]);
+    w->i = plan.i;
+    w->j = plan.j;
+    w->ctx = std::make_unique<Pair_ctx>(body(w->i), body(w->j));
+    so.apart_at_zero = plan.lower > 0;
     w->out = search_pair(*w->ctx, so, pool);
     rep.stats.add(w->out.stats);
+    bool hit = !w->out.solved.empty();
+    bool at_zero = false;
+    if (hit && witness) {
+      // The pair's own first contact (exact when rational; its refined results stay
+      // for the combines below) bounds the later pairs. A pair first touching after the
+      // bound (a solve may report it: pred/solve.h, until) is dropped, so that the pairs
+      // listed do not depend on the broad phase.
+      std::vector<std::pair<Pair_work *, size_t>> items;
+      for (size_t k = 0; k < w->out.solved.size(); ++k) items.push_back({w.get(), k});
+      const First_contact f = combine(items, opt, rep.stats);
+      if (f.lo > so.solve.until) {
+        w->out.solved.clear();
+        hit = false;
+      } else {
+        if (!have_best || f.hi < best) best = f.hi;
+        have_best = true;
+        at_zero = f.exact && sgn(f.lo) == 0;
+      }
+    }
     work.push_back(std::move(w));
+    if (hit && decide) {
+      rep.free_until = Rational(plan.lower);
+      break;
+    }
+    if (at_zero) break;  // a contact at t = 0 is first
   }
 
+  // Reported in ascending (i, j), whatever order the plans were solved in.
+  std::sort(work.begin(), work.end(), [](const auto &x, const auto &y) {
+    return std::make_pair(x->i, x->j) < std::make_pair(y->i, y->j);
+  });
   std::vector<std::pair<Pair_work *, size_t>> everything;
   for (auto &w : work) {
     if (w->out.solved.empty()) continue;
@@ -139,6 +191,7 @@ Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
   rep.lo = f.lo;
   rep.hi = f.hi;
   rep.exact = f.exact;
+  if (!decide) rep.free_until = f.lo;
   for (size_t p = 0; p < rep.pairs.size(); ++p) {
     const Pair_report &pr = rep.pairs[p];
     const bool first = f.exact ? (pr.exact && pr.lo == f.lo) : (pr.lo <= f.hi);

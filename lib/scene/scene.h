@@ -1,9 +1,11 @@
 // Scenes of moving bodies: every body pair in contact, and the scene's first contact.
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -25,6 +27,8 @@ struct Scene_body {
 // The body on its motion (prepared or derived now; Input_error when the motion is
 // invalid).
 Moving_body prepare_body(const Scene_body &b);
+// Every body prepared, in order; Input_error "<name>[k].motion: ..." for an invalid motion.
+std::vector<Moving_body> prepare_bodies(const std::vector<Scene_body> &bodies, const std::string &name);
 
 // Read once by the api (api/config.h, Call_config::scene_options).
 struct Scene_options {
@@ -55,6 +59,18 @@ struct Scene_report {
   std::vector<Pair_report> pairs;   // the pairs in contact, ascending (i, j)
   std::vector<size_t> first_pairs;  // indices into pairs: those that may touch first
   Search_stats stats;
+  // A certified contact-free prefix: no checked pair touches at any t < free_until
+  // (1 without a contact: then none touches on the closed [0, 1]). First-contact mode:
+  // lo. Decide mode (solve.want_time false): the lower bound of the pair that stopped
+  // the solve (Pair_plan::lower; 0 for a scene's pairs, which have none).
+  arith::Rational free_until = 1;
+};
+
+// A body pair to check with a certified lower bound of its contact times (a filter's:
+// scene/robot.h; 0 when none is known).
+struct Pair_plan {
+  size_t i = 0, j = 0;
+  double lower = 0;
 };
 
 // Body pairs (i, j), i < j, that are not checked (a robot's adjacent links, pairs a
@@ -73,5 +89,20 @@ Scene_report solve_scene(const std::vector<Scene_body> &bodies, const Scene_opti
 Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
                             const std::vector<std::pair<size_t, size_t>> &pairs,
                             const Scene_options &opt, int stored);
+
+// The same over pairs in ascending order of Pair_plan::lower, each pair's body on demand
+// (body(k): the prepared body k, built at most once by the caller). Modes:
+//  - decide (opt.solve.want_time false, not all_contacts): the first pair found in
+//    contact ends the solve; the report holds it alone, with a witness (some contact
+//    and some enclosure of one of its times), and free_until = its lower bound.
+//  - witness (first-contact mode, not all_contacts): the pairs that cannot touch
+//    before the best upper bound found so far are not solved (a pair whose lower bound
+//    is above it; the others are asked only up to it), and a contact at exactly t = 0
+//    ends the solve. The first contact and the pairs touching first are those of the
+//    full solve; the report lists the pairs found touching, not every pair in contact.
+//  - otherwise as solve_prepared: every pair.
+Scene_report solve_planned(const std::function<const Moving_body &(size_t)> &body,
+                           const std::vector<Pair_plan> &plans, const Scene_options &opt,
+                           int stored, bool witness);
 
 }  // namespace pccd::scene

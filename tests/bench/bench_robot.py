@@ -1,259 +1,113 @@
 #!/usr/bin/env python3
-"""Benchmark: a planner-like workload on a real arm. N random joint-space segments of
-the Franka Panda (example-robot-data's URDF and collision meshes) among a few fixed
-obstacles (boxes and 2 mm plates), each checked by
+"""Benchmark: a planner-like workload on real arms. N random joint-space segments of the
+Franka Panda and of the UR5 (example-robot-data's URDFs, collision meshes and SRDFs)
+among a few fixed obstacles (boxes and 2 mm plates), each checked by
 
-  polyccd   Robot.check(q0, q1, obstacles, self_collision=False): the exact first contact
-            of the links' exact motions over the segment (polyccd.robot);
-  discrete  python-fcl collision at a planner's resolution: poses t = k / m, k = 0..m,
-            m = ceil(largest joint change / RESOLUTION) (0.05 rad, typical of planners;
-            also 0.1 and 0.2 rad by default: --resolution), stopping at
-            the first colliding pose as a planner does; fcl.BVHModel (OBBRSS) of the SAME
-            triangles polyccd gets (robot meshes and obstacle boxes), one
-            DynamicAABBTree manager per side; link poses by Pinocchio's float FK.
+  polyccd decide  Robot.check(q0, q1, obstacles, first_contact=False): does anything touch
+                  on [0, 1]? (pccd_robot_check in decide mode: the links' interval poses
+                  straight from the joint path filter the pairs, exact link motions only
+                  for the pairs left, stop at the first certified contact);
+  polyccd first   Robot.check(...): the exact first contact (the default);
+  FCL discrete    python-fcl collision at a planner's resolution: poses t = k / m,
+                  k = 0..m, m = ceil(largest joint change / RESOLUTION) (0.05 rad, typical
+                  of planners; also 0.1 and 0.2 rad by default: --resolution), stopping
+                  at the first colliding pose as a planner does; fcl.BVHModel (OBBRSS) of
+                  the SAME triangles polyccd gets, one DynamicAABBTree manager per side;
+                  link poses by Pinocchio's float FK (tests/bench/robot_fcl.py).
+
+Self-collision off (robot versus obstacles) and on: then both sides skip the same link
+pairs, the adjacent ones and the SRDF's disable_collisions (polyccd: load_urdf(srdf=...);
+FCL: a self-collision pass of the robot's manager with those pairs skipped).
 
 Both check the SAME path: polyccd's chains interpolate each revolute joint's half-angle
 quaternion (cos, sin)(q/2) linearly (lib/motion/chain.cpp), so the joint values at t
 are q0 + 2 atan2(C0 S - S0 C, C0 C + S0 S) with (C, S) interpolated; the discrete
 check evaluates that formula in floats (printed: its largest difference from
-Robot.joint_values, and Pinocchio's poses against polyccd's exact motions). Robot
-versus obstacles only (self-collision off on both sides: polyccd's exact self-collision
-of the full meshes takes seconds per segment).
+Robot.joint_values, and Pinocchio's poses against polyccd's exact motions).
 
 Segments: q0 uniform within the joint limits, q1 = q0 + uniform(-SPAN, SPAN) per joint
-clipped to the limits (default SPAN 1 rad), the finger opening fixed at 0.02 m; both
-ends must be collision-free (decided exactly by polyccd as a stationary robot), as a
-planner's states are. Obstacles: BOXES boxes (5 to 20 cm sides) and PLATES plates (2 mm
-thick, 10 to 30 cm wide) axis-aligned, centred 0.3 to 0.75 m from the base axis at
-heights 0.1 to 0.8 m; all seeded (--seed).
+clipped to the limits (default SPAN 1 rad), the Panda's finger opening fixed at 0.02 m;
+both ends must be collision-free (decided exactly by polyccd as a stationary robot, with
+the mode's self-collision setting), as a planner's states are. Obstacles: BOXES boxes
+(5 to 20 cm sides) and PLATES plates (2 mm thick, 10 to 30 cm wide) axis-aligned, centred
+0.3 to 0.75 m from the base axis at heights 0.1 to 0.8 m; all seeded (--seed).
 
-Reported: time per segment (mean, median, max) of both, segments each reports colliding,
-MISSES (polyccd collides, discrete free), and two counts that must be 0, printed loudly
-when not: discrete collisions polyccd does not report, and discrete first colliding
-poses earlier than polyccd's first contact. A benchmark: it never asserts and is not in
-make test. `make bench` runs it; alone: .venv/bin/python tests/bench/bench_robot.py --n 200
+Reported per arm and self-collision setting: time per segment (mean, median, max) of
+each method, segments each reports colliding, MISSES (polyccd collides, discrete free),
+and counts that must be 0, printed loudly when not: decide and first-contact modes
+disagreeing, discrete collisions polyccd does not report, and discrete first colliding
+poses earlier than polyccd's first contact. At the end a markdown table of the ratios
+(docs/benchmarks.md). A benchmark: it never asserts and is not in make test. `make
+bench` runs it; alone: .venv/bin/python tests/bench/bench_robot.py --n 200
 """
 import argparse
-import math
 import random
 import statistics
 import sys
 import time
-import xml.etree.ElementTree as ET
-from fractions import Fraction
 
 import numpy as np
 
-BOX_TRIANGLES = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
-                 [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
-FINGER = 0.02
+from robot_fcl import BOX_TRIANGLES, FINGER, Discrete, agreement, box_vertices, make_obstacles
+
+ARMS = {"panda": ("panda_description/urdf/panda.urdf", "panda_description/srdf/panda.srdf"),
+        "ur5": ("ur_description/urdf/ur5_robot.urdf", "ur_description/srdf/ur5.srdf")}
 
 
-def box_vertices(lo, hi):
-    return np.array([[(lo[a], hi[a])[(i >> a) & 1] for a in range(3)] for i in range(8)])
+def ms(values):
+    return (f"{1e3 * statistics.mean(values):9.2f} {1e3 * statistics.median(values):9.2f} "
+            f"{1e3 * max(values):9.2f}")
 
 
-def make_obstacles(rng, boxes, plates):
-    """[(name, lo, hi)]: axis-aligned boxes and 2 mm plates near the arm (doubles)."""
-    out = []
-    for i in range(boxes + plates):
-        angle, radius = rng.uniform(-math.pi, math.pi), rng.uniform(0.3, 0.75)
-        c = [radius * math.cos(angle), radius * math.sin(angle), rng.uniform(0.1, 0.8)]
-        if i < boxes:
-            size, name = [rng.uniform(0.05, 0.2) for _ in range(3)], f"box{i}"
-        else:
-            size, name = [rng.uniform(0.1, 0.3) for _ in range(3)], f"plate{i - boxes}"
-            size[rng.randrange(3)] = 0.002
-        out.append((name, [c[a] - size[a] / 2 for a in range(3)],
-                    [c[a] + size[a] / 2 for a in range(3)]))
-    return out
-
-
-def rpy_matrix(rpy):
-    r, p, y = rpy
-    cr, sr, cp, sp, cy, sy = (math.cos(r), math.sin(r), math.cos(p), math.sin(p),
-                              math.cos(y), math.sin(y))
-    return np.array([[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-                     [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-                     [-sp, cp * sr, cp * cr]])
-
-
-class Discrete:
-    """The planner side: float joint interpolation, Pinocchio FK, python-fcl collision."""
-
-    def __init__(self, robot, urdf, obstacles):
-        import fcl
-        import pinocchio as pin
-        self.fcl, self.pin = fcl, pin
-        self.model = pin.buildModelFromUrdf(urdf)
-        self.data = self.model.createData()
-        self.robot = robot
-        links = ET.parse(urdf).getroot()
-        origins = {}
-        for link in links.findall("link"):
-            for i, c in enumerate(link.findall("collision")):
-                o = c.find("origin")
-                get = o.get if o is not None else (lambda key, default: default)
-                xyz = [float(x) for x in get("xyz", "0 0 0").split()]
-                rpy = [float(x) for x in get("rpy", "0 0 0").split()]
-                origins[(link.get("name"), i)] = (rpy_matrix(rpy), np.array(xyz))
-        self.shapes = []  # (frame id, offset R, offset p, CollisionObject)
-        for link, i, k, shape in robot.shapes:
-            R, p = (origins[(link, i)] if k != robot.link_index[link]
-                    else (np.eye(3), np.zeros(3)))
-            obj = fcl.CollisionObject(self._bvh(shape.vertices, shape.triangles), fcl.Transform())
-            self.shapes.append((self.model.getFrameId(link), R, p, obj))
-        self.manager = fcl.DynamicAABBTreeCollisionManager()
-        self.manager.registerObjects([s[3] for s in self.shapes])
-        self.manager.setup()
-        self.obstacles = fcl.DynamicAABBTreeCollisionManager()
-        self.obstacles.registerObjects([
-            fcl.CollisionObject(self._bvh(box_vertices(lo, hi), BOX_TRIANGLES), fcl.Transform())
-            for _, lo, hi in obstacles])
-        self.obstacles.setup()
-        self.revolute = np.array([robot.joint_types[n] != "prismatic" for n in robot.joints])
-        self.q_index = {}
-        for jid in range(1, self.model.njoints):
-            self.q_index[self.model.names[jid]] = self.model.joints[jid].idx_q
-
-    def _bvh(self, vertices, triangles):
-        m = self.fcl.BVHModel()
-        m.beginModel(len(vertices), len(triangles))
-        m.addSubModel(np.asarray(vertices, dtype=np.float64), np.asarray(triangles, dtype=np.int32))
-        m.endModel()
-        return m
-
-    def joint_values(self, q0, q1, t):
-        """The joint values at t of polyccd's path (see the module comment), floats."""
-        h0, h1 = q0 / 2, q1 / 2
-        C0, S0 = np.cos(h0), np.sin(h0)
-        C = (1 - t) * C0 + t * np.cos(h1)
-        S = (1 - t) * S0 + t * np.sin(h1)
-        revolute = q0 + 2 * np.arctan2(C0 * S - S0 * C, C0 * C + S0 * S)
-        return np.where(self.revolute, revolute, (1 - t) * q0 + t * q1)
-
-    def poses(self, q):
-        """[(R, p)] of every robot shape at the joint values q (Pinocchio, floats)."""
-        pin = self.pin
-        x = pin.neutral(self.model)
-        values = dict(zip(self.robot.joints, q))
-        for name, idx in self.q_index.items():
-            if name in self.robot.mimic_joints:
-                leader, mult, off = self.robot.mimic_joints[name]
-                x[idx] = mult * values[leader] + off
-            else:
-                x[idx] = values[name]
-        pin.framesForwardKinematics(self.model, self.data, x)
-        out = []
-        for fid, R, p, _ in self.shapes:
-            f = self.data.oMf[fid]
-            out.append((f.rotation @ R, f.rotation @ p + f.translation))
-        return out
-
-    def pose_collides(self, q):
-        fcl = self.fcl
-        for (R, p), (_, _, _, obj) in zip(self.poses(q), self.shapes):
-            obj.setTransform(fcl.Transform(R, p))
-        self.manager.update()
-        data = fcl.CollisionData(request=fcl.CollisionRequest())
-        self.manager.collide(self.obstacles, data, fcl.defaultCollisionCallback)
-        return data.result.is_collision
-
-    def check(self, q0, q1, resolution):
-        """(first colliding sample time or None, poses checked)."""
-        m = max(1, math.ceil(float(np.max(np.abs(q1 - q0)[self.revolute])) / resolution))
-        for k in range(m + 1):
-            t = Fraction(k, m)
-            if self.pose_collides(self.joint_values(q0, q1, k / m)):
-                return t, k + 1
-        return None, m + 1
-
-
-def agreement(robot, discrete, rng, lims):
-    """Largest differences (joint values; link positions in m) between the discrete
-    side's floats and polyccd's exact path, at a few random segments and times."""
-    from polyccd.apps._render import _float_pose
-    dq = dx = 0.0
-    for _ in range(3):
-        q0 = np.array([rng.uniform(lo, hi) for lo, hi in lims])
-        q1 = np.array([rng.uniform(lo, hi) for lo, hi in lims])
-        motions = robot.motions(q0, q1)
-        for t in (Fraction(1, 3), Fraction(5, 7)):
-            v = robot.joint_values(q0, q1, t)
-            q = discrete.joint_values(q0, q1, float(t))
-            dq = max(dq, max(abs(v[n] - q[j]) for j, n in enumerate(robot.joints)))
-            for (R, p), (_, _, k, shape) in zip(discrete.poses(q), robot.shapes):
-                Re, pe = _float_pose(motions[k], t)
-                w = shape.vertices[:1]
-                dx = max(dx, float(np.abs(w @ R.T + p - (w @ Re.T + pe)).max()))
-    return dq, dx
-
-
-def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--n", type=int, default=1000, help="segments (default 1000)")
-    ap.add_argument("--seed", type=int, default=20261124)
-    ap.add_argument("--resolution", type=float, nargs="+", default=[0.05, 0.1, 0.2],
-                    help="rad per pose of the discrete checks (default 0.05 0.1 0.2; 0.05 is "
-                    "a typical planner resolution)")
-    ap.add_argument("--span", type=float, default=1.0, help="largest change per joint (rad)")
-    ap.add_argument("--boxes", type=int, default=3)
-    ap.add_argument("--plates", type=int, default=3)
-    args = ap.parse_args(argv)
-    try:
-        import fcl  # noqa: F401
-        import pinocchio  # noqa: F401
-        import yourdfpy  # noqa: F401
-    except ImportError as e:
-        print(f"bench_robot: skipped ({e.name} is not installed)")
-        return 0
-    import polyccd as P
-    from polyccd.apps._demo_robot import PANDA_URDF, example_robot_file
-    from polyccd.robot import load_urdf
-    urdf = example_robot_file(PANDA_URDF)
-    if urdf is None:
-        print("bench_robot: skipped (example-robot-data is not installed)")
-        return 0
-    robot = load_urdf(urdf)
+def run_arm(P, load_urdf, example_robot_file, name, self_collision, args, summary):
+    """One arm, one self-collision setting: the segments, the table, rows for summary."""
+    urdf, srdf = (example_robot_file(f) for f in ARMS[name])
+    robot = load_urdf(urdf, srdf=srdf)
+    allowed = robot.adjacent_pairs() | robot.allowed_from_srdf(srdf)
     rng = random.Random(args.seed)
     boxes = make_obstacles(rng, args.boxes, args.plates)
-    obstacles = [P.Body(P.Mesh(box_vertices(lo, hi), BOX_TRIANGLES), name=name)
-                 for name, lo, hi in boxes]
-    discrete = Discrete(robot, urdf, boxes)
-    lims = [robot.limits[n] for n in robot.joints]
-    lims[-1] = (FINGER, FINGER)
+    obstacles = [P.Body(P.Mesh(box_vertices(lo, hi), BOX_TRIANGLES), name=n) for n, lo, hi in boxes]
+    discrete = Discrete(robot, urdf, boxes, allowed if self_collision else None)
+    lims = [robot.limits[n] or (-np.pi, np.pi) for n in robot.joints]
+    if name == "panda":
+        lims[-1] = (FINGER, FINGER)
     dq, dx = agreement(robot, discrete, rng, lims)
-    print(f"bench_robot: Panda ({len(robot.shapes)} collision meshes, "
-          f"{sum(len(s.triangles) for *_, s in robot.shapes)} triangles), "
-          f"{args.boxes} boxes + {args.plates} plates (2 mm), {args.n} segments "
-          f"(seed {args.seed}, span {args.span} rad), discrete every "
-          f"{' / '.join(map(str, args.resolution))} rad")
-    for name, lo, hi in boxes:
-        print(f"  {name}: [{', '.join(f'{x:.4f}' for x in lo)}] - "
-              f"[{', '.join(f'{x:.4f}' for x in hi)}]")
-    print(f"path agreement of the discrete side: joint values {dq:.1e} rad, "
-          f"link points {dx:.1e} m (Pinocchio vs polyccd's exact motions)")
+    sc = "on" if self_collision else "off"
+    print(f"\n{name}: {len(robot.shapes)} collision meshes, "
+          f"{sum(len(s.triangles) for *_, s in robot.shapes)} triangles; self-collision {sc}"
+          f"{f' ({len(allowed)} link pairs allowed: adjacent + SRDF)' if self_collision else ''}; "
+          f"path agreement of the discrete side: joint values {dq:.1e} rad, link points "
+          f"{dx:.1e} m")
+    options = dict(self_collision=self_collision)
 
     def valid(q):
-        return not robot.check(q, q, obstacles, self_collision=False).collides
+        return not robot.check(q, q, obstacles, first_contact=False, **options).collides
 
     res = args.resolution
-    exact_times, exact_hits = [], 0
+    modes = {"decide": dict(first_contact=False), "first": dict()}
+    times = {m: [] for m in modes}
+    hits = {m: 0 for m in modes}
+    disagree = []
     runs = {r: {"times": [], "hits": 0, "poses": [], "misses": [], "bad": [], "early": []}
             for r in res}
     start_all, rejected = time.perf_counter(), 0
-    while len(exact_times) < args.n:
+    while len(times["first"]) < args.n:
         q0 = np.array([rng.uniform(lo, hi) for lo, hi in lims])
         q1 = np.array([min(hi, max(lo, x + rng.uniform(-args.span, args.span)))
                        for x, (lo, hi) in zip(q0, lims)])
         if not (valid(q0) and valid(q1)):
             rejected += 1
             continue
-        s = len(exact_times)
-        t0 = time.perf_counter()
-        exact = robot.check(q0, q1, obstacles, self_collision=False)
-        exact_times.append(time.perf_counter() - t0)
-        exact_hits += exact.collides
+        s = len(times["first"])
+        out = {}
+        for m, kw in modes.items():
+            t0 = time.perf_counter()
+            out[m] = robot.check(q0, q1, obstacles, **options, **kw)
+            times[m].append(time.perf_counter() - t0)
+            hits[m] += out[m].collides
+        exact = out["first"]
+        if out["decide"].collides != exact.collides:
+            disagree.append(f"segment {s}: q0 = {q0.tolist()}, q1 = {q1.tolist()}")
         for r, run in runs.items():
             t0 = time.perf_counter()
             sample, poses = discrete.check(q0, q1, r)
@@ -272,25 +126,18 @@ def main(argv=None):
                                     f"sample t = {sample}, polyccd {exact.first_contact}")
         if (s + 1) % 100 == 0:
             print(f"  {s + 1} segments, {time.perf_counter() - start_all:.0f} s", flush=True)
-
-    def ms(values):
-        return (f"{1e3 * statistics.mean(values):9.2f} {1e3 * statistics.median(values):9.2f} "
-                f"{1e3 * max(values):9.2f}")
-    n = len(exact_times)
     print(f"segment ends drawn and rejected (an end in collision): {rejected}; "
-          f"wall time {time.perf_counter() - start_all:.0f} s\n")
+          f"wall time {time.perf_counter() - start_all:.0f} s")
     print(f"{'method':<28} {'mean ms':>9} {'median':>9} {'max ms':>9} {'poses':>6} "
           f"{'colliding':>9} {'MISSES':>7} {'unreported':>10} {'earlier':>7}")
-    print(f"{'polyccd Robot.check exact':<28} {ms(exact_times)} {'-':>6} {exact_hits:>9} "
-          f"{'-':>7} {'-':>10} {'-':>7}")
+    for m in modes:
+        print(f"{f'polyccd {m}':<28} {ms(times[m])} {'-':>6} {hits[m]:>9} {'-':>7} {'-':>10} {'-':>7}")
     for r, run in runs.items():
         print(f"{f'FCL discrete @ {r} rad':<28} {ms(run['times'])} "
               f"{statistics.mean(run['poses']):6.1f} {run['hits']:>9} {len(run['misses']):>7} "
               f"{len(run['bad']):>10} {len(run['early']):>7}")
-    print(f"poses: mean poses checked per segment (up to the first colliding one); MISSES: "
-          f"polyccd finds a contact, the discrete check none (of {exact_hits} colliding "
-          f"segments); unreported: discrete collisions polyccd does not report; earlier: "
-          f"a discrete collision before polyccd's first contact (both must be 0)")
+    for text in disagree:
+        print(f"  !!! DISCREPANCY: decide and first-contact modes disagree: {text}")
     for r, run in runs.items():
         for text in run["misses"][:3]:
             print(f"  missed at {r} rad: {text}")
@@ -298,6 +145,56 @@ def main(argv=None):
             print(f"  !!! DISCREPANCY at {r} rad, not reported by polyccd: {text}")
         for text in run["early"]:
             print(f"  !!! DISCREPANCY at {r} rad, earlier than polyccd: {text}")
+    fcl = runs[min(res)]["times"]
+    summary.append((name, sc, times, fcl, min(res), {r: len(runs[r]["misses"]) for r in res},
+                    hits["first"]))
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--n", type=int, default=1000, help="segments per arm and setting (default 1000)")
+    ap.add_argument("--seed", type=int, default=20261124)
+    ap.add_argument("--resolution", type=float, nargs="+", default=[0.05, 0.1, 0.2],
+                    help="rad per pose of the discrete checks (default 0.05 0.1 0.2; 0.05 is "
+                    "a typical planner resolution)")
+    ap.add_argument("--span", type=float, default=1.0, help="largest change per joint (rad)")
+    ap.add_argument("--boxes", type=int, default=3)
+    ap.add_argument("--plates", type=int, default=3)
+    ap.add_argument("--arms", nargs="+", default=sorted(ARMS), choices=sorted(ARMS))
+    ap.add_argument("--self-collision", nargs="+", default=["off", "on"], choices=["off", "on"])
+    args = ap.parse_args(argv)
+    try:
+        import fcl  # noqa: F401
+        import pinocchio  # noqa: F401
+        import yourdfpy  # noqa: F401
+    except ImportError as e:
+        print(f"bench_robot: skipped ({e.name} is not installed)")
+        return 0
+    import polyccd as P
+    from polyccd.apps._demo_robot import example_robot_file
+    from polyccd.robot import load_urdf
+    if any(example_robot_file(f) is None for arm in args.arms for f in ARMS[arm]):
+        print("bench_robot: skipped (example-robot-data is not installed)")
+        return 0
+    print(f"bench_robot: {args.n} segments per arm and setting (seed {args.seed}, span "
+          f"{args.span} rad), {args.boxes} boxes + {args.plates} plates (2 mm), discrete every "
+          f"{' / '.join(map(str, args.resolution))} rad")
+    summary = []
+    for name in args.arms:
+        for sc in args.self_collision:
+            run_arm(P, load_urdf, example_robot_file, name, sc == "on", args, summary)
+    print("\n| arm | self-collision | polyccd decide mean / median ms | polyccd first mean / "
+          "median ms | FCL @ res mean / median ms | decide / FCL (mean, median) | first / FCL "
+          "mean | colliding | FCL misses (0.05 / 0.1 / 0.2) |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for name, sc, times, fcl, r, misses, hits in summary:
+        d, f = times["decide"], times["first"]
+        mean, med = statistics.mean, statistics.median
+        print(f"| {name} | {sc} | {1e3 * mean(d):.2f} / {1e3 * med(d):.2f} | "
+              f"{1e3 * mean(f):.2f} / {1e3 * med(f):.2f} | {r}: {1e3 * mean(fcl):.2f} / "
+              f"{1e3 * med(fcl):.2f} | {mean(d) / mean(fcl):.2f}x, {med(d) / med(fcl):.2f}x | "
+              f"{mean(f) / mean(fcl):.2f}x | {hits} | "
+              f"{' / '.join(str(misses[x]) for x in sorted(misses))} |")
     return 0
 
 

@@ -39,12 +39,15 @@ from ._scene import check_scene as check  # noqa: E402
 from ._index import Index  # noqa: E402
 from ._limits import Cancel, Limits  # noqa: E402
 from ._chain import Chain  # noqa: E402
+from ._contact import ContactGeometry  # noqa: E402
+from ._step import StepContacts, StepResult, check_step, collision_free_stepsize  # noqa: E402
 
 __all__ = ["__version__", "KINDS", "BROAD_PHASES", "solve", "solve_linear", "collides_linear",
            "solve_linear_many",
            "LinearBatch", "Result", "Answers", "answers",
            "ContactTime", "Feature", "Motion", "Chain", "Mesh", "Spheres", "Body", "check",
-           "Index", "Limits", "Cancel",
-           "SceneResult", "PairResult", "Contact", "Error", "InputError",
+           "Index", "Limits", "Cancel", "check_step", "collision_free_stepsize",
+           "StepResult", "StepContacts",
+           "SceneResult", "PairResult", "Contact", "ContactGeometry", "Error", "InputError",
            "LimitError", "InternalError"]
 

@@ -88,27 +88,28 @@ def _fractions(doubles, texts, shape):
     return out.reshape(shape)
 
 
-def _indices(value):
-    """The triangles as a C-contiguous uint32 array of shape (nt, 3), or InputError."""
+def _indices(value, name="triangles", width=3):
+    """The index rows of `name` (triangles, or a step's faces, edges) as a C-contiguous
+    uint32 array of shape (n, width), flattened, with n; or InputError naming the entry."""
     if isinstance(value, np.ndarray):
-        if value.ndim != 2 or value.shape[1] != 3:
-            raise InputError(f"triangles: expected an array of shape (n, 3), got shape "
+        if value.ndim != 2 or value.shape[1] != width:
+            raise InputError(f"{name}: expected an array of shape (n, {width}), got shape "
                              f"{value.shape}")
         if value.dtype.kind not in "iu":
-            raise InputError(f"triangles: expected integer indices, got dtype {value.dtype}")
+            raise InputError(f"{name}: expected integer indices, got dtype {value.dtype}")
         # Fast path (body builds of big meshes): every index in range, converted at once;
         # otherwise the per-entry loop below names the first bad entry.
         if value.size == 0 or (int(value.min()) >= 0 and int(value.max()) <= _UINT_MAX):
             return len(value), np.ascontiguousarray(value, dtype=np.uint32).ravel()
         value = value.tolist()
-    rows = _items(value, "triangles", "a list of [i, j, k] index triples")
+    rows = _items(value, name, f"a list of rows of {width} vertex indices")
     flat = []
     for t, row in enumerate(rows):
-        items = _items(row, f"triangles[{t}]", "3 vertex indices")
-        if len(items) != 3:
-            raise InputError(f"triangles[{t}]: expected 3 vertex indices, got {len(items)}")
+        items = _items(row, f"{name}[{t}]", f"{width} vertex indices")
+        if len(items) != width:
+            raise InputError(f"{name}[{t}]: expected {width} vertex indices, got {len(items)}")
         for k, x in enumerate(items):
-            place = f"triangles[{t}][{k}]"
+            place = f"{name}[{t}][{k}]"
             if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Integral):
                 raise InputError(f"{place}: {show(x)} is not an integer vertex index")
             if not 0 <= x <= _UINT_MAX:

@@ -8,13 +8,14 @@ applications (polyccd.apps.load_scene, to_png, to_trimesh).
 import struct
 import threading
 from dataclasses import dataclass, field
-from typing import Optional, Tuple
+from typing import Optional, Sequence, Tuple
 
 import numpy as np
 
 from . import _handles as handles
 from . import _limits
 from ._body import Mesh, Spheres
+from ._contact import ContactGeometry, contact_geometry as _contact_geometry
 from ._errors import InputError, check
 from ._motion import Motion
 from ._numbers import fraction_from_text, show
@@ -78,7 +79,7 @@ class SceneResult:
     pairs: Tuple[PairResult, ...]
     first: Tuple[PairResult, ...]
     stats: dict
-    # The bodies solved (for polyccd.apps.to_png / to_trimesh): not compared, not pickled.
+    # The bodies solved (for contact_geometry, polyccd.apps.to_png / to_trimesh): not compared, not pickled.
     bodies: tuple = field(default=(), compare=False, repr=False)
 
     def __getstate__(self):
@@ -103,8 +104,30 @@ class SceneResult:
                         found.setdefault(kind, set()).add(k)
         return {kind: np.array(sorted(ks), dtype=np.int64) for kind, ks in sorted(found.items())}
 
+    def contact_geometry(self, pair: int = 0, contact: int = 0, *,
+                         bodies: Optional[Sequence[Body]] = None) -> ContactGeometry:
+        """The contact point and normal (a polyccd.ContactGeometry: enclosures,
+        and exact Fractions when the time is exact) of contact `contact` of pair `pair`
+        (indices into self.pairs and its contacts) at that contact's first time.
+        pccd_contact_geometry_compute has the definitions; a result of a solve with
+        min_distance > 0 is refused when its features are apart. bodies: default the
+        ones this result was solved from."""
+        bodies = self.bodies if bodies is None else list(bodies)
+        if not bodies:
+            raise InputError("bodies: this result does not hold its bodies (it was "
+                             "pickled or made elsewhere); pass bodies=[...]")
+        p = _item(self.pairs, pair, "pair")
+        c = _item(p.contacts, contact, "contact")
+        return _contact_geometry(bodies[p.bodies[0]], c.a, bodies[p.bodies[1]], c.b, c.first_contact)
+
 
 _WHOLE = lib.PCCD_WHOLE
+
+
+def _item(items, k, place):
+    if isinstance(k, bool) or not isinstance(k, int) or not 0 <= k < len(items):
+        raise InputError(f"{place}: expected an index from 0 to {len(items) - 1}, got {show(k)}")
+    return items[k]
 
 
 def _time(rep, pair, contact):
@@ -148,33 +171,34 @@ _OPTIONS_MAX = 64
 
 
 def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None,
-             min_distance=None):
-    """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query.
+             min_distance=None, want_time=True):
+    """(cfg, keep-alive, pccd_scene_options) of the keyword arguments of check/query
+    (want_time False: decide mode, pccd_config.want_time = 0).
     Only conversions are cached, by value (the library reads and checks cfg and opt on
     every call); a call with limits converts them each time (a Limits holds a Cancel
     and a clock, so it is no cache key)."""
     key = (time_tolerance, type(time_tolerance), all_contacts, type(all_contacts), threads,
            type(threads), broad_phase, want_exact, type(want_exact),
-           min_distance, type(min_distance))
+           min_distance, type(min_distance), want_time, type(want_time))
     if limits is not None:
         return _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
-                            limits, min_distance)
+                            limits, min_distance, want_time)
     try:
         return _OPTIONS[key]
     except KeyError:
         pass
     except TypeError:  # an unhashable argument: built each time (and checked there)
         return _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
-                            limits, min_distance)
+                            limits, min_distance, want_time)
     out = _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits,
-                       min_distance)
+                       min_distance, want_time)
     if len(_OPTIONS) < _OPTIONS_MAX:
         _OPTIONS[key] = out
     return out
 
 
 def _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None,
-                 min_distance=None):
+                 min_distance=None, want_time=True):
     if broad_phase not in BROAD_PHASES:
         raise InputError("broad_phase: expected \"auto\", \"boxes\", \"brute\", \"bvh\" or \"range\", "
                          f"got {show(broad_phase)}")
@@ -182,7 +206,9 @@ def _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
     _limits.warn_threads(threads)
     if all_contacts not in (True, False):
         raise InputError(f"all_contacts: expected True or False, got {show(all_contacts)}")
-    cfg, keep = _config(time_tolerance, True, want_exact, limits, min_distance)
+    if want_time not in (True, False):
+        raise InputError(f"first_contact: expected True or False, got {show(want_time)}")
+    cfg, keep = _config(time_tolerance, want_time, want_exact, limits, min_distance)
     opt = ffi.new("pccd_scene_options *")
     check(lib.pccd_scene_options_init(opt))
     opt.threads = threads
@@ -214,14 +240,17 @@ def _pair_index(x, names, place):
 
 def check_scene(bodies, *, time_tolerance="1e-12", all_contacts=False, threads=1,
                 broad_phase="auto", want_exact=True, limits=None, min_distance=None,
-                skip_pairs=()):
+                skip_pairs=(), first_contact=True):
     """Every body pair in contact and the scene's first contact (docs/python.md, "Scenes").
     limits: a polyccd.Limits (work limits, input limit) or None for the defaults.
     min_distance: delta >= 0: contacts are times when bodies are within delta.
-    skip_pairs: body pairs (i, j) (indices or names) not to check."""
+    skip_pairs: body pairs (i, j) (indices or names) not to check.
+    first_contact=False: decide mode (pccd_config.want_time = 0): the solve stops at the
+    first pair found in contact, reported alone with a witness (some touching features,
+    an enclosure of one of its contact times, not necessarily the first)."""
     bodies = _bodies_list(bodies)  # fewer than 2: pccd_scene_solve says so
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
-                               limits, min_distance)
+                               limits, min_distance, first_contact)
     rep = _scratch.report
     if len(bodies) == 2 and not skip_pairs:  # one call, no scene (pccd_pair_solve: the same)
         a, b = bodies

@@ -187,51 +187,39 @@ class Robot:
 
     def check(self, q0, q1, obstacles=(), *, self_collision=True, allowed=None,
               time_tolerance="1e-12", all_contacts=False, threads=1, broad_phase="auto",
-              min_distance=None, limits=None, joint_limits="error"):
+              min_distance=None, limits=None, first_contact=True, filter=True,
+              joint_limits="error"):
         """The exact first contact over the segment q0 -> q1 of the robot with the
         obstacles (polyccd.Body, stationary or moving) and, when self_collision, of its
         links with each other except the allowed pairs (an iterable of link-name pairs;
-        None: adjacent_pairs()) and a link's own geometries. One polyccd scene with those
-        pairs skipped (pccd_scene_set_pair_check); obstacle pairs are not checked.
-        min_distance: delta >= 0 (pccd_config.min_distance): a contact is the first time
-        the checked pairs come within delta (the broad phases grow their boxes by delta).
-        limits: a polyccd.Limits (time, work, cancel, number size) for the whole check.
-        joint_limits: "error" (default) or "ignore", check_joint_limits().
+        None: adjacent_pairs() and the SRDF pairs of load_urdf(srdf=...)) and a link's own
+        geometries; obstacle pairs are not checked. One C call (pccd_robot_check): the
+        links' poses are enclosed straight from the joint path and the exact link motions
+        are built only for the pairs that filter cannot separate (filter=False: every
+        pair exactly, the same answer). first_contact=False: decide mode, the check
+        stops at the first pair found in contact, with a witness (features and an
+        enclosure of one of its contact times). result.free_until: a certified
+        contact-free prefix (no contact at any t < free_until; a planner's last valid
+        state). min_distance: delta >= 0 (pccd_config.min_distance): a contact is the
+        first time the checked pairs come within delta. limits: a polyccd.Limits for the
+        whole check. joint_limits: "error" (default) or "ignore", check_joint_limits().
         Returns a RobotResult (first contact, contacts by link name and feature, joint
-        values at the ends of the time enclosure)."""
-        from ._scene import Body, check_scene
+        values at the ends of the time enclosure); its scene lists the pairs found in
+        contact on the way (all of them with all_contacts)."""
+        from ._robot_check import check_robot
         self.check_joint_limits(q0, q1, joint_limits)
-        obstacles = list(obstacles)
-        for i, o in enumerate(obstacles):
-            if not isinstance(o, Body):
-                raise InputError(f"obstacles[{i}]: expected a polyccd.Body, got {type(o).__name__}")
-        robot_bodies, owner = self.bodies(q0, q1)
-        if allowed is None:
-            allowed = self.adjacent_pairs()
-        allowed_set = set()
-        for k, pair in enumerate(allowed):
-            pair = tuple(pair)
-            if len(pair) != 2 or any(x not in self.tree for x in pair):
-                raise InputError(f"allowed[{k}]: {pair!r} is not a pair of link names")
-            allowed_set.add(frozenset(pair))
-        n = len(robot_bodies)
-        skip = []
-        for i in range(n):
-            for j in range(i + 1, n):
-                if (not self_collision or owner[i] == owner[j]
-                        or frozenset((owner[i], owner[j])) in allowed_set):
-                    skip.append((i, j))
-        for i in range(len(obstacles)):
-            for j in range(i + 1, len(obstacles)):
-                skip.append((n + i, n + j))
-        bodies = robot_bodies + [Body(o.shape, o.motion, name=o.name if o.name is not None
-                                      else f"obstacle{i}") for i, o in enumerate(obstacles)]
-        if len(bodies) < 2:
-            raise InputError("obstacles: nothing to check (one body, no obstacle)")
-        r = check_scene(bodies, time_tolerance=time_tolerance, all_contacts=all_contacts,
-                        threads=threads, broad_phase=broad_phase, skip_pairs=skip,
-                        min_distance=min_distance, limits=limits)
-        return RobotResult.of(r, self, q0, q1)
+        r, free = check_robot(self, q0, q1, obstacles, self_collision=self_collision,
+                              allowed=allowed, time_tolerance=time_tolerance,
+                              all_contacts=all_contacts, threads=threads,
+                              broad_phase=broad_phase, min_distance=min_distance,
+                              limits=limits, first_contact=first_contact, filter=filter)
+        return RobotResult.of(r, self, q0, q1, free)
+
+    def allowed_from_srdf(self, path):
+        """The link pairs of an SRDF file's disable_collisions elements (frozensets of
+        link names); e.g. allowed=robot.adjacent_pairs() | robot.allowed_from_srdf(p)."""
+        from ._robot_check import read_srdf
+        return read_srdf(path, self)
 
     def check_path(self, waypoints, obstacles=(), **options):
         """Checks the segments waypoints[0] -> waypoints[1] -> ... in order and stops at
@@ -265,16 +253,17 @@ class RobotResult:
     contacts: tuple                # RobotContact of the pairs that may touch first
     joint_values: Optional[tuple]  # ({joint: value} at first_contact.lo, at .hi)
     scene: object                  # the SceneResult
+    free_until: object = None      # Fraction: no contact at any t < free_until
 
     @staticmethod
-    def of(r, robot, q0, q1):
+    def of(r, robot, q0, q1, free_until=None):
         contacts = tuple(RobotContact((p.names[0],) + tuple(c.a), (p.names[1],) + tuple(c.b),
                                       c.first_contact) for p in r.first for c in p.contacts)
         values = None
         if r.collides:
             values = (robot.joint_values(q0, q1, r.first_contact.lo),
                       robot.joint_values(q0, q1, r.first_contact.hi))
-        return RobotResult(r.collides, r.first_contact, contacts, values, r)
+        return RobotResult(r.collides, r.first_contact, contacts, values, r, free_until)
 
 
 @dataclass(frozen=True)
@@ -282,8 +271,10 @@ class PathResult:
     segment: Optional[int]   # the first colliding segment (waypoints[s] -> [s + 1]), or None
     result: Optional[RobotResult]
 
-def load_urdf(path, *, geometry="collision"):
-    """A Robot from the URDF file at path; geometry: "collision" (default) or "visual".
+def load_urdf(path, *, geometry="collision", srdf=None):
+    """A Robot from the URDF file at path; geometry: "collision" (default) or "visual";
+    srdf: an SRDF file whose disable_collisions pairs Robot.check allows by default (with
+    the adjacent pairs).
     Mesh file names ("package://...", relative) are resolved by yourdfpy's default
     handler (relative to the URDF file and its parent folders). InputError for a
     missing or unreadable file, an unsupported joint type, a zero axis, a bad number."""
@@ -380,6 +371,8 @@ def load_urdf(path, *, geometry="collision"):
     out.joint_types = {j.name: j.type for j in robot.joints}
     out.mimic_joints = {j.name: (j.mimic.joint, float(j.mimic.multiplier if j.mimic.multiplier is not None else 1),
                                  float(j.mimic.offset or 0)) for j in robot.joints if j.mimic is not None}
+    if srdf is not None:
+        out.srdf_pairs = out.allowed_from_srdf(srdf)
     return out
 
 

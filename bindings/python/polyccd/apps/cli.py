@@ -63,14 +63,14 @@ def _check_json(result):
     return out
 
 
-def _check_serial(files, threads, progress, limits=None):
-    """(SceneResult | Result | InputError) per file, solved here in order. --max-seconds
-    covers each file's reading and its solve together (_reading.py)."""
+def _check_serial(files, threads, progress, limits=None, decide=False):
+    """(SceneResult | Result | InputError) per file, in order (--max-seconds: read + solve)."""
     with bar(len(files), "check", "file", progress if len(files) > 1 else False) as b:
         for path in files:
             try:
                 (what, case), mine = read_within(read_case, path, limits)
-                yield (solve_scene_case(case, limits=mine, threads=threads) if what == "scene"
+                yield (solve_scene_case(case, limits=mine, threads=threads,
+                                        first_contact=not decide) if what == "scene"
                        else solve_case(case, mine))
             except InputError as e:
                 yield e
@@ -83,19 +83,23 @@ def cmd_check(args):
     files = args.file
     status = OK
     with contextlib.ExitStack() as stack:
+        if _distributed(args) and args.decide:
+            _error("--decide: not with a cluster (--scheduler / --workers)")
+            return BAD_INPUT
         if _distributed(args):
             distributed, client = stack.enter_context(_cluster(args))
             results = distributed.check_map(files, threads=args.threads, client=client,
                                             limits=_limits(args),
                                             progress=_progress(args))
         else:
-            results = _check_serial(files, args.threads, _progress(args), _limits(args))
+            results = _check_serial(files, args.threads, _progress(args), _limits(args),
+                                    args.decide)
         stack.callback(results.close)  # the bar ends (and the cluster's tasks) before more output
         for path, result in zip(files, results):
             if isinstance(result, Exception):  # this file's error; the others go on
-                bug = not isinstance(result, InputError)
+                bug = not isinstance(result, InputError)  # then an InternalError: status 1
                 _error(f"{path}: {type(result).__name__ + ': ' if bug else ''}{result}")
-                status = BAD_INPUT if not bug else status or FAILED
+                status = status or FAILED if bug else BAD_INPUT
                 continue
             out = _check_json(result)
             echo(json.dumps(out if len(files) == 1 else {"file": path, **out}))
@@ -172,23 +176,20 @@ def cmd_index(args):
             stack.callback(results.close)  # the bar ends before more output
             for j, (k, r) in enumerate(zip(others, results)):
                 if isinstance(r, Exception):  # this query's error; the others go on
-                    message = str(r).removeprefix(f"queries[{j}]: ")
-                    errors.append(f"{args.file}: bodies[{k}]: {message}")
-                    continue
-                lines.append(json.dumps(index_json(names[stored], names[k], r,
-                                                   args.all_contacts)))
+                    errors.append(f"{args.file}: bodies[{k}]: " + str(r).removeprefix(f"queries[{j}]: "))
+                else:
+                    lines.append(json.dumps(index_json(names[stored], names[k], r, args.all_contacts)))
     except InputError as e:
         _error(f"{args.file}: {e}")
         return BAD_INPUT
     for line in lines:
         print(line)
-    for message in errors:
-        _error(message)
+    if errors:  # one line each
+        _error("\npolyccd: ".join(errors))
     return BAD_INPUT if errors else OK
 
 
 def _index_serial(ix, queries, options, progress):
-    """ix.query of each query, or its InputError named queries[j] (as index_map)."""
     with bar(len(queries), "index queries", "query", progress) as b:
         for j, q in enumerate(queries):
             try:
@@ -215,8 +216,7 @@ def cmd_corpus(args):
             outcomes = _corpus_serial(files, _progress(args))
         stack.callback(outcomes.close)  # the bar ends before the summary line
         for path, reasons in zip(files, outcomes):
-            if isinstance(reasons, Exception):  # met on this case only (corpus_map)
-                reasons = [str(reasons)]
+            reasons = [str(reasons)] if isinstance(reasons, Exception) else reasons  # corpus_map
             if reasons:
                 failed += 1
                 echo(f"FAIL {path}: " + "; ".join(reasons))
@@ -252,11 +252,9 @@ def run_queries(paths, kind=None, as_json=False, out=echo, root=None, args=None)
         else:
             outcomes = _queries_serial(files, kind, progress)
         stack.callback(outcomes.close)  # the bar ends before the total line
-        bad = None
-        for path, report in zip(files, outcomes):  # a bad file does not stop the others
-            bad = _report_queries(path, report, root, as_json, out, reports) or bad
-    if bad is not None:
-        return bad
+        bad = [_report_queries(path, r, root, as_json, out, reports) for path, r in zip(files, outcomes)]
+    if any(bad):  # the first bad file's status (the others were still run)
+        return next(b for b in bad if b)
     if not as_json:
         n = sum(r.queries for r in reports)
         seconds = sum(r.seconds_per_query * r.queries for r in reports)
@@ -280,10 +278,9 @@ def _queries_serial(files, kind, progress):
 
 def _report_queries(path, report, root, as_json, out, reports):
     """Prints one file's report (or its error: then returns the exit status)."""
-    if isinstance(report, Exception):
-        bug = not isinstance(report, InputError)
-        _error(f"{type(report).__name__ + ': ' if bug else ''}{report}")
-        return FAILED if bug else BAD_INPUT
+    if isinstance(report, Exception):  # InputError: status 2; a bug (InternalError): 1
+        _error(f"{'' if isinstance(report, InputError) else type(report).__name__ + ': '}{report}")
+        return BAD_INPUT if isinstance(report, InputError) else FAILED
     if root is not None:
         report.file = str(path.relative_to(root))
     reports.append(report)
@@ -299,12 +296,15 @@ def cmd_queries(args):
 
 def cmd_demo(args):
     from ._demo_bodies import run_demo_scenes  # needs trimesh, gemmi, matplotlib
-    print(f"polyccd {__version__} demo: real scenes and a robot arm, checked exactly\n")
+    print(f"polyccd {__version__} demo: real scenes, a robot arm and a simulator step, checked exactly\n")
     results = run_demo_scenes(args.out, threads=args.threads)
     status = OK if all(r[0].collides for r in results.values()) else FAILED
     from ._demo_robot import run_robot_demo  # skips itself without yourdfpy / robot data
     print()
     status = max(status, OK if run_robot_demo(args.out)[2] else FAILED)
+    from ._demo_step import run_step_demo
+    print()
+    status = max(status, OK if run_step_demo(args.out, threads=args.threads)[0].collides else FAILED)
     print(f"\nexact answers for degenerate moving primitives\n")
     status = max(status, OK if run_cases(print) else FAILED)
     folder = query_dir()
@@ -389,6 +389,10 @@ def parser():
                        "(several files: one JSON line per file, with \"file\")")
     c.add_argument("file", nargs="+", metavar="FILE.json")
     c.add_argument("--threads", type=int, default=1, help="worker threads for scenes (default 1)")
+    c.add_argument("--decide", action="store_true",
+                   help="scene files: decide mode (does anything touch on [0, 1]?), stopping "
+                   "at the first pair found in contact; its first_contact is then an "
+                   "enclosure of one of its contact times, not necessarily the first")
     _limit_flags(c)
     _cluster_flags(c)
     c.set_defaults(run=cmd_check)

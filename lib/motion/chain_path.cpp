@@ -1,0 +1,171 @@
+#include "motion/chain_path.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pccd::motion {
+
+using arith::Interval;
+using arith::round_up;
+
+namespace {
+
+constexpr double kSlack = 0x1p-40;  // chain_path.h, "Rounding"
+constexpr double kTiny = 1e-300;
+
+double up(double x) { return x * (1 + kSlack) + kTiny; }  // x >= 0, rounding covered
+
+Interval sq(const Interval &x) {
+  if (x.lo >= 0 || x.hi <= 0) return x * x;  // one sign: the products' hull is exact
+  const double m = std::max(-x.lo, x.hi);
+  return {0.0, round_up(m * m)};
+}
+
+Interval clip(const Interval &x, double lo, double hi) {
+  return {std::max(x.lo, lo), std::min(x.hi, hi)};  // both hold the true value
+}
+
+double norm(const double v[3]) { return up(std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2])); }
+
+// The ball (midpoints, Frobenius norm of the radii) of an entrywise interval matrix.
+void ball_of(const Interval M[3][3], double Rm[3][3], double &eps) {
+  double s = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double m = 0.5 * M[i][j].lo + 0.5 * M[i][j].hi;
+      const double r = std::max(round_up(M[i][j].hi - m), round_up(m - M[i][j].lo));  // >= exact
+      Rm[i][j] = m;
+      s += r * r;
+    }
+  eps = up(std::sqrt(up(s)));
+}
+
+// C = A B as balls (chain_path.h).
+void compose(const double A[3][3], double ea, const double B[3][3], double eb, double C[3][3], double &ec) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) C[i][j] = A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j];
+  ec = up(ea + eb + 3 * ea * eb + kSlack * (1 + ea) * (1 + eb));
+}
+
+// o += R v for v in the ball (vm, vr): om and rho updated (chain_path.h).
+void add_rotated(const double R[3][3], double e, const double vm[3], double vr, double om[3], double &rho) {
+  const double nv = norm(vm), no = norm(om);
+  for (int i = 0; i < 3; ++i) om[i] += R[i][0] * vm[0] + R[i][1] * vm[1] + R[i][2] * vm[2];
+  rho = up(rho + (1 + e) * vr + e * (nv + vr) + kSlack * (no + (1 + e) * nv));
+}
+
+// The value of a linear interpolation x0 + t (x1 - x0) over t in T.
+Interval line(double x0, double x1, const Interval &T) { return Interval(x0) + T * (Interval(x1) - Interval(x0)); }
+
+}  // namespace
+
+Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(c) {
+  c.check_segment(q0, q1);
+  const size_t n = c.size();
+  ends_.resize(n);
+  origin_.resize(n);
+  axis2_.resize(n);
+  axis_.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    const Chain_link &L = c.link(k);
+    ends_[k] = joint_doubles(L, q0[k], q1[k]);
+    Interval a[3];
+    for (int i = 0; i < 3; ++i) {
+      axis_[k][i] = arith::nearest_double(L.axis[i]);  // exact: the axis was given as doubles
+      a[i] = Interval(axis_[k][i]);
+    }
+    axis2_[k] = sq(a[0]) + sq(a[1]) + sq(a[2]);
+    Interval w = arith::nearest_double(L.origin_q[0]), x = arith::nearest_double(L.origin_q[1]),
+             y = arith::nearest_double(L.origin_q[2]), z = arith::nearest_double(L.origin_q[3]);
+    const Interval ww = sq(w), xx = sq(x), yy = sq(y), zz = sq(z);
+    const Interval nq = ww + xx + yy + zz;  // > 0: add_link refuses the zero quaternion
+    const Interval two(2.0);
+    Interval R[3][3];
+    R[0][0] = (ww + xx - yy - zz) / nq;
+    R[0][1] = two * (x * y - w * z) / nq;
+    R[0][2] = two * (x * z + w * y) / nq;
+    R[1][0] = two * (x * y + w * z) / nq;
+    R[1][1] = (ww - xx + yy - zz) / nq;
+    R[1][2] = two * (y * z - w * x) / nq;
+    R[2][0] = two * (x * z - w * y) / nq;
+    R[2][1] = two * (y * z + w * x) / nq;
+    R[2][2] = (ww - xx - yy + zz) / nq;
+    Pose_bounds &O = origin_[k];
+    ball_of(R, O.Rm, O.eps);
+    for (int i = 0; i < 3; ++i) O.om[i] = arith::nearest_double(L.origin_p[i]);  // exact
+  }
+}
+
+void Chain_path::enclose(double a, double b, std::vector<Pose_bounds> &out) const {
+  const Interval T(a, b);
+  const size_t n = ends_.size();
+  out.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    const Chain_link &L = c_.link(k);
+    const Joint_doubles &d = ends_[k];
+    const Pose_bounds &O = origin_[k];
+    Pose_bounds &P = out[k];
+    double Rpo[3][3], epo;  // R_parent R_origin
+    if (L.parent < 0) {
+      for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) Rpo[i][j] = O.Rm[i][j];
+        P.om[i] = O.om[i];
+      }
+      epo = O.eps;
+      P.rho = 0;
+    } else {
+      const Pose_bounds &Q = out[L.parent];
+      compose(Q.Rm, Q.eps, O.Rm, O.eps, Rpo, epo);
+      for (int i = 0; i < 3; ++i) P.om[i] = Q.om[i];
+      P.rho = Q.rho;
+      add_rotated(Q.Rm, Q.eps, O.om, 0.0, P.om, P.rho);
+    }
+    const double *ax = axis_[k].data();
+    if (L.joint == Joint_type::prismatic) {
+      const Interval e = line(d.e0, d.e1, T);
+      double vm[3], s = 0;
+      for (int i = 0; i < 3; ++i) {
+        const Interval v = e * Interval(ax[i]);
+        vm[i] = 0.5 * v.lo + 0.5 * v.hi;
+        const double r = std::max(round_up(v.hi - vm[i]), round_up(vm[i] - v.lo));
+        s += r * r;
+      }
+      add_rotated(Rpo, epo, vm, up(std::sqrt(up(s))), P.om, P.rho);
+    }
+    if (L.joint != Joint_type::revolute && L.joint != Joint_type::continuous) {
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) P.Rm[i][j] = Rpo[i][j];
+      P.eps = epo;
+      continue;
+    }
+    Interval J[3][3];
+    const Interval c = line(d.c0, d.c1, T), s = line(d.s0, d.s1, T);
+    const Interval nn = sq(c) + sq(s) * axis2_[k];
+    double Jm[3][3], ej;
+    if (nn.lo > 0) {
+      const Interval two(2.0);
+      Interval alpha = two * c * s / nn, beta = two * sq(s) / nn;
+      if (axis2_[k].lo == 1 && axis2_[k].hi == 1) {
+        alpha = clip(alpha, -1, 1);
+        beta = clip(beta, 0, 2);
+      }
+      // I + alpha [a]x + beta (a a^T - |a|^2 I)
+      const Interval A[3] = {ax[0], ax[1], ax[2]};
+      const Interval cross[3][3] = {{0.0, -A[2], A[1]}, {A[2], 0.0, -A[0]}, {-A[1], A[0], 0.0}};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          Interval v = beta * (A[i] * A[j] - (i == j ? axis2_[k] : Interval(0.0))) + alpha * cross[i][j];
+          if (i == j) v = Interval(1.0) + v;
+          J[i][j] = clip(v, -1, 1);
+        }
+      ball_of(J, Jm, ej);
+    } else {
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) Jm[i][j] = 0;
+      ej = 1;  // a rotation has norm 1
+    }
+    compose(Rpo, epo, Jm, ej, P.Rm, P.eps);
+  }
+}
+
+}  // namespace pccd::motion

@@ -1,0 +1,187 @@
+#include "scene/link_filter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+#include "bvh/hierarchy.h"
+#include "util/work_budget.h"
+
+namespace pccd::scene {
+
+namespace {
+
+using Front = std::vector<std::pair<uint32_t, uint32_t>>;
+
+// What the piece's motion adds to a box of the body (enclose::Pose_piece::spread's bound,
+// recomputed here for poses made without it): |R(t) - Rm| |x| + orad over the body.
+double spread_of(const enclose::Pose_piece &p, const narrow::Body_data &d) {
+  if (!p.finite) return HUGE_VAL;
+  double rr = 0, orad = 0;
+  for (int i = 0; i < 3; ++i) {
+    orad = std::max(orad, p.orad[i]);
+    for (int j = 0; j < 3; ++j) rr = std::max(rr, p.Rr[i][j]);
+  }
+  return 3 * rr * d.reach + orad;
+}
+
+// The world boxes over the piece of an element's points (a triangle's three vertices;
+// a ball's centre grown by its radius), side A's grown by reach.
+int element_boxes(const narrow::Body_data &d, const bvh::Hierarchy &h, uint32_t node,
+                  const enclose::Pose_piece &p, double reach, enclose::Box out[3]) {
+  const uint32_t e = h.elems[h.nodes[node].first];
+  if (!d.mesh) {
+    out[0] = enclose::grow(enclose::point_box(p, d.pts[e], d.pt_err), d.radius_up[e]);
+    if (reach > 0) out[0] = enclose::grow(out[0], reach);
+    return 1;
+  }
+  const auto &t = d.mesh->triangles()[e];
+  for (int v = 0; v < 3; ++v) {
+    out[v] = enclose::point_box(p, d.pts[t[v]], d.pt_err);
+    if (reach > 0) out[v] = enclose::grow(out[v], reach);
+  }
+  return 3;
+}
+
+// n . x over the boxes: an interval holding every value. Each bound is a sum of three
+// products in doubles; in any rounding mode each operation errs by at most 2u = 2^-52
+// relative, so the sum errs by at most 10u times the sum M of the products' magnitudes;
+// both bounds move out by M 2^-48 (> 10u M) + 1e-300 (underflow), as boxes.h does.
+void project(const double n[3], const enclose::Box *b, int count, double &lo, double &hi) {
+  lo = HUGE_VAL;
+  hi = -HUGE_VAL;
+  for (int k = 0; k < count; ++k) {
+    double l = 0, h = 0, m = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double x = n[i] * b[k].lo[i], y = n[i] * b[k].hi[i];
+      l += x < y ? x : y;
+      h += x < y ? y : x;
+      m += std::fabs(x) > std::fabs(y) ? std::fabs(x) : std::fabs(y);
+    }
+    const double e = m * 0x1p-48 + 1e-300;
+    if (std::isnan(l) || std::isnan(h) || std::isnan(e)) {  // unbounded boxes: no claim
+      lo = -HUGE_VAL;
+      hi = HUGE_VAL;
+      return;
+    }
+    lo = std::min(lo, l - e);
+    hi = std::max(hi, h + e);
+  }
+}
+
+// A separating axis test of two leaves' elements over the piece: the elements lie in
+// the convex hulls of their point boxes, so an axis n on which the two sets of boxes
+// project to disjoint intervals separates them at every t of the piece. Axes (any
+// double vectors serve: the projections are certified): the difference of the two
+// sets' box centres, each triangle's normal and, for two triangles, the cross products
+// of their edges, directions taken at the piece's pose midpoints.
+bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t ka, const enclose::Pose_piece &pa,
+                  const narrow::Body_data &B, const bvh::Hierarchy &hb, uint32_t kb, const enclose::Pose_piece &pb,
+                  double reach) {
+  enclose::Box ba[3], bb[3];
+  const int na = element_boxes(A, ha, ka, pa, reach, ba), nb = element_boxes(B, hb, kb, pb, 0, bb);
+  double axes[12][3];
+  int n_axes = 0;
+  double edges[2][3][3];  // world edge directions at the pose midpoints (triangles)
+  double ca[3] = {0, 0, 0}, cb[3] = {0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < na; ++k) ca[i] += (ba[k].lo[i] + ba[k].hi[i]) / na;
+    for (int k = 0; k < nb; ++k) cb[i] += (bb[k].lo[i] + bb[k].hi[i]) / nb;
+    axes[0][i] = cb[i] - ca[i];
+  }
+  n_axes = 1;
+  for (int s = 0; s < 2; ++s) {
+    const narrow::Body_data &d = s == 0 ? A : B;
+    const bvh::Hierarchy &h = s == 0 ? ha : hb;
+    const enclose::Pose_piece &p = s == 0 ? pa : pb;
+    if (!d.mesh) continue;
+    const auto &t = d.mesh->triangles()[h.elems[h.nodes[s == 0 ? ka : kb].first]];
+    const auto &x = d.pts[t[0]], &y = d.pts[t[1]], &z = d.pts[t[2]];
+    const double u[3] = {y[0] - x[0], y[1] - x[1], y[2] - x[2]}, v[3] = {z[0] - x[0], z[1] - x[1], z[2] - x[2]};
+    const double nb_[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    for (int i = 0; i < 3; ++i)
+      axes[n_axes][i] = p.Rm[i][0] * nb_[0] + p.Rm[i][1] * nb_[1] + p.Rm[i][2] * nb_[2];
+    ++n_axes;
+    const double w[3] = {z[0] - y[0], z[1] - y[1], z[2] - y[2]};
+    const double *e3[3] = {u, v, w};
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 3; ++i) edges[s][k][i] = p.Rm[i][0] * e3[k][0] + p.Rm[i][1] * e3[k][1] + p.Rm[i][2] * e3[k][2];
+  }
+  if (A.mesh && B.mesh)  // edge-edge axes: the cross products of the two triangles' edges
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k, ++n_axes) {
+        const double *a = edges[0][j], *b = edges[1][k];
+        axes[n_axes][0] = a[1] * b[2] - a[2] * b[1];
+        axes[n_axes][1] = a[2] * b[0] - a[0] * b[2];
+        axes[n_axes][2] = a[0] * b[1] - a[1] * b[0];
+      }
+  for (int k = 0; k < n_axes; ++k) {
+    double xl, xh, yl, yh;
+    project(axes[k], ba, na, xl, xh);
+    project(axes[k], bb, nb, yl, yh);
+    if (xh < yl || yh < xl) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+double first_uncleared(const narrow::Body_data &A, const Pose_of &pose_a, const narrow::Body_data &B,
+                       const Pose_of &pose_b, double reach) {
+  const bvh::Hierarchy &ha = bvh::hierarchy(A), &hb = bvh::hierarchy(B);
+  struct Item {
+    int d;
+    long i;
+    Front front;
+  };
+  std::vector<Item> stack;
+  stack.push_back({0, 0, Front{{0, 0}}});
+  Front next, work;
+  size_t tests = 0;  // node pairs taken from fronts (kMax_tests)
+  while (!stack.empty()) {
+    Item it = std::move(stack.back());
+    stack.pop_back();
+    const enclose::Pose_piece &pa = pose_a(it.d, it.i), &pb = pose_b(it.d, it.i);
+    const double spread = std::max(spread_of(pa, A), spread_of(pb, B));
+    util::work_step(1 + it.front.size() / 1024);
+    tests += it.front.size();
+    if (tests > kMax_tests) return std::ldexp(static_cast<double>(it.i), -it.d);  // this piece's start
+    next.clear();
+    work = std::move(it.front);
+    while (!work.empty()) {
+      const auto [ka, kb] = work.back();
+      work.pop_back();
+      enclose::Box x = enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h);
+      if (reach > 0) x = enclose::grow(x, reach);
+      if (!enclose::boxes_meet(x, enclose::frame_box(pb, hb.nodes[kb].c, hb.nodes[kb].h))) continue;
+      const bool la = ha.nodes[ka].leaf(), lb = hb.nodes[kb].leaf();
+      const double sa = la ? -1 : ha.size(ka), sb = lb ? -1 : hb.size(kb);
+      if (la && lb && leaves_apart(A, ha, ka, pa, B, hb, kb, pb, reach)) continue;
+      if (std::max(sa, sb) <= spread || (la && lb)) {
+        next.push_back({ka, kb});  // waits for the halves of the piece
+        if (next.size() > kMax_front) {  // the rest waits unrefined (kMax_front)
+          if (next.size() + work.size() > 16 * kMax_front) return std::ldexp(static_cast<double>(it.i), -it.d);
+          next.insert(next.end(), work.begin(), work.end());
+          work.clear();
+        }
+      } else if (sb > sa) {
+        const uint32_t c = hb.nodes[kb].first;
+        work.push_back({ka, c + 1});
+        work.push_back({ka, c});
+      } else {
+        const uint32_t c = ha.nodes[ka].first;
+        work.push_back({c + 1, kb});
+        work.push_back({c, kb});
+      }
+    }
+    if (next.empty()) continue;  // separated on this piece
+    if (it.d == kMax_depth) return std::ldexp(static_cast<double>(it.i), -it.d);  // exact
+    stack.push_back({it.d + 1, 2 * it.i + 1, next});
+    stack.push_back({it.d + 1, 2 * it.i, std::move(next)});
+    next = Front();
+  }
+  return kNever;
+}
+
+}  // namespace pccd::scene

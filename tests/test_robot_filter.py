@@ -1,0 +1,170 @@
+"""Robot checks through the certified filter (pccd_robot_check: link poses enclosed
+straight from the joint path, exact link motions only for the pairs the filter cannot
+separate) give the answers of the exact check of every pair, on random segments of two
+real arms (Panda and UR5 of example-robot-data), obstacles placed where the links pass
+(hits and near misses), self-collision off and on (adjacent and SRDF pairs allowed):
+
+  - against brute force (filter off, broad_phase="brute"; with self-collision the
+    unfiltered bvh, brute force of every link pair taking minutes): the same collides and first
+    contact (exact times equal, enclosures overlapping), with the filter and without it
+    (bvh), the same collides in decide mode, its witness pair touching when checked
+    alone as a scene (pccd_scene_solve on the two bodies), free_until never above
+    brute force's first contact (and equal to the first contact's lo);
+  - against the exact check without the filter (bvh): the same first contact and
+    decide answer on the arms' full meshes (robot versus obstacles).
+(All contacts through the filter against brute force: tests/test_robot.py.)
+Brute force takes every feature pair, so its arms are the links' bounding boxes in their
+own frames (Robot.shapes replaced: 12 triangles a link); the full meshes are compared
+with the unfiltered exact check. POLYCCD_FILTER_SEGMENTS: segments per arm (default 4).
+"""
+import copy
+import os
+import random
+from fractions import Fraction as F
+
+import numpy as np
+import pytest
+
+pytest.importorskip("yourdfpy")
+import polyccd as P  # noqa: E402
+from polyccd.robot import load_urdf  # noqa: E402
+from test_robot_fk import ROBOTS, URDFS, needs_robots, random_segment  # noqa: E402
+
+SEED = 20261125
+SEGMENTS = int(os.environ.get("POLYCCD_FILTER_SEGMENTS", "4"))
+SRDFS = {"panda": "panda_description/srdf/panda.srdf", "ur5": "ur_description/srdf/ur5.srdf"}
+BOX_T = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 4],
+         [2, 6, 3], [3, 6, 7], [0, 4, 2], [2, 4, 6], [1, 3, 5], [3, 7, 5]]
+
+
+def box_mesh(lo, hi):
+    return P.Mesh([[(lo[a], hi[a])[(i >> a) & 1] for a in range(3)] for i in range(8)], BOX_T)
+
+
+def boxed(robot):
+    """The robot with each geometry replaced by its bounding box (same link frame)."""
+    out = copy.copy(robot)
+    out.shapes = [(link, i, k, box_mesh(np.min(s.vertices, axis=0), np.max(s.vertices, axis=0)))
+                  for link, i, k, s in robot.shapes]
+    return out
+
+
+def obstacles_near(robot, q0, q1, rng, n=3, spread=0.15):
+    """Small boxes around points the links' vertices pass at random times (offset by up
+    to spread: hits and near misses)."""
+    motions = robot.motions(q0, q1)
+    out = []
+    for i in range(n):
+        _, _, k, shape = rng.choice(robot.shapes)
+        v = [float(x) for x in shape.vertices[rng.randrange(len(shape.vertices))]]
+        x = [float(c) for c in motions[k].position(v, F(rng.randint(1, 9), 10))]
+        lo = [x[a] + rng.uniform(-spread, spread) for a in range(3)]
+        hi = [lo[a] + rng.uniform(0.005, 0.05) for a in range(3)]
+        out.append(P.Body(box_mesh(lo, hi), name=f"box{i}"))
+    return out
+
+
+def same_first(got, ref, what):
+    assert got.collides == ref.collides, what
+    if not ref.collides:
+        return
+    a, b = got.first_contact, ref.first_contact
+    if a.exact is not None or b.exact is not None:
+        assert a.exact == b.exact, (what, a, b)
+    else:
+        assert a.lo <= b.hi and b.lo <= a.hi, (what, a, b)
+
+
+def pair_touches(robot, q0, q1, obstacles, names):
+    """The two bodies of a reported pair, checked alone as a polyccd scene (the links on
+    robot.motions, pccd_scene_solve): do they touch?"""
+    motions = robot.motions(q0, q1)
+    from polyccd._robot_check import _names
+    own = {n: P.Body(s, motions[k]) for n, (_, _, k, s) in zip(_names(robot), robot.shapes)}
+    own.update({o.name: o for o in obstacles})
+    return P.check([own[names[0]], own[names[1]]]).collides
+
+
+def arm(name):
+    robot = load_urdf(os.path.join(ROBOTS, URDFS[name]), srdf=os.path.join(ROBOTS, SRDFS[name]))
+    return robot
+
+
+@needs_robots
+@pytest.mark.parametrize("name", sorted(URDFS))
+def test_filter_equals_brute_force_on_boxed_arms(name):
+    robot = boxed(arm(name))
+    rng = random.Random(SEED + len(name))
+    seen = {"hit": 0, "free": 0}
+    for k in range(SEGMENTS):
+        q0, q1 = random_segment(robot, rng)
+        q1 = q0 + (q1 - q0) / 3  # about a radian per joint at most
+        obstacles = obstacles_near(robot, q0, q1, rng)
+        for self_collision in (False, True):
+            what = (name, k, self_collision)
+            opts = dict(self_collision=self_collision, time_tolerance="1e-9")
+            plain = robot.check(q0, q1, obstacles, filter=False, **opts)
+            # brute force for the obstacle pairs (every feature pair of a link pair too
+            # would take minutes): with self-collision the unfiltered bvh is the reference
+            brute = (plain if self_collision else
+                     robot.check(q0, q1, obstacles, filter=False, broad_phase="brute", **opts))
+            first = robot.check(q0, q1, obstacles, **opts)
+            same_first(first, brute, what)
+            same_first(plain, brute, what)
+            decide = robot.check(q0, q1, obstacles, first_contact=False, **opts)
+            assert decide.collides == brute.collides, what
+            if brute.collides:
+                assert decide.free_until <= brute.first_contact.lo, what
+                assert first.free_until == first.first_contact.lo, what
+                (witness,) = decide.scene.pairs
+                assert pair_touches(robot, q0, q1, obstacles, witness.names), what
+            else:
+                assert decide.free_until == first.free_until == 1, what
+            seen["hit" if brute.collides else "free"] += 1
+    assert seen["hit"] and seen["free"], seen  # both kinds were checked
+
+
+@needs_robots
+@pytest.mark.parametrize("name", sorted(URDFS))
+def test_filter_equals_unfiltered_on_full_meshes(name):
+    robot = arm(name)
+    rng = random.Random(SEED + 7 * len(name))
+    for k in range(max(2, SEGMENTS // 4)):
+        q0, q1 = random_segment(robot, rng)
+        q1 = q0 + (q1 - q0) / 5
+        obstacles = obstacles_near(robot, q0, q1, rng, n=3)
+        what = (name, k)
+        opts = dict(self_collision=False, time_tolerance="1e-9")
+        ref = robot.check(q0, q1, obstacles, filter=False, **opts)
+        same_first(robot.check(q0, q1, obstacles, **opts), ref, what)
+        decide = robot.check(q0, q1, obstacles, first_contact=False, **opts)
+        assert decide.collides == ref.collides, what
+
+
+@needs_robots
+@pytest.mark.parametrize("name,q", [
+    ("panda", [0, 1.5, 0, 1.5, 0, 3.5, 0, 0.02]),   # joint 4 beyond its upper limit: folded
+    ("ur5", [0, -1.0, 3.1, 3.1, 3.1, 0]),            # elbow and wrists folded back
+])
+def test_overlapping_start_answers_with_one_touching_pair(name, q):
+    """A start pose with overlapping links (self-collision, adjacent pairs allowed): the
+    first contact is exactly t = 0, reported with one touching pair (not every touching
+    triangle pair), which touches when its two bodies are checked alone at the start
+    pose; all_contacts still lists every pair, the witness among them."""
+    robot = load_urdf(os.path.join(ROBOTS, URDFS[name]))
+    q0 = np.array(q, dtype=float)
+    q1 = q0 + 0.2
+    if name == "panda":
+        q1[-1] = q0[-1]
+    allowed = robot.adjacent_pairs()
+    for kw in (dict(), dict(first_contact=False)):
+        r = robot.check(q0, q1, [], allowed=allowed, joint_limits="ignore", **kw)
+        assert r.collides and len(r.scene.pairs) == 1
+        (pair,) = r.scene.pairs
+        assert pair_touches(robot, q0, q0, [], pair.names)
+        if not kw:
+            assert r.first_contact.exact == 0 and r.free_until == 0
+            assert len(r.contacts) == 1
+    every = robot.check(q0, q0, [], allowed=allowed, all_contacts=True, joint_limits="ignore")
+    assert pair.names in {p.names for p in every.scene.pairs}
+    assert sum(len(p.contacts) for p in every.scene.pairs) > 1
