@@ -482,6 +482,11 @@ PCCD_API int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *co
  * above PCCD_MAX_TRAJ_DEGREE ("outer, inner: ..."). On error *out is NULL. */
 PCCD_API int pccd_motion_compose(pccd_motion **out, const pccd_motion *outer,
                                  const pccd_motion *inner);
+/* pccd_motion_compose within the limits of cfg (max_seconds, max_work, cancel:
+ * PCCD_ELIMIT, *out NULL; max_number_bits: the factors' numbers, "outer.rotation[0][2]:
+ * ..."). cfg NULL: no limits, as pccd_motion_compose. */
+PCCD_API int pccd_motion_compose_cfg(pccd_motion **out, const pccd_motion *outer,
+                                     const pccd_motion *inner, const pccd_config *cfg);
 
 /* Decides exactly whether r(t) vanishes for some t in the CLOSED [0, 1], i.e. whether
  * w, x, y, z have a common root there (r with no common root is valid even when each
@@ -490,6 +495,10 @@ PCCD_API int pccd_motion_compose(pccd_motion **out, const pccd_motion *outer,
  * t = 1) when it is rational, else an enclosure "lo < t < hi" of width <= 1e-12 when
  * it is irrational; also PCCD_EINVAL when r is the zero polynomial or m is NULL. */
 PCCD_API int pccd_motion_validate(const pccd_motion *m);
+/* pccd_motion_validate within the limits of cfg (max_seconds, max_work, cancel: ended
+ * with PCCD_ELIMIT; max_number_bits: the motion's numbers, "m.rotation[0][3]: ..."
+ * before any work). cfg NULL: no limits, as pccd_motion_validate. */
+PCCD_API int pccd_motion_validate_cfg(const pccd_motion *m, const pccd_config *cfg);
 
 /* The exact position x(t) of the body point p = (p[0], p[1], p[2]) at time t, written
  * to buf as "x y z": three exact rationals ("p/q", or "p" for integers) separated by
@@ -501,6 +510,12 @@ PCCD_API int pccd_motion_validate(const pccd_motion *m);
  * number beyond the text limits. */
 PCCD_API int pccd_motion_position_s(const pccd_motion *m, const char *const p[3], const char *t,
                                     char *buf, size_t cap, size_t *needed);
+/* pccd_motion_position_s within the limits of cfg (the input limit covers p, t and the
+ * motion; a time of 60,000 bits on a degree-64 motion is seconds of exact work). cfg
+ * NULL: no limits, as pccd_motion_position_s. */
+PCCD_API int pccd_motion_position_cfg_s(const pccd_motion *m, const char *const p[3], const char *t,
+                                        const pccd_config *cfg, char *buf, size_t cap,
+                                        size_t *needed);
 
 /* ---- Kinematic chains ---- */
 
@@ -827,6 +842,12 @@ typedef struct pccd_index pccd_index;
  * quaternion vanishes on [0, 1] ("motion: ..."); *out is NULL on error. Release with
  * pccd_index_free; pccd_index_free(NULL) does nothing. */
 PCCD_API int pccd_index_new(pccd_index **out, const pccd_body *body, const pccd_motion *motion);
+/* pccd_index_new within the limits of cfg (NULL: the defaults of pccd_config_init):
+ * max_seconds, max_work and cancel end the preprocessing with PCCD_ELIMIT (*out NULL);
+ * max_number_bits is checked on the body and the motion first ("motion.rotation[0][1]:
+ * a number of ... bits ..."). pccd_index_new is this without any limit. */
+PCCD_API int pccd_index_new_cfg(pccd_index **out, const pccd_body *body, const pccd_motion *motion,
+                                const pccd_config *cfg);
 PCCD_API void pccd_index_free(pccd_index *ix);
 
 /* Checks body on motion (NULL: stationary) against the indexed body over [0, 1] and

@@ -208,7 +208,7 @@ def test_queries_mismatch_exits_1(tmp_path, run_cli):
 @pytest.mark.parametrize("content, words", [
     ("1,1,1,1,1,1,0\n" * 7, "7 rows"),
     ("1,1,1,1,1,1\n" * 8, "line 1: expected 7 columns"),
-    ("1,1,x,1,1,1,0\n" * 8, "line 1: expected integers"),
+    ("1,1,x,1,1,1,0\n" * 8, "line 1, column 3: expected an integer (ASCII digits)"),
     ("1,1,1,1,1,1,0\n" * 7 + "1,1,1,1,1,1,1\n", "line 8: truth 1 disagrees with line 1"),
     ("1,0,1,1,1,1,0\n" * 8, "line 1: zero denominator"),
 ])

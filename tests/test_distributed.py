@@ -5,6 +5,7 @@ a worker killed mid-run loses no result; the CLI's --workers / --scheduler print
 serial CLI prints. One cluster for the module (starting one costs about a second).
 """
 import fcntl
+import json
 import os
 import pty
 import select
@@ -204,3 +205,60 @@ def test_a_killed_worker_loses_no_result(client):
             break
         time.sleep(0.2)
     assert killed not in now.values() and len(now) == 2, (pids, now)
+
+
+def test_a_bad_item_gets_its_own_error_and_the_others_their_answers(client, tmp_path):
+    """Issue 23, item 4: a query beyond the input limit in the middle of a chunk is
+    named by its place in the whole batch (queries[5], not bodies[1] of its chunk), and
+    every other query gets its answer; a bad file among files gets its own error line."""
+    queries = query_bodies(12)
+    tiny = "1e-5000"  # 16,611 bits: beyond the default max_number_bits
+    queries[5] = Body(BALL, Motion.linear([tiny, 0, 1], [0, 0, -1]), name="q5")
+    got = list(pd.index_map(PLATE, queries, client=client, chunk_size=4))
+    ix = Index(PLATE)
+    for k, (q, r) in enumerate(zip(queries, got)):
+        if k == 5:
+            assert isinstance(r, polyccd.LimitError)
+            assert str(r).startswith("queries[5]: motion.translation[0][0]: a number of 16611 bits")
+        else:
+            assert r == ix.query(q)
+    good = files_under([CORPUS / "bodies" / "spheres-mesh"], "*.json")[:2]
+    bad = tmp_path / "bad.json"
+    doc = json.loads(Path(good[0]).read_text())
+    doc["bodies"][0]["motion"] = {"translaton": [[0], [0], [0]]}
+    bad.write_text(json.dumps(doc))
+    files = [good[0], bad, good[1]]
+    got = list(pd.check_map(files, client=client))
+    assert isinstance(got[1], polyccd.InputError) and "translaton: unknown key" in str(got[1])
+    assert not isinstance(got[0], Exception) and not isinstance(got[2], Exception)
+    serial = run("check", *files)
+    remote = run("check", *files, "--scheduler", client.scheduler.address)
+    assert serial.returncode == remote.returncode == 2
+    assert remote.stdout == serial.stdout and len(remote.stdout.splitlines()) == 2
+    assert remote.stderr == serial.stderr == \
+        f'polyccd: {bad}: bodies[0].motion.translaton: unknown key (did you mean "translation"?)\n'
+
+
+def test_the_embedded_cluster_listens_on_loopback_without_a_dashboard(client):
+    """Issue 23, item 5: dask's endpoints take no authentication; the embedded cluster's
+    scheduler, workers and HTTP server are on 127.0.0.1, and it serves no dashboard
+    unless asked (then on 127.0.0.1 too)."""
+    import urllib.error
+    import urllib.request
+
+    def served(c):
+        info = c.scheduler_info()
+        assert c.scheduler.address.startswith("tcp://127.0.0.1:")
+        assert all(w.startswith("tcp://127.0.0.1:") for w in info["workers"])
+        assert all(w["nanny"].startswith("tcp://127.0.0.1:") for w in info["workers"].values())
+        socks = c.run_on_scheduler(lambda dask_scheduler: [
+            s.getsockname()[0] for s in dask_scheduler.http_server._sockets.values()])
+        assert socks and set(socks) == {"127.0.0.1"}
+        try:
+            url = f"http://127.0.0.1:{info['services']['dashboard']}/status"
+            return urllib.request.urlopen(url, timeout=30).status
+        except urllib.error.HTTPError as e:
+            return e.code
+    assert served(client) == 404
+    with pd.cluster(workers=1, dashboard=True) as c:
+        assert served(c) == 200

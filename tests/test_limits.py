@@ -157,12 +157,10 @@ import polyccd as P
 # As in an interactive Python: a child of a background job (CI) inherits SIGINT ignored,
 # and Python then installs no handler of its own (polyccd leaves an ignored SIGINT alone).
 signal.signal(signal.SIGINT, signal.default_int_handler)
-n = 2000  # 4,000,000 touching pairs with all contacts: minutes (tests/test_limits.py, rows)
-rows = lambda x0: P.Spheres([[x0 + F(k, 2), 0, 0] for k in range(n)], [F(n, 4) + 1] * n)
-bodies = [P.Body(rows(0)), P.Body(rows(F(1, 4)), P.Motion.linear([0, n, 0], [0, -n, 0]))]
+SETUP
 print("started", flush=True)
 try:
-    P.check(bodies, all_contacts=True)
+    CALL
 except KeyboardInterrupt:
     print("interrupted", flush=True)
     sys.exit(3)
@@ -170,20 +168,37 @@ print("finished", flush=True)
 """
 
 
-@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
-def test_ctrl_c_ends_a_long_check():
-    child = subprocess.Popen([sys.executable, "-c", CHILD], stdout=subprocess.PIPE,
+def interrupt_child(setup, call, wait):
+    """Runs `setup` then `call` in a child Python, sends it SIGINT `wait` seconds after
+    the call started; returns (exit status, its next line of output, seconds from the
+    signal to that line)."""
+    script = CHILD.replace("SETUP", setup).replace("CALL", call)
+    child = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE,
                              stderr=subprocess.PIPE, text=True)
     try:
         assert child.stdout.readline().strip() == "started"
-        time.sleep(1.0)  # inside the check by now (building the bodies took less)
+        time.sleep(wait)
+        sent = time.perf_counter()
         child.send_signal(signal.SIGINT)
-        out, err = child.communicate(timeout=30)
+        line = child.stdout.readline().strip()
+        reacted = time.perf_counter() - sent
+        child.communicate(timeout=30)
     finally:
         if child.poll() is None:
             child.kill()
-    assert child.returncode == 3, (out, err)
-    assert out.strip() == "interrupted"
+    return child.returncode, line, reacted
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+def test_ctrl_c_ends_a_long_check():
+    setup = """
+n = 2000  # 4,000,000 touching pairs with all contacts: minutes (rows above)
+rows = lambda x0: P.Spheres([[x0 + F(k, 2), 0, 0] for k in range(n)], [F(n, 4) + 1] * n)
+bodies = [P.Body(rows(0)), P.Body(rows(F(1, 4)), P.Motion.linear([0, n, 0], [0, -n, 0]))]
+"""
+    # 1 s: inside the check by now (building the bodies took less)
+    status, line, _ = interrupt_child(setup, "P.check(bodies, all_contacts=True)", 1.0)
+    assert (status, line) == (3, "interrupted")
 
 
 def test_command_line_limits(run_cli):

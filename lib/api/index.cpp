@@ -15,19 +15,39 @@ using pccd::api::require;
 using pccd::api::biggest_of;
 using pccd::api::scene_body;
 
-extern "C" {
+namespace {
 
-PCCD_API int pccd_index_new(pccd_index **out, const pccd_body *body, const pccd_motion *motion) {
-  return guard(__func__, [&] {
+// The index of body on motion within the limits of cfg; `unlimited`: no limits at all
+// (pccd_index_new, which took no config: any input it accepted, it still accepts).
+int new_index(const char *fn, pccd_index **out, const pccd_body *body, const pccd_motion *motion,
+              const pccd_config *cfg, bool unlimited) {
+  return guard(fn, [&] {
     require(out, "out");
     *out = nullptr;
     require(body, "body");
+    pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;  // all its rules checked
+    if (unlimited) limits.max_number_bits = 0;
     auto ix = std::make_unique<pccd_index>();
-    ix->ix = std::make_unique<const pccd::scene::Online_index>(scene_body(body, motion));
     ix->biggest = biggest_of(body, motion);
+    limits.check(ix->biggest);
+    const pccd::api::Call_budget budget(limits.work);
+    ix->ix = std::make_unique<const pccd::scene::Online_index>(scene_body(body, motion));
     *out = ix.release();
     return PCCD_OK;
   });
+}
+
+}  // namespace
+
+extern "C" {
+
+PCCD_API int pccd_index_new_cfg(pccd_index **out, const pccd_body *body, const pccd_motion *motion,
+                               const pccd_config *cfg) {
+  return new_index(__func__, out, body, motion, cfg, false);
+}
+
+PCCD_API int pccd_index_new(pccd_index **out, const pccd_body *body, const pccd_motion *motion) {
+  return new_index(__func__, out, body, motion, nullptr, true);
 }
 
 PCCD_API void pccd_index_free(pccd_index *ix) { delete ix; }

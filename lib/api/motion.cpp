@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "api/guard.h"
+#include "api/config.h"
 #include "api/motion_handle.h"
 #include "motion/standard_motions.h"
 
@@ -79,6 +80,73 @@ Vec3_q vec_s(const char *const *values, const char *name, size_t k = kNo_point) 
   Vec3_q v;
   for (size_t i = 0; i < 3; ++i) v[i] = number_s(values[first + i], entry(name, k, i));
   return v;
+}
+
+// pccd_motion_compose (cfg NULL: no limits) and pccd_motion_compose_cfg.
+int compose(const char *fn, pccd_motion **out, const pccd_motion *outer, const pccd_motion *inner,
+            const pccd_config *cfg) {
+  return guard(fn, [&] {
+    require(out, "out");
+    *out = nullptr;
+    require(outer, "outer");
+    require(inner, "inner");
+    // the config's rules (struct_size, ...) as for any call; only its limits are used
+    const pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;
+    if (cfg) {
+      limits.check(*pccd::api::motion_biggest(outer), "outer.");
+      limits.check(*pccd::api::motion_biggest(inner), "inner.");
+    }
+    const pccd::api::Call_budget budget(limits.work);
+    pccd::motion::Rigid_motion m = pccd::motion::compose_motions(outer->m, inner->m);
+    // The same limit as the setters, on every polynomial of the result.
+    int deg = 0;
+    for (const Poly_q &c : m.r) deg = std::max(deg, c.degree());
+    for (int i = 0; i < 3; ++i) deg = std::max(deg, std::max(m.o[i].degree(), m.b[i].degree()));
+    if (deg > PCCD_MAX_TRAJ_DEGREE)
+      throw Limit_error("outer, inner: the composite motion has a polynomial of degree " +
+                        std::to_string(deg) + ", above the limit of " +
+                        std::to_string(PCCD_MAX_TRAJ_DEGREE));
+    *out = new pccd_motion{std::move(m)};
+    return PCCD_OK;
+  });
+}
+
+// pccd_motion_validate (cfg NULL: no limits) and pccd_motion_validate_cfg.
+int validate(const char *fn, const pccd_motion *m, const pccd_config *cfg) {
+  return guard(fn, [&] {
+    require(m, "m");
+    // the config's rules (struct_size, ...) as for any call; only its limits are used
+    const pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;
+    if (cfg) limits.check(*pccd::api::motion_biggest(m), "m.");
+    const pccd::api::Call_budget budget(limits.work);
+    m->m.validate();
+    return PCCD_OK;
+  });
+}
+
+// pccd_motion_position_s (cfg NULL: no limits at all, as before the limits existed) and
+// pccd_motion_position_cfg_s.
+int position(const char *fn, const pccd_motion *m, const char *const p[3], const char *t,
+             const pccd_config *cfg, char *buf, size_t cap, size_t *needed) {
+  return guard(fn, [&] {
+    require(m, "m");
+    // the config's rules (struct_size, ...) as for any call; only its limits are used
+    const pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;
+    const Vec3_q point = vec_s(p, "p");
+    const Rational time = number_s(t, "t");
+    if (cfg) {  // the input limit: the point, the time and the motion
+      pccd::api::Biggest_number big;
+      for (size_t k = 0; k < 3; ++k) big.see(point[k], [&] { return place("p", {k}); });
+      big.see(time, [] { return std::string("t"); });
+      big.see(*pccd::api::motion_biggest(m), "m.");
+      limits.check(big);
+    }
+    const pccd::api::Call_budget budget(limits.work);
+    const Vec3_q x = m->m.position(point, time);
+    std::string text;
+    for (int i = 0; i < 3; ++i) text += (i ? " " : "") + pccd::arith::to_string(x[i]);
+    return pccd::api::write_text(text, buf, cap, needed);
+  });
 }
 
 // The quaternion values[0..3], entries named name[i].
@@ -325,42 +393,28 @@ PCCD_API int pccd_motion_compose_pose_s(pccd_motion *m, int side, const char *co
 
 PCCD_API int pccd_motion_compose(pccd_motion **out, const pccd_motion *outer,
                                  const pccd_motion *inner) {
-  return guard(__func__, [&] {
-    require(out, "out");
-    *out = nullptr;
-    require(outer, "outer");
-    require(inner, "inner");
-    pccd::motion::Rigid_motion m = pccd::motion::compose_motions(outer->m, inner->m);
-    // The same limit as the setters, on every polynomial of the result.
-    int deg = 0;
-    for (const Poly_q &c : m.r) deg = std::max(deg, c.degree());
-    for (int i = 0; i < 3; ++i) deg = std::max(deg, std::max(m.o[i].degree(), m.b[i].degree()));
-    if (deg > PCCD_MAX_TRAJ_DEGREE)
-      throw Limit_error("outer, inner: the composite motion has a polynomial of degree " +
-                        std::to_string(deg) + ", above the limit of " +
-                        std::to_string(PCCD_MAX_TRAJ_DEGREE));
-    *out = new pccd_motion{std::move(m)};
-    return PCCD_OK;
-  });
+  return compose(__func__, out, outer, inner, nullptr);
 }
 
-PCCD_API int pccd_motion_validate(const pccd_motion *m) {
-  return guard(__func__, [&] {
-    require(m, "m");
-    m->m.validate();
-    return PCCD_OK;
-  });
+PCCD_API int pccd_motion_compose_cfg(pccd_motion **out, const pccd_motion *outer,
+                                     const pccd_motion *inner, const pccd_config *cfg) {
+  return compose(__func__, out, outer, inner, cfg);
+}
+
+PCCD_API int pccd_motion_validate(const pccd_motion *m) { return validate(__func__, m, nullptr); }
+
+PCCD_API int pccd_motion_validate_cfg(const pccd_motion *m, const pccd_config *cfg) {
+  return validate(__func__, m, cfg);
 }
 
 PCCD_API int pccd_motion_position_s(const pccd_motion *m, const char *const p[3], const char *t,
                                     char *buf, size_t cap, size_t *needed) {
-  return guard(__func__, [&] {
-    require(m, "m");
-    const Vec3_q x = m->m.position(vec_s(p, "p"), number_s(t, "t"));
-    std::string text;
-    for (int i = 0; i < 3; ++i) text += (i ? " " : "") + pccd::arith::to_string(x[i]);
-    return pccd::api::write_text(text, buf, cap, needed);
-  });
+  return position(__func__, m, p, t, nullptr, buf, cap, needed);
+}
+
+PCCD_API int pccd_motion_position_cfg_s(const pccd_motion *m, const char *const p[3], const char *t,
+                                        const pccd_config *cfg, char *buf, size_t cap, size_t *needed) {
+  return position(__func__, m, p, t, cfg, buf, cap, needed);
 }
 
 }  // extern "C"

@@ -1,5 +1,6 @@
 #include "motion/chain.h"
 
+#include <climits>
 #include <cmath>
 #include <cstdio>
 
@@ -49,10 +50,10 @@ Ends joint_ends(const Chain_link &L, size_t k, double q0, double q1) {
     e.e1 = exact(d.e1, where("q1", L, k));
     return e;
   }
-  e.c0 = exact(d.c0, "c0");
-  e.s0 = exact(d.s0, "s0");
-  e.c1 = exact(d.c1, "c1");
-  e.s1 = exact(d.s1, "s1");
+  e.c0 = exact(d.c0, where("q0", k));  // finite: q0, q1 are, and |a| ~ 1 (add_link)
+  e.s0 = exact(d.s0, where("q0", k));
+  e.c1 = exact(d.c1, where("q1", k));
+  e.s1 = exact(d.s1, where("q1", k));
   const Rational dq = b - a;
   const int sd = sgn(dq);
   const Rational ad = sd < 0 ? Rational(-dq) : dq;
@@ -105,10 +106,28 @@ size_t Chain::add_link(long parent, int joint, const double *axis, const double 
   L.joint = static_cast<Joint_type>(joint);
   if (L.joint != Joint_type::fixed) {
     if (!axis) throw Input_error("axis: is NULL");
-    for (int i = 0; i < 3; ++i) L.axis[i] = exact(axis[i], where("axis", i));
+    // The direction scaled exactly by a power of two to a largest component in [1/2, 1):
+    // the joint's motion depends on the direction alone (chain.h), and |a| is then a
+    // double near 1 whatever the axis (1e300 or 1e-200 overflowed or underflowed it,
+    // and the link never turned). For an axis of ordinary size nothing changes: the
+    // doubles derived from it scale by the same power of two, exactly.
+    int top = INT_MIN;
+    for (int i = 0; i < 3; ++i) {
+      L.axis[i] = exact(axis[i], where("axis", i));
+      int e = 0;
+      if (axis[i] != 0) std::frexp(axis[i], &e);  // |axis[i]| < 2^e
+      if (axis[i] != 0 && e > top) top = e;
+    }
+    if (top == INT_MIN) throw Input_error("axis: the direction is the zero vector");
+    if (top < -64 || top > 64)  // ordinary axes keep their exact value
+      for (int i = 0; i < 3; ++i) {
+        if (top > 0) mpq_div_2exp(L.axis[i].get_mpq_t(), L.axis[i].get_mpq_t(), top);
+        else mpq_mul_2exp(L.axis[i].get_mpq_t(), L.axis[i].get_mpq_t(), -top);
+      }
     const Rational n2 = L.axis[0] * L.axis[0] + L.axis[1] * L.axis[1] + L.axis[2] * L.axis[2];
-    if (sgn(n2) == 0) throw Input_error("axis: the direction is the zero vector");
     L.axis_norm = n2 == Rational(1) ? 1.0 : std::sqrt(arith::nearest_double(n2));
+    if (!(std::isfinite(L.axis_norm) && L.axis_norm > 0))
+      throw arith::Internal_error("axis: |axis| is not a positive double after scaling");
   }
   double h[3][2];  // cos, sin of the half angles of roll, pitch, yaw
   for (int i = 0; i < 3; ++i) {
@@ -194,6 +213,8 @@ std::vector<double> Chain::joint_values(const double *q0, const double *q1, cons
     const double S = arith::nearest_double(line(e.s0, e.s1).eval(t)) * L.axis_norm;
     v[k] = q0[k] + 2 * std::atan2(C0 * S - S0 * C, C0 * C + S0 * S);
   }
+  for (size_t k = 0; k < v.size(); ++k)  // no NaN answer (issue 23: a huge axis gave one)
+    if (!std::isfinite(v[k])) throw arith::Internal_error("joint_values: a non-finite joint value");
   return v;
 }
 

@@ -11,7 +11,8 @@ namespace {
 double approx(const Rational &x, double &err) {
   const double d = arith::nearest_double(x);
   const Interval e = arith::enclose(x);
-  err = std::max(err, std::max(d - e.lo, e.hi - d));
+  // Beyond the double range d is infinite and so is the error (inf - inf would be NaN).
+  err = std::isfinite(d) ? std::max(err, std::max(d - e.lo, e.hi - d)) : INFINITY;
   return d;
 }
 
@@ -130,8 +131,18 @@ std::shared_ptr<const Body_data> make_body_data(std::shared_ptr<const motion::Me
     b.box_h[a] = (0.5 * (hi[a] - lo[a]) + pad + 1e-15 * std::fabs(b.box_c[a])) * (1 + 1e-12) + 1e-300;
   }
   b.reach = (reach + pad) * (1 + 1e-12);
+  for (int a = 0; a < 3; ++a)  // a body beyond the double range: an infinite box about 0
+    if (!std::isfinite(b.box_c[a]) || !std::isfinite(b.box_h[a])) {
+      b.box_c[a] = 0;
+      b.box_h[a] = INFINITY;
+    }
   b.feature = median(sizes);
-  if (!(b.feature > 0)) b.feature = b.reach > 0 ? b.reach : 1.0;
+  if (!(b.feature > 0) || !std::isfinite(b.feature)) b.feature = b.reach > 0 && std::isfinite(b.reach) ? b.reach : 1.0;
+  // No NaN reaches a filter or a broad phase (issue 23): the doubles above are upper
+  // bounds, +infinity at worst (numbers beyond the double range), never NaN.
+  bool nan = std::isnan(b.reach) || std::isnan(b.feature) || std::isnan(b.pt_err);
+  for (int a = 0; a < 3; ++a) nan = nan || std::isnan(b.box_c[a]) || std::isnan(b.box_h[a]);
+  if (nan) throw arith::Internal_error("make_body_data: a NaN bound");
   return data;
 }
 

@@ -42,6 +42,12 @@ Hermite<Rational>::Hermite(const Poly<Rational> &f) : n_(f.degree()) {
   S_.assign(kmax + 1, Integer(0));
   S_[0] = n_;
   for (int k = 1; k <= kmax; ++k) {
+    util::work_cost([&] {  // the products of Newton's identity (util/work_budget.h)
+      std::uint64_t c = 0;
+      for (int j = 1; j <= std::min(k, n_); ++j)
+        c += (limbs(c_[n_ - j]) + limbs(lc_pow_[j - 1])) * (limbs(S_[k - j]) + limbs(lc_pow_[j - 1]));
+      return c;
+    });
     Integer acc = 0;
     for (int j = 1; j <= std::min(k - 1, n_); ++j) acc += c_[n_ - j] * lc_pow_[j - 1] * S_[k - j];
     if (k <= n_) acc += k * c_[n_ - k] * lc_pow_[k - 1];
@@ -60,6 +66,11 @@ int Hermite<Rational>::taq(const Poly<Rational> &g) const {
   }
   std::vector<Integer> h(2 * n_ - 1);
   for (int k = 0; k <= 2 * n_ - 2; ++k) {
+    util::work_cost([&] {
+      std::uint64_t c = 0;
+      for (int i = 0; i <= m; ++i) c += (limbs(gi[i]) + limbs(lc_pow_[m - i])) * (limbs(S_[k + i]) + 1);
+      return c;
+    });
     Integer acc = 0;
     for (int i = 0; i <= m; ++i) acc += gi[i] * S_[k + i] * lc_pow_[m - i];
     h[k] = acc;

@@ -50,12 +50,22 @@ inline int pivot_state(const arith::Interval &x) {
   return x.is_point_zero() ? 0 : -1;
 }
 
-// One work step (util/work_budget.h) per exact elimination round: on long numbers a
-// round of a large matrix can take seconds. Nothing for intervals (bounded cost).
+// One work step (util/work_budget.h) per exact elimination round, and each row of a
+// round counted by cost (a row of long numbers can take long). Nothing for intervals.
 template <class NT>
 inline void exact_work_step() {
   if constexpr (std::is_same<NT, arith::Rational>::value || std::is_same<NT, arith::Integer>::value)
     util::work_step();
+}
+// Row i of round k: (n - k) entries m_ij m_kk - m_ik m_kj, each divided by prev.
+template <class NT>
+inline void row_cost(const std::vector<NT> &m, size_t n, size_t k, size_t i, const NT &prev) {
+  exact_cost<NT>([&] {
+    std::uint64_t c = 0;
+    const std::uint64_t pk = limbs(m[k * n + k]) + limbs(m[i * n + k]) + limbs(prev);
+    for (size_t j = k + 1; j < n; ++j) c += (limbs(m[i * n + j]) + limbs(m[k * n + j])) * pk;
+    return 2 * c;
+  });
 }
 
 // The determinant of the n*n matrix m (row-major), by Bareiss elimination with row
@@ -82,9 +92,11 @@ NT bareiss_determinant(std::vector<NT> m, size_t n) {
       for (size_t j = 0; j < n; ++j) std::swap(m[k * n + j], m[piv * n + j]);
       negate = !negate;
     }
-    for (size_t i = k + 1; i < n; ++i)
+    for (size_t i = k + 1; i < n; ++i) {
+      row_cost(m, n, k, i, prev);
       for (size_t j = k + 1; j < n; ++j)
         m[i * n + j] = exact_quotient(m[i * n + j] * m[k * n + k] - m[i * n + k] * m[k * n + j], prev);
+    }
     prev = m[k * n + k];
   }
   return negate ? NT(-m[n * n - 1]) : m[n * n - 1];
@@ -106,9 +118,11 @@ std::vector<int> leading_minor_signs(const std::vector<NT> &a, size_t n) {
     exact_work_step<NT>();
     signs[k] = sign_of(m[k * n + k]);
     if (signs[k] == 0) break;
-    for (size_t i = k + 1; i < n; ++i)
+    for (size_t i = k + 1; i < n; ++i) {
+      row_cost(m, n, k, i, prev);
       for (size_t j = k + 1; j < n; ++j)
         m[i * n + j] = exact_quotient(m[i * n + j] * m[k * n + k] - m[i * n + k] * m[k * n + j], prev);
+    }
     prev = m[k * n + k];
   }
   for (size_t s = k + 1; s < n; ++s) {  // after a zero minor: one determinant each

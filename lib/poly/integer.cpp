@@ -7,9 +7,13 @@ namespace pccd::poly {
 Poly<Rational> primitive_positive(const Poly<Rational> &p) {
   if (p.c.empty()) return p;
   arith::Integer l = 1, g = 0;
-  for (const Rational &x : p.c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
+  for (const Rational &x : p.c) {
+    util::work_cost([&] { return limbs(l) * limbs(x); });  // util/work_budget.h
+    mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), x.get_den_mpz_t());
+  }
   std::vector<arith::Integer> num(p.c.size());
   for (size_t i = 0; i < p.c.size(); ++i) {
+    util::work_cost([&] { return (limbs(l) + limbs(g)) * limbs(p.c[i]); });
     num[i] = p.c[i].get_num() * (l / p.c[i].get_den());
     mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), num[i].get_mpz_t());
   }
@@ -35,6 +39,7 @@ Poly<Rational> prem_positive(Poly<Rational> a, const Poly<Rational> &b) {
   while (a.degree() >= db) {
     const int da = a.degree();
     const arith::Integer la = a.lc().get_num();
+    util::work_cost([&] { return limbs(a) * limbs(lb) + limbs(la) * limbs(b); });
     // a <- lb * a - la * t^(da-db) * b: the leading term cancels.
     for (int i = 0; i < da - db; ++i) a.c[i] = Rational(a.c[i].get_num() * lb);
     for (int i = 0; i <= db; ++i)
@@ -54,6 +59,7 @@ arith::Integer scaled_value(const Poly<Rational> &F, const Rational &t) {
   if (mpz_popcount(den) == 1) {  // q = 2^j: q^(n - i) is a shift by j (n - i)
     const mp_bitcnt_t j = mpz_scan1(den, 0);
     for (int i = n - 1; i >= 0; --i) {
+      util::work_cost([&] { return limbs(v) * limbs(p) + limbs(F.c[i]) + j * (n - i) / 64; });
       v *= p;
       mpz_mul_2exp(term.get_mpz_t(), F.c[i].get_num_mpz_t(), j * mp_bitcnt_t(n - i));
       v += term;
@@ -63,6 +69,7 @@ arith::Integer scaled_value(const Poly<Rational> &F, const Rational &t) {
   arith::Integer qpow = 1;
   const arith::Integer q = t.get_den();
   for (int i = n - 1; i >= 0; --i) {
+    util::work_cost([&] { return limbs(v) * limbs(p) + (limbs(F.c[i]) + limbs(q)) * limbs(qpow); });
     qpow *= q;
     v *= p;
     term = F.c[i].get_num() * qpow;
@@ -84,6 +91,11 @@ bool exact_integer_quotient(std::vector<arith::Integer> f, const std::vector<ari
     if (sgn(f[k]) == 0) continue;
     if (!mpz_divisible_p(f[k].get_mpz_t(), w[dw].get_mpz_t())) return false;
     arith::Integer c;
+    util::work_cost([&] {
+      std::uint64_t s = 0;
+      for (const arith::Integer &x : w) s += limbs(x);
+      return limbs(f[k]) * limbs(w[dw]) + (limbs(f[k]) + 1) * s;
+    });
     mpz_divexact(c.get_mpz_t(), f[k].get_mpz_t(), w[dw].get_mpz_t());
     for (size_t i = 0; i <= dw; ++i) f[k - dw + i] -= c * w[i];
     (*q)[k - dw] = std::move(c);

@@ -6,12 +6,15 @@
 // operations that need a certain leading coefficient call sign() and so throw
 // Uncertain, which the filtered caller turns into an exact recomputation.
 #pragma once
+#include <cstdint>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "arith/convert.h"
 #include "arith/interval.h"
 #include "arith/rational.h"
+#include "util/work_budget.h"
 
 namespace pccd::poly {
 
@@ -57,11 +60,44 @@ struct Poly {
   static bool exact_zero(const Interval &x) { return x.is_point_zero(); }
 };
 
+// The size of exact numbers in limbs (machine words), the measure of the work steps
+// counted by cost (util::work_cost): an operation on an n-limb and an m-limb number
+// costs n * m. Intervals cost nothing (their operations take a bounded time).
+inline std::uint64_t limbs(const arith::Integer &x) { return mpz_size(x.get_mpz_t()); }
+inline std::uint64_t limbs(const Rational &x) {
+  return mpz_size(x.get_num_mpz_t()) + mpz_size(x.get_den_mpz_t());
+}
+inline std::uint64_t limbs(const Interval &) { return 0; }
+template <class NT>
+std::uint64_t limbs(const Poly<NT> &p) {
+  std::uint64_t n = 0;
+  if constexpr (std::is_same<NT, Rational>::value)
+    for (const Rational &x : p.c) n += limbs(x);
+  return n;
+}
+// util::work_cost for exact number types only (cost_of is not called for intervals).
+template <class NT, class F>
+inline void exact_cost(F &&cost_of) {
+  if constexpr (std::is_same<NT, Rational>::value || std::is_same<NT, arith::Integer>::value)
+    util::work_cost(cost_of);
+}
+
+// One exact operation on x and y (a sum reduces to a common denominator, a product
+// cancels common factors): counted per coefficient, as one coefficient of long numbers
+// can take long (tens of milliseconds at a million bits).
+template <class NT>
+inline void op_cost(const NT &x, const NT &y) {
+  exact_cost<NT>([&] { return limbs(x) * limbs(y); });
+}
+
 template <class NT>
 Poly<NT> operator+(const Poly<NT> &a, const Poly<NT> &b) {
   std::vector<NT> r(std::max(a.c.size(), b.c.size()), arith::from_int<NT>(0));
   for (size_t i = 0; i < a.c.size(); ++i) r[i] = a.c[i];
-  for (size_t i = 0; i < b.c.size(); ++i) r[i] = r[i] + b.c[i];
+  for (size_t i = 0; i < b.c.size(); ++i) {
+    op_cost(r[i], b.c[i]);
+    r[i] = r[i] + b.c[i];
+  }
   return Poly<NT>(std::move(r));
 }
 template <class NT>
@@ -74,7 +110,10 @@ template <class NT>
 Poly<NT> operator-(const Poly<NT> &a, const Poly<NT> &b) {
   std::vector<NT> r(std::max(a.c.size(), b.c.size()), arith::from_int<NT>(0));
   for (size_t i = 0; i < a.c.size(); ++i) r[i] = a.c[i];
-  for (size_t i = 0; i < b.c.size(); ++i) r[i] = r[i] - b.c[i];
+  for (size_t i = 0; i < b.c.size(); ++i) {
+    op_cost(r[i], b.c[i]);
+    r[i] = r[i] - b.c[i];
+  }
   return Poly<NT>(std::move(r));
 }
 template <class NT>
@@ -85,6 +124,11 @@ Poly<NT> operator*(const Poly<NT> &a, const Poly<NT> &b) {
     for (size_t j = 0; j < b.c.size(); ++j) r[i + j] = r[i + j] + a.c[i] * b.c[j];
   return Poly<NT>(std::move(r));
 }
+// Exact evaluation in integers (rational_product.cpp): Horner over Q reduces a fraction
+// at every step; in integers one reduction at the end gives the same number.
+template <>
+Rational Poly<Rational>::eval(const Rational &t) const;
+
 // Exact products in integers (rational_product.cpp): the generic loop above reduces a
 // fraction at every product and sum, and those gcds dominated the motion layer's work.
 template <>
@@ -93,7 +137,10 @@ Poly<Rational> operator*(const Poly<Rational> &a, const Poly<Rational> &b);
 template <class NT>
 Poly<NT> operator*(const NT &s, const Poly<NT> &a) {
   std::vector<NT> r(a.c.size());
-  for (size_t i = 0; i < a.c.size(); ++i) r[i] = s * a.c[i];
+  for (size_t i = 0; i < a.c.size(); ++i) {
+    op_cost(s, a.c[i]);
+    r[i] = s * a.c[i];
+  }
   return Poly<NT>(std::move(r));
 }
 
@@ -106,7 +153,10 @@ Poly<NT> rem(Poly<NT> a, const Poly<NT> &b) {
   while (a.degree() >= db) {
     const int da = a.degree();
     NT q = a.lc() / b.lc();
-    for (int i = 0; i <= db; ++i) a.c[da - db + i] = a.c[da - db + i] - q * b.c[i];
+    for (int i = 0; i <= db; ++i) {
+      exact_cost<NT>([&] { return (limbs(q) + limbs(a.c[da - db + i])) * limbs(b.c[i]); });
+      a.c[da - db + i] = a.c[da - db + i] - q * b.c[i];
+    }
     a.c.pop_back();  // the leading term cancels by construction
     a.trim();
   }
@@ -120,9 +170,13 @@ Poly<NT> reparametrize(const Poly<NT> &p, const NT &a, const NT &b) {
   const size_t n = q.size();
   // Taylor shift by a: q(t + a), by repeated synthetic division (Horner scheme).
   for (size_t i = 0; i + 1 < n; ++i)
-    for (size_t j = n - 1; j > i; --j) q[j - 1] = q[j - 1] + a * q[j];
+    for (size_t j = n - 1; j > i; --j) {
+      exact_cost<NT>([&] { return (limbs(q[j - 1]) + limbs(q[j])) * limbs(a); });
+      q[j - 1] = q[j - 1] + a * q[j];
+    }
   NT w = b - a, scale = arith::from_int<NT>(1);
   for (size_t k = 0; k < n; ++k) {
+    exact_cost<NT>([&] { return limbs(q[k]) * limbs(scale) + limbs(scale) * limbs(w); });
     q[k] = q[k] * scale;
     scale = scale * w;
   }

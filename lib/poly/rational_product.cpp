@@ -6,6 +6,9 @@
 // kinematic chain's motions (dyadic coefficients of 50-400 bits, degrees up to 14) spent
 // most of their time in those gcds. Integer inputs (la = lb = 1, the exact stage's
 // normal form) skip the reduction altogether.
+//
+// Both count their work by cost (util::work_cost: a row of the convolution, a Horner
+// step, a reduction), so a limit is checked between any two of them whatever the sizes.
 #include "poly/poly.h"
 
 namespace pccd::poly {
@@ -15,9 +18,13 @@ namespace {
 // p = num / l with integer num and l the lcm of p's denominators.
 void split(const Poly<Rational> &p, std::vector<arith::Integer> *num, arith::Integer *l) {
   *l = 1;
-  for (const Rational &x : p.c) mpz_lcm(l->get_mpz_t(), l->get_mpz_t(), x.get_den_mpz_t());
+  for (const Rational &x : p.c) {
+    util::work_cost([&] { return limbs(*l) * limbs(x); });
+    mpz_lcm(l->get_mpz_t(), l->get_mpz_t(), x.get_den_mpz_t());
+  }
   num->resize(p.c.size());
   for (size_t i = 0; i < p.c.size(); ++i) {
+    util::work_cost([&] { return limbs(*l) * limbs(p.c[i]); });
     arith::Integer &n = (*num)[i];
     mpz_divexact(n.get_mpz_t(), l->get_mpz_t(), p.c[i].get_den_mpz_t());
     n *= p.c[i].get_num();
@@ -34,8 +41,12 @@ Poly<Rational> operator*(const Poly<Rational> &a, const Poly<Rational> &b) {
   split(a, &A, &la);
   split(b, &B, &lb);
   std::vector<arith::Integer> r(A.size() + B.size() - 1);
+  std::uint64_t size_B = 0;
+  if (util::current_budget())
+    for (const arith::Integer &x : B) size_B += limbs(x);
   for (size_t i = 0; i < A.size(); ++i) {
     if (sgn(A[i]) == 0) continue;
+    util::work_cost([&] { return limbs(A[i]) * size_B + limbs(r[i]) * B.size(); });
     for (size_t j = 0; j < B.size(); ++j)
       mpz_addmul(r[i + j].get_mpz_t(), A[i].get_mpz_t(), B[j].get_mpz_t());
   }
@@ -43,9 +54,35 @@ Poly<Rational> operator*(const Poly<Rational> &a, const Poly<Rational> &b) {
   std::vector<Rational> out(r.size());
   for (size_t k = 0; k < r.size(); ++k) {
     out[k] = Rational(r[k], l);
-    if (l != 1) out[k].canonicalize();
+    if (l != 1) {
+      util::work_cost([&] { return limbs(r[k]) * limbs(l); });  // the gcd
+      out[k].canonicalize();
+    }
   }
   return Poly<Rational>(std::move(out));
+}
+
+template <>
+Rational Poly<Rational>::eval(const Rational &t) const {
+  // c_i = C_i / L (L the lcm of the denominators) and t = p / q:
+  // f(t) = (sum C_i p^i q^(n-i)) / (L q^n), the sum by Horner's rule in integers.
+  if (c.empty()) return Rational(0);
+  std::vector<arith::Integer> C;
+  arith::Integer L;
+  split(*this, &C, &L);
+  const size_t n = C.size() - 1;
+  const arith::Integer &p = t.get_num(), &q = t.get_den();
+  arith::Integer v = C[n], qpow = 1;
+  for (size_t i = n; i-- > 0;) {
+    util::work_cost([&] { return limbs(v) * limbs(p) + (limbs(C[i]) + limbs(q)) * limbs(qpow); });
+    qpow *= q;
+    v *= p;
+    v += C[i] * qpow;
+  }
+  Rational out(v, L * qpow);
+  util::work_cost([&] { return limbs(v) * (limbs(L) + limbs(qpow)); });
+  out.canonicalize();
+  return out;
 }
 
 }  // namespace pccd::poly

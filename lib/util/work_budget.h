@@ -7,12 +7,18 @@
 //   - a primitive query solved (pred::solve), and each root-search step of it
 //     (a bisection or refinement step of poly/earliest.h, poly/rational_root.cpp),
 //   - a time piece of a broad phase, a batch of candidate pairs of the scene driver.
-// A step is never more than one such unit, so a call's count of steps is a function of
-// its inputs alone: the scene driver solves the same pairs with the same options for
+// Exact operations on long numbers also count by cost (work_cost below): the
+// polynomial products, remainders, evaluations and eliminations of lib/poly, on which
+// the motions, the feature systems and the index are built, add one step per
+// kCostPerStep limb operations and check the limits there, so the time between two
+// checks is bounded whatever the number sizes (issue 23: a rotation numerator of
+// 2,400-digit coefficients ran 300 s before its first check).
+// A step is one such unit or kCostPerStep limb operations, so a call's count of steps is
+// a function of its inputs alone: the scene driver solves the same pairs with the same options for
 // any number of threads (scene/pair_search.cpp), so a work limit ends the same calls
-// for any thread count. How long a step takes is not bounded (one step on numbers of
-// 100,000 digits can take a second): the wall-clock limit is for that, and the input
-// limit on number sizes (polyccd.h, pccd_config.max_number_bits) is checked up front.
+// for any thread count. (Data a handle keeps between calls, such as a motion's
+// derivation, is counted by the call that derives it.) The input limit on number sizes
+// (polyccd.h, pccd_config.max_number_bits) is checked up front.
 //
 // When a limit is reached, work_step throws Limit_reached, and every later step of the
 // same call throws too (the budget is spent), so parallel workers stop at their next
@@ -99,6 +105,23 @@ extern thread_local Work_budget *tl_budget;
 inline void work_step(std::uint64_t n = 1) {
   if (Work_budget *b = detail::tl_budget) b->step(n);
 }
+// Work counted by its cost: `cost` limb operations (a product of an n-limb by an m-limb
+// number costs n * m, a gcd of such numbers too: an upper bound of GMP's work) are
+// cost / kCostPerStep steps, and the limits are checked. cost_of() is only called under
+// a budget, so without limits this is one thread-local load. Operations cheaper than
+// kCostPerStep add nothing and do not check (the unit steps around them do): 2^16 limb
+// operations take 20-60 us, so a check costs under 1% of the operation it follows, and
+// the cheap operations between two checks (at most a polynomial's coefficients, 65 of
+// degree 64, times a few) stay within milliseconds.
+constexpr std::uint64_t kCostPerStep = std::uint64_t(1) << 16;
+template <class F>
+inline void work_cost(F &&cost_of) {
+  if (Work_budget *b = detail::tl_budget) {
+    const std::uint64_t c = cost_of();
+    if (c >= kCostPerStep) b->step(c / kCostPerStep);
+  }
+}
+
 inline void work_solved() {
   if (Work_budget *b = detail::tl_budget) b->count_solved();
 }

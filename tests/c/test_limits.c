@@ -327,6 +327,74 @@ static void min_distance(void)
   pccd_scene_free(s);
 }
 
+/* The calls that took no config before issue 23 (pccd_index_new, pccd_motion_position_s,
+ * pccd_motion_validate, pccd_motion_compose) have _cfg twins: NULL is no limit, a set cancel
+ * ends them at their first work step with PCCD_ELIMIT under their own name (*out NULL), the
+ * input limit names the number, and within the limits they answer as the plain calls. */
+static void cfg_twins(void)
+{
+  const char *const big[2] = {"1", "1e-5000"}; /* 16,611 bits */
+  const char *const p[3] = {"1", "2", "3"};
+  pccd_config cfg;
+  pccd_cancel *c = NULL;
+  pccd_body *ball = row_of_balls(2, 0);
+  const char *const one_plus_t[2] = {"1", "1"};
+  pccd_motion *m = NULL, *mr = NULL, *out = NULL;
+  pccd_index *ix = NULL;
+  static char a[20000], b[20000]; /* the position of 1e-5000: 10,008 bytes */
+
+  g_case = "the _cfg twins of index_new, position, validate, compose";
+  OK(pccd_motion_new(&m));
+  OK(pccd_motion_set_translation_s(m, 0, big, 2));
+  /* w = x = 1 + t: a common factor, so validation runs a remainder sequence (steps) */
+  OK(pccd_motion_new(&mr));
+  OK(pccd_motion_set_rotation_s(mr, 0, one_plus_t, 2));
+  OK(pccd_motion_set_rotation_s(mr, 1, one_plus_t, 2));
+  OK(pccd_config_init(&cfg));
+  OK(pccd_cancel_new(&c));
+  OK(pccd_cancel_set(c));
+  cfg.cancel = c;
+  FAILS(pccd_index_new_cfg(&ix, ball, mr, &cfg), PCCD_ELIMIT, "pccd_index_new_cfg: config.cancel: ");
+  CHECK(ix == NULL);
+  FAILS(pccd_motion_position_cfg_s(m, p, "1/2", &cfg, a, sizeof a, NULL), PCCD_ELIMIT,
+        "pccd_motion_position_cfg_s: m.translation[0][1]: a number of 16611 bits");
+  cfg.max_number_bits = 0;
+  FAILS(pccd_motion_position_cfg_s(m, p, "1/2", &cfg, a, sizeof a, NULL), PCCD_ELIMIT,
+        "pccd_motion_position_cfg_s: config.cancel: ");
+  FAILS(pccd_motion_validate_cfg(mr, &cfg), PCCD_ELIMIT, "pccd_motion_validate_cfg: config.cancel: ");
+  FAILS(pccd_motion_compose_cfg(&out, m, m, &cfg), PCCD_ELIMIT, "pccd_motion_compose_cfg: config.cancel: ");
+  CHECK(out == NULL);
+  cfg.max_number_bits = 100;
+  OK(pccd_cancel_reset(c));
+  FAILS(pccd_index_new_cfg(&ix, ball, m, &cfg), PCCD_ELIMIT,
+        "pccd_index_new_cfg: motion.translation[0][1]: a number of 16611 bits");
+  FAILS(pccd_motion_compose_cfg(&out, m, m, &cfg), PCCD_ELIMIT, "outer.translation[0][1]: a number of");
+  cfg.struct_size = 3;
+  FAILS(pccd_motion_validate_cfg(m, &cfg), PCCD_EINVAL, "pccd_motion_validate_cfg: config");
+  FAILS(pccd_motion_validate_cfg(NULL, NULL), PCCD_EINVAL, "pccd_motion_validate_cfg: m: is NULL");
+  /* Within the limits (or none): the plain calls' answers. */
+  OK(pccd_config_init(&cfg));
+  cfg.max_number_bits = 0;
+  cfg.max_work = 1000000;
+  OK(pccd_motion_position_cfg_s(m, p, "1/2", &cfg, a, sizeof a, NULL));
+  OK(pccd_motion_position_s(m, p, "1/2", b, sizeof b, NULL));
+  CHECK(strcmp(a, b) == 0);
+  OK(pccd_motion_position_cfg_s(m, p, "1/2", NULL, a, sizeof a, NULL));
+  CHECK(strcmp(a, b) == 0);
+  OK(pccd_motion_validate_cfg(m, NULL));
+  OK(pccd_motion_validate_cfg(mr, &cfg));
+  pccd_motion_free(mr);
+  OK(pccd_motion_compose_cfg(&out, m, m, &cfg));
+  pccd_motion_free(out);
+  OK(pccd_index_new_cfg(&ix, ball, m, &cfg));
+  pccd_index_free(ix);
+  OK(pccd_index_new_cfg(&ix, ball, NULL, NULL));
+  pccd_index_free(ix);
+  pccd_cancel_free(c);
+  pccd_motion_free(m);
+  pccd_body_free(ball);
+}
+
 static void cases(void)
 {
   defaults_and_bad_values();
@@ -334,6 +402,7 @@ static void cases(void)
   work_limit_is_deterministic();
   cancel_and_deadline();
   min_distance();
+  cfg_twins();
 }
 
 int main(void) { return run_in_every_mode(cases); }

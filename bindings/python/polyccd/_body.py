@@ -113,7 +113,7 @@ def _indices(value, name="triangles", width=3):
             if isinstance(x, (bool, np.bool_)) or not isinstance(x, numbers.Integral):
                 raise InputError(f"{place}: {show(x)} is not an integer vertex index")
             if not 0 <= x <= _UINT_MAX:
-                raise InputError(f"{place}: index {int(x)} is not a valid 0-based index")
+                raise InputError(f"{place}: index {show(int(x))} is not a valid 0-based index")
             flat.append(int(x))
     return len(rows), _frozen(np.array(flat, dtype=np.uint32))
 

@@ -26,10 +26,14 @@ class Index:
 
     __slots__ = ("body", "_handle")
 
-    def __init__(self, body: Body) -> None:
+    def __init__(self, body: Body, *, limits=None) -> None:
+        """limits: a polyccd.Limits for the preprocessing (None: no limits; Ctrl-C still
+        ends it)."""
         if not isinstance(body, Body):
             raise InputError(f"body: expected a polyccd.Body, got {show(body)}")
-        handle = handles.new("index", body.shape._handle, _motion_handle(body.motion))
+        cfg = _limits.config(limits)
+        handle = _limits.run(cfg, handles.new, "index", body.shape._handle,
+                             _motion_handle(body.motion), cfg, via="new_cfg")
         object.__setattr__(self, "body", body)
         object.__setattr__(self, "_handle", handle)
 

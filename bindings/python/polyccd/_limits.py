@@ -108,6 +108,26 @@ def apply(cfg, limits):
     cfg.max_number_bits = limits.max_number_bits or 0
 
 
+def config(limits):
+    """A pccd_config of limits for the calls that had none before (Index, Motion.position,
+    Motion.validate): None is no limit at all, not even the input limit (one config per
+    thread, made once: run() only lends it the thread's Ctrl-C flag during a call)."""
+    if limits is None:
+        cfg = getattr(_unlimited, "cfg", None)
+        if cfg is not None:
+            return cfg
+    cfg = ffi.new("pccd_config *")
+    check(lib.pccd_config_init(cfg))
+    if limits is None:
+        cfg.max_number_bits = 0
+        _unlimited.cfg = cfg
+    apply(cfg, limits)
+    return cfg
+
+
+_unlimited = threading.local()
+
+
 # The most threads a call takes, from polyccd.h (PCCD_MAX_THREADS; 1024 in headers
 # older than that constant). Only for the ints a C unsigned cannot hold (thread_count).
 _MAX_THREADS = getattr(lib, "PCCD_MAX_THREADS", 1024)
@@ -157,14 +177,14 @@ def _install():
     return True
 
 
-def run(cfg, fn, *args):
-    """fn(*args), a C call that takes cfg, interruptible by Ctrl-C (see the top). On the
+def run(cfg, fn, *args, **kwargs):
+    """fn(*args, **kwargs), a C call that takes cfg, interruptible by Ctrl-C (see the top). On the
     main thread the call gets the shim's flag in cfg.cancel (or, when the caller gave a
     Cancel, the shim sets that one too). The shim is installed on the first call made
     while SIGINT has Python's default handler; a handler the program installs later
     replaces it (Ctrl-C then waits for the call, as without polyccd's help)."""
     if _get_ident() != _main_ident or (not _shim and not _install()):
-        return fn(*args)
+        return fn(*args, **kwargs)
     own, seen = _shim
     hits = lib.polyccd_py_hit_count()
     if hits != seen:  # a Ctrl-C since the last call: its KeyboardInterrupt has been raised
@@ -173,11 +193,11 @@ def run(cfg, fn, *args):
     if cfg.cancel == _NULL:
         cfg.cancel = own
         try:
-            return fn(*args)
+            return fn(*args, **kwargs)
         finally:
             cfg.cancel = _NULL
     lib.polyccd_py_target_set(ffi.cast("pccd_cancel *", cfg.cancel))
     try:
-        return fn(*args)
+        return fn(*args, **kwargs)
     finally:
         lib.polyccd_py_target_set(_NULL)

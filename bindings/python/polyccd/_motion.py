@@ -17,6 +17,7 @@ from typing import Optional, Sequence, Tuple, Union
 
 from ._types import Coefficients, Number, Pose, Quaternion, Vector
 from . import _handles as handles
+from . import _limits
 from ._errors import InputError, check
 from ._numbers import fraction_from_text, number_text, show
 from ._pccd import ffi, lib
@@ -217,28 +218,37 @@ class Motion:
         check(lib.pccd_motion_compose_pose_s(handle, _SIDES[side], q, o))
         return Motion._wrap(handle, ("compose", (self._recipe, vq, vo, side)))
 
-    def then(self, outer: Motion) -> Motion:
-        """A new motion: outer o self, the point p at outer(self(p, t), t)."""
+    def then(self, outer: Motion, *, limits=None) -> Motion:
+        """A new motion: outer o self, the point p at outer(self(p, t), t). limits: a
+        polyccd.Limits (None: no limits, Ctrl-C still ends the call)."""
         if not isinstance(outer, Motion):
             raise InputError(f"outer: expected a Motion, got {show(outer)}")
-        return _composed(outer, self)
+        return _composed(outer, self, limits)
 
-    def validate(self) -> Motion:
+    def validate(self, *, limits=None) -> Motion:
         """Returns self when r(t) vanishes nowhere on [0, 1]; else InputError with the
-        first vanishing time (exact, or an enclosure when irrational)."""
-        check(lib.pccd_motion_validate(self._handle))
+        first vanishing time (exact, or an enclosure when irrational). limits: a
+        polyccd.Limits (None: no limits, Ctrl-C still ends the call)."""
+        cfg = _limits.config(limits)
+        check(_limits.run(cfg, lib.pccd_motion_validate_cfg, self._handle, cfg))
         return self
 
-    def position(self, p: Vector, t: Number) -> Tuple[Fraction, Fraction, Fraction]:
-        """The exact position of body point p at time t in [0, 1]: 3 Fractions."""
+    def position(self, p: Vector, t: Number, *,
+                 limits=None) -> Tuple[Fraction, Fraction, Fraction]:
+        """The exact position of body point p at time t in [0, 1]: 3 Fractions. limits: a
+        polyccd.Limits (None: no limits, Ctrl-C still ends the call)."""
         point, _keep = _texts(_vector(p, "p"))
         time = _number(t, "t")
+        cfg = _limits.config(limits)
         needed = ffi.new("size_t *")
-        buf = ffi.new("char[]", 256)
-        rc = lib.pccd_motion_position_s(self._handle, point, time, buf, 256, needed)
+        cap = 4096 + 4 * len(ffi.string(time))  # most answers fit: the work is done once
+        buf = ffi.new("char[]", cap)
+        rc = _limits.run(cfg, lib.pccd_motion_position_cfg_s, self._handle, point, time, cfg,
+                         buf, cap, needed)
         if rc == lib.PCCD_ERANGE:
             buf = ffi.new("char[]", needed[0])
-            rc = lib.pccd_motion_position_s(self._handle, point, time, buf, needed[0], needed)
+            rc = _limits.run(cfg, lib.pccd_motion_position_cfg_s, self._handle, point, time, cfg,
+                             buf, needed[0], needed)
         check(rc)
         return tuple(fraction_from_text(x) for x in ffi.string(buf).decode().split(" "))
 
@@ -259,11 +269,13 @@ def _pose_form(pose, place):
     return "matrix", np.ascontiguousarray(a)
 
 
-def _composed(outer, inner):
-    """outer o inner (both Motions), through pccd_motion_compose."""
+def _composed(outer, inner, limits=None):
+    """outer o inner (both Motions), through pccd_motion_compose_cfg."""
     if not isinstance(inner, Motion):
         raise InputError(f"inner: expected a Motion, got {show(inner)}")
-    handle = handles.new("motion", outer._handle, inner._handle, via="compose")
+    cfg = _limits.config(limits)
+    handle = _limits.run(cfg, handles.new, "motion", outer._handle, inner._handle, cfg,
+                         via="compose_cfg")
     return Motion._wrap(handle, ("compose_motions", (outer._recipe, inner._recipe)))
 
 

@@ -7,6 +7,7 @@ sys.get_int_max_str_digits() (4300) digits, so long integers are converted in pi
 """
 import numbers
 import re
+from decimal import Decimal
 from fractions import Fraction
 
 import numpy as np
@@ -23,7 +24,13 @@ def show(value):
     if isinstance(value, str):
         text = value if len(value) <= 60 else f"{value[:40]}... ({len(value)} characters)"
         return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
-    text = repr(value)
+    if isinstance(value, numbers.Integral) and not isinstance(value, bool) \
+            and int(value).bit_length() >= _SAFE_BITS:  # repr() refuses > 4,300 digits
+        return f"an integer of {int(value).bit_length()} bits"
+    try:
+        text = repr(value)
+    except ValueError:  # e.g. a Fraction of such integers
+        return f"a {type(value).__name__} too long to show"
     return text if len(text) <= 60 else text[:40] + "..."
 
 
@@ -75,6 +82,12 @@ def number_text(value, place):
         return int_text(int(value))
     if isinstance(value, numbers.Rational):
         return ratio_text(int(value.numerator), int(value.denominator))
+    if isinstance(value, Decimal):
+        # Its own text ("1E+999999999"), parsed by C within the text limits: Decimal's
+        # as_integer_ratio() would build 10^999999999 first (issue 23: it hung).
+        if not value.is_finite():
+            raise InputError(f"{place}: {show(value)} is not a finite number")
+        return str(value)
     as_ratio = getattr(value, "as_integer_ratio", None)  # float, numpy floats, Decimal
     if as_ratio is not None and not isinstance(value, type):
         try:
@@ -109,12 +122,17 @@ def exact_fraction(text, place):
     if not decimal:
         raise InputError(f"{place}: {show(text)} is not a number (expected an integer, a "
                          'decimal such as "-0.125" or "2.5e-7", or a fraction such as "-7/3")')
-    if decimal.group(1) and abs(int(decimal.group(1))) > lib.PCCD_MAX_EXPONENT:
+    exponent = decimal.group(1) or "0"
+    # Leading zeros aside, more than 9 digits is beyond the limit (as in C): int() is
+    # only called on the short text that remains.
+    significant = exponent.lstrip("+-").lstrip("0") or "0"
+    if len(significant) > 9 or int(significant) > lib.PCCD_MAX_EXPONENT:
         raise LimitError(f"{place}: the exponent of {show(text)} is beyond "
                          f"+-{lib.PCCD_MAX_EXPONENT}")
-    mantissa, _, exponent = text.lower().partition("e")
+    mantissa = text.lower().partition("e")[0]
     whole, _, decimals = mantissa.partition(".")
     sign = -1 if whole.startswith("-") else 1
     digits = whole.lstrip("+-") + decimals
     value = Fraction(int_from_text(digits or "0"), 10 ** len(decimals))
-    return sign * value * Fraction(10) ** int(exponent or 0)
+    power = int(significant) * (-1 if exponent.startswith("-") else 1)
+    return sign * value * Fraction(10) ** power

@@ -6,6 +6,7 @@ exactly a double (never in the shared set: its denominators are powers of two) i
 as an exact fraction and the query goes through solve() instead of collides_linear().
 """
 import csv
+import re
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -13,8 +14,9 @@ from typing import Dict, List
 
 import numpy as np
 
-from .. import InputError
-from .._numbers import ratio_text
+from .. import InputError, LimitError
+from .._numbers import int_from_text, ratio_text, show
+from .._pccd import lib
 
 CSV_KINDS = ("vertex-face", "edge-edge")
 POINTS = 4  # both kinds: v, f0, f1, f2 or a0, a1, b0, b1
@@ -53,6 +55,21 @@ def _value(num, den):
     return x, Fraction(x) == Fraction(num, den)
 
 
+_INTEGER = re.compile(r"[+-]?[0-9]+", re.ASCII)
+
+
+def _integer(text, line, column):
+    """The int of an ASCII decimal integer ("1_000", "\u0661" and " 1 " are not: int()
+    takes them), of any length up to the number text limit; errors quote an excerpt."""
+    if not _INTEGER.fullmatch(text):
+        raise InputError(f"line {line}, column {column}: expected an integer (ASCII digits), "
+                         f"got {show(text)}")
+    if len(text) > lib.PCCD_MAX_NUMBER_CHARS:
+        raise LimitError(f"line {line}, column {column}: an integer of {len(text)} characters is "
+                         f"longer than the limit {lib.PCCD_MAX_NUMBER_CHARS}")
+    return int_from_text(text)
+
+
 def _rows(path):
     try:
         with open(path, newline="") as f:
@@ -77,10 +94,7 @@ def read_csv(path, kind):
         line = r + 1
         if len(row) != 7:
             raise InputError(f"line {line}: expected 7 columns, got {len(row)}")
-        try:
-            v = [int(x) for x in row]
-        except ValueError:
-            raise InputError(f"line {line}: expected integers, got {','.join(row)}") from None
+        v = [_integer(x, line, c + 1) for c, x in enumerate(row)]
         if v[6] not in (0, 1):
             raise InputError(f"line {line}: truth must be 0 or 1, got {v[6]}")
         q, first = divmod(r, ROWS)
@@ -107,6 +121,7 @@ def read_csv(path, kind):
 
 def _trajectories(rows):
     """[xs, ys, zs] per point, exact: x(t) = x0 + (x1 - x0) t, as number texts."""
-    pts = [[Fraction(int(row[2 * a]), int(row[2 * a + 1])) for a in range(3)] for row in rows]
+    pts = [[Fraction(int_from_text(row[2 * a]), int_from_text(row[2 * a + 1])) for a in range(3)]
+           for row in rows]
     return [[[ratio_text(c.numerator, c.denominator) for c in (x0, x1 - x0)]
              for x0, x1 in zip(pts[k], pts[k + POINTS])] for k in range(POINTS)]

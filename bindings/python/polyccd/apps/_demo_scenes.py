@@ -73,7 +73,7 @@ GEAR_PATH = [["2.6", "1.4"], ["2.0", "0.5"], ["1.5", "0.1"], ["1.05", "0"]]
 GEAR_TAU = ("0", "0.3")  # tan(angle / 2) goes from 0 to 0.3: a turn of 33.4 degrees
 
 
-def mechanical_scene(z_offset="0.2", *, install=True):
+def mechanical_scene(z_offset="0.2", *, install=False):
     """Two pinions of pinion.off (650 vertices, 1300 triangles each), centred on their
     bounding boxes (in float; these doubles are the bodies) and turned by pinion_pose()
     so their axes are z. Pinion A stays at the origin. Pinion B's centre follows the
@@ -124,7 +124,7 @@ def ligand_path(direction="enter"):
     return ctrl if direction == "leave" else ctrl[::-1]
 
 
-def ligand_scene(direction="enter", *, install=True):
+def ligand_scene(direction="enter", *, install=False):
     """The protease (polymer atoms of 1t7i, first altloc, 1492 balls) stationary, and
     darunavir (residue 017, 38 balls) on a cubic Bezier path with a small rotation,
     van der Waals radii (Bondi 1964). direction="enter" (default): the ligand comes

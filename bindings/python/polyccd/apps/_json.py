@@ -4,6 +4,7 @@ A JSON number means exactly the decimal written, so numbers are kept as their li
 text (JsonNumber) and parsed by the C library, never by float(). Every error names the
 JSON path of the bad value, e.g. `points[2][1][0]: "abc" is not a number`.
 """
+import difflib
 import json
 from dataclasses import dataclass
 from fractions import Fraction
@@ -12,6 +13,7 @@ from typing import List, Optional, Tuple, Union
 from .. import KINDS, InputError
 from .._numbers import exact_fraction, ratio_text, show  # number texts: no public twin yet
 from .._solve import npoints
+from ._reading import tick
 
 QUERY_FORMAT = "polyccd-query/1"
 SCENE_FORMAT = "polyccd/1"
@@ -47,6 +49,7 @@ def _object(pairs):
 
 def _number_literal(text):
     # JSON allows 1E5 and 1e+5; hand C the plain form 1e5 (same value).
+    tick()  # the command line's --max-seconds covers reading (_reading.py)
     return JsonNumber(text.replace("E", "e").replace("e+", "e"))
 
 
@@ -85,8 +88,9 @@ def describe(value):
         return "null"
     if isinstance(value, JsonConstant):
         return value.text
-    if isinstance(value, JsonNumber):
-        return str(value)
+    if isinstance(value, JsonNumber):  # at most a short excerpt of a long number
+        text = str(value)
+        return text if len(text) <= 60 else f"{text[:40]}... ({len(text)} characters)"
     if isinstance(value, list):
         return "an array"
     if isinstance(value, dict):
@@ -100,6 +104,23 @@ def _object_at(value, path):
     for key in value.duplicates:
         raise InputError(f"{path}: the key \"{key}\" appears more than once")
     return value
+
+
+QUERY_KEYS = ("format", "kind", "points", "radii", "options", "expect", "name", "source")
+OPTION_KEYS = ("time_tolerance", "min_distance")
+EXPECT_KEYS = ("collides", "first_contact")
+
+
+def known_keys(obj, path, keys):
+    """InputError for the first key of obj that is not one of keys, naming it and its
+    place and suggesting the nearest known key (a misspelt "rotaton" was ignored and
+    the body stood still: issue 23)."""
+    for key in obj:
+        if key not in keys:
+            near = difflib.get_close_matches(key, keys, n=1)
+            hint = f' (did you mean "{near[0]}"?)' if near else f" (known: {', '.join(keys)})"
+            where = f"{path}." if path != "(top level)" else ""
+            raise InputError(f"{where}{show(key)[1:-1]}: unknown key{hint}")
 
 
 def _list_at(value, path, what, length=None):
@@ -144,8 +165,9 @@ class QueryCase:
     min_distance: Optional[str] = None
 
 
-def _expect_at(value, path):
+def _expect_at(value, path, keys=EXPECT_KEYS):
     obj = _object_at(value, path)
+    known_keys(obj, path, keys)
     if "collides" not in obj:
         raise InputError(f"{path}.collides: missing (required: true or false)")
     collides = obj["collides"]
@@ -175,6 +197,7 @@ def options_and_labels(top):
     tolerance = None
     if "options" in top:
         options = _object_at(top["options"], "options")
+        known_keys(options, "options", OPTION_KEYS)
         if "time_tolerance" in options:
             path = "options.time_tolerance"
             tolerance = number_at(options["time_tolerance"], path)
@@ -195,6 +218,7 @@ def query_case(doc):
     if fmt != QUERY_FORMAT:
         got = "missing" if "format" not in top else describe(fmt)
         raise InputError(f'format: expected "{QUERY_FORMAT}" or "{SCENE_FORMAT}", got {got}')
+    known_keys(top, "(top level)", QUERY_KEYS)
     kind = top.get("kind")
     if kind not in KINDS:
         got = "missing" if "kind" not in top else describe(kind)

@@ -16,6 +16,7 @@ import numpy as np
 
 from .. import InputError
 from .._extras import need
+from ._files import replace_file
 from ._draw_geometry import (BODY_COLORS, HIGHLIGHT, _arrays, _clip_segments, _clip_to_box,
                              _contacts, _decimate, _edges_of, _float_pose, _parts, _shade, _time)
 
@@ -318,7 +319,5 @@ def render_scene(bodies, t, contacts, path, title=None, *, geometry=None, labels
                                    f"red: {len(features)}"] + lines), fontsize=11)
     fig.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.88 - 0.03 * (len(lines) - 1),
                         wspace=0.02)
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=dpi)
-    return path
+    fmt = Path(path).suffix[1:].lower() or "png"  # a temporary file, renamed (_files.py)
+    return replace_file(path, lambda f: fig.savefig(f, dpi=dpi, format=fmt))

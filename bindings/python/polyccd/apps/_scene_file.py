@@ -6,9 +6,14 @@ import dataclasses
 from dataclasses import dataclass
 from typing import Optional
 
+import numpy as np
+
 from .. import Body, InputError, Mesh, Motion, Spheres
-from ._json import (SCENE_FORMAT, _expect_at, _list_at, _object_at, _string_at, describe, load,
-                    min_distance_option, number_at, options_and_labels)
+from .._numbers import int_from_text, show
+from ._json import (EXPECT_KEYS, SCENE_FORMAT, _expect_at, _list_at, _object_at, _string_at,
+                    describe, known_keys, load, min_distance_option, number_at,
+                    options_and_labels)
+from ._reading import tick
 
 
 @dataclass(frozen=True)
@@ -27,9 +32,12 @@ def _traj_lists(value, path, count, what):
 
 def _points_at(value, path):
     """The number texts of a list of [x, y, z]."""
-    return [[number_at(c, f"{path}[{i}][{a}]") for a, c in
-             enumerate(_list_at(v, f"{path}[{i}]", "[x, y, z]", 3))]
-            for i, v in enumerate(_list_at(value, path, "a list of [x, y, z]"))]
+    out = []
+    for i, v in enumerate(_list_at(value, path, "a list of [x, y, z]")):
+        tick()
+        out.append([number_at(c, f"{path}[{i}][{a}]")
+                    for a, c in enumerate(_list_at(v, f"{path}[{i}]", "[x, y, z]", 3))])
+    return out
 
 
 def _with_place(path, fn, *args):
@@ -42,6 +50,7 @@ def _with_place(path, fn, *args):
 
 def _body_at(value, path, index):
     obj = _object_at(value, path)
+    known_keys(obj, path, ("name", "mesh", "spheres", "motion"))
     name = _string_at(obj["name"], f"{path}.name") if "name" in obj else f"body{index}"
     shapes = [k for k in ("mesh", "spheres") if k in obj]
     if len(shapes) != 1:
@@ -49,23 +58,29 @@ def _body_at(value, path, index):
                          f"{' and '.join(shapes) if shapes else 'neither'}")
     if shapes[0] == "mesh":
         m = _object_at(obj["mesh"], f"{path}.mesh")
+        known_keys(m, f"{path}.mesh", ("vertices", "triangles"))
         for key in ("vertices", "triangles"):
             if key not in m:
                 raise InputError(f"{path}.mesh.{key}: missing")
         verts = _points_at(m["vertices"], f"{path}.mesh.vertices")
         tris = []
         for i, t in enumerate(_list_at(m["triangles"], f"{path}.mesh.triangles", "a list of [i, j, k]")):
+            tick()
             row = []
             for a, x in enumerate(_list_at(t, f"{path}.mesh.triangles[{i}]", "[i, j, k]", 3)):
                 text = str(x) if isinstance(x, str) else None
-                if text is None or type(x).__name__ != "JsonNumber" or not text.isdigit():
+                if (text is None or type(x).__name__ != "JsonNumber" or not text.isascii()
+                        or not text.isdigit()):
                     raise InputError(f"{path}.mesh.triangles[{i}][{a}]: expected a vertex index "
                                      f"(an integer >= 0), got {describe(x)}")
-                row.append(int(text))
+                row.append(int_from_text(text))  # any length (int() stops at 4,300 digits)
             tris.append(row)
+        if all(x < 2 ** 63 for row in tris for x in row):  # the Mesh's fast path for arrays
+            tris = np.array(tris, dtype=np.int64).reshape(len(tris), 3)
         shape = _with_place(f"{path}.mesh", Mesh, verts, tris)
     else:
         s = _object_at(obj["spheres"], f"{path}.spheres")
+        known_keys(s, f"{path}.spheres", ("centers", "radii"))
         for key in ("centers", "radii"):
             if key not in s:
                 raise InputError(f"{path}.spheres.{key}: missing")
@@ -76,6 +91,7 @@ def _body_at(value, path, index):
     motion = None
     if "motion" in obj:
         mo = _object_at(obj["motion"], f"{path}.motion")
+        known_keys(mo, f"{path}.motion", ("translation", "rotation"))
         translation = (_traj_lists(mo["translation"], f"{path}.motion.translation", 3,
                                    "[xs, ys, zs]") if "translation" in mo else None)
         rotation = (_traj_lists(mo["rotation"], f"{path}.motion.rotation", 4,
@@ -90,6 +106,7 @@ def scene_from_doc(doc):
     if top.get("format") != SCENE_FORMAT:
         got = "missing" if "format" not in top else describe(top.get("format"))
         raise InputError(f'format: expected "{SCENE_FORMAT}", got {got}')
+    known_keys(top, "(top level)", ("format", "name", "source", "bodies", "options", "expect"))
     if "bodies" not in top:
         raise InputError("bodies: missing (a scene needs at least 2 bodies)")
     items = _list_at(top["bodies"], "bodies", "a list of bodies")
@@ -103,7 +120,7 @@ def scene_from_doc(doc):
     tolerance = options_and_labels(top)
     expect = None
     if "expect" in top:
-        expect = _expect_at(top["expect"], "expect")
+        expect = _expect_at(top["expect"], "expect", EXPECT_KEYS + ("pairs", "features"))
         ex = _object_at(top["expect"], "expect")
         if "pairs" in ex:
             pairs = []
@@ -111,7 +128,10 @@ def scene_from_doc(doc):
                 pair = _list_at(p, f"expect.pairs[{k}]", "[nameA, nameB]", 2)
                 for q, n in enumerate(pair):
                     if _string_at(n, f"expect.pairs[{k}][{q}]") not in names:
-                        raise InputError(f"expect.pairs[{k}][{q}]: no body is named \"{n}\"")
+                        raise InputError(f"expect.pairs[{k}][{q}]: no body is named {show(n)}")
+                if pair[0] == pair[1]:
+                    raise InputError(f"expect.pairs[{k}]: a pair of one body ({show(pair[0])}) "
+                                     "with itself (a pair is two different bodies)")
                 pairs.append(tuple(sorted(pair, key=names.index)))
             order = sorted(set(pairs), key=lambda x: (names.index(x[0]), names.index(x[1])))
             expect = dataclasses.replace(expect, pairs=tuple(order))

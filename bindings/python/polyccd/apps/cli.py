@@ -23,6 +23,7 @@ from ._demo import query_dir, run_cases
 from ._json import result_json, time_json
 from ._queries import mismatch_lines, run_file
 from ._progress import bar, echo
+from ._reading import read_within
 from ._scene_file import load_scene
 
 OK, FAILED, BAD_INPUT = 0, 1, 2
@@ -63,14 +64,14 @@ def _check_json(result):
 
 
 def _check_serial(files, threads, progress, limits=None, decide=False):
-    """(SceneResult | Result | InputError) per file, solved here in order."""
+    """(SceneResult | Result | InputError) per file, in order (--max-seconds: read + solve)."""
     with bar(len(files), "check", "file", progress if len(files) > 1 else False) as b:
         for path in files:
             try:
-                what, case = read_case(path)
-                yield (solve_scene_case(case, limits=limits, threads=threads,
+                (what, case), mine = read_within(read_case, path, limits)
+                yield (solve_scene_case(case, limits=mine, threads=threads,
                                         first_contact=not decide) if what == "scene"
-                       else solve_case(case, limits))
+                       else solve_case(case, mine))
             except InputError as e:
                 yield e
             b.update()
@@ -95,9 +96,10 @@ def cmd_check(args):
                                     args.decide)
         stack.callback(results.close)  # the bar ends (and the cluster's tasks) before more output
         for path, result in zip(files, results):
-            if isinstance(result, InputError):
-                _error(f"{path}: {result}")
-                status = BAD_INPUT
+            if isinstance(result, Exception):  # this file's error; the others go on
+                bug = not isinstance(result, InputError)  # then an InternalError: status 1
+                _error(f"{path}: {type(result).__name__ + ': ' if bug else ''}{result}")
+                status = status or FAILED if bug else BAD_INPUT
                 continue
             out = _check_json(result)
             echo(json.dumps(out if len(files) == 1 else {"file": path, **out}))
@@ -137,6 +139,7 @@ def index_json(stored_name, query_name, r, all_contacts=False):
 def cmd_index(args):
     """Indexes one body of a scene file (--stored, default the first) and checks every
     other body against the index; one JSON line per query body, in file order."""
+    errors = []
     try:
         bodies, options, _ = load_scene(args.file)
         names = [b.name for b in bodies]
@@ -171,21 +174,28 @@ def cmd_index(args):
             else:
                 results = _index_serial(ix, queries, options, _progress(args))
             stack.callback(results.close)  # the bar ends before more output
-            for k, r in zip(others, results):
-                lines.append(json.dumps(index_json(names[stored], names[k], r,
-                                                   args.all_contacts)))
+            for j, (k, r) in enumerate(zip(others, results)):
+                if isinstance(r, Exception):  # this query's error; the others go on
+                    errors.append(f"{args.file}: bodies[{k}]: " + str(r).removeprefix(f"queries[{j}]: "))
+                else:
+                    lines.append(json.dumps(index_json(names[stored], names[k], r, args.all_contacts)))
     except InputError as e:
         _error(f"{args.file}: {e}")
         return BAD_INPUT
     for line in lines:
         print(line)
-    return OK
+    if errors:  # one line each
+        _error("\npolyccd: ".join(errors))
+    return BAD_INPUT if errors else OK
 
 
 def _index_serial(ix, queries, options, progress):
     with bar(len(queries), "index queries", "query", progress) as b:
-        for q in queries:
-            yield ix.query(q, **options)
+        for j, q in enumerate(queries):
+            try:
+                yield ix.query(q, **options)
+            except InputError as e:
+                yield type(e)(f"queries[{j}]: {e}")
             b.update()
 
 
@@ -206,6 +216,7 @@ def cmd_corpus(args):
             outcomes = _corpus_serial(files, _progress(args))
         stack.callback(outcomes.close)  # the bar ends before the summary line
         for path, reasons in zip(files, outcomes):
+            reasons = [str(reasons)] if isinstance(reasons, Exception) else reasons  # corpus_map
             if reasons:
                 failed += 1
                 echo(f"FAIL {path}: " + "; ".join(reasons))
@@ -241,10 +252,9 @@ def run_queries(paths, kind=None, as_json=False, out=echo, root=None, args=None)
         else:
             outcomes = _queries_serial(files, kind, progress)
         stack.callback(outcomes.close)  # the bar ends before the total line
-        for path, report in zip(files, outcomes):
-            status = _report_queries(path, report, root, as_json, out, reports)
-            if status is not None:
-                return status
+        bad = [_report_queries(path, r, root, as_json, out, reports) for path, r in zip(files, outcomes)]
+    if any(bad):  # the first bad file's status (the others were still run)
+        return next(b for b in bad if b)
     if not as_json:
         n = sum(r.queries for r in reports)
         seconds = sum(r.seconds_per_query * r.queries for r in reports)
@@ -268,9 +278,9 @@ def _queries_serial(files, kind, progress):
 
 def _report_queries(path, report, root, as_json, out, reports):
     """Prints one file's report (or its error: then returns the exit status)."""
-    if isinstance(report, InputError):
-        _error(str(report))
-        return BAD_INPUT
+    if isinstance(report, Exception):  # InputError: status 2; a bug (InternalError): 1
+        _error(f"{'' if isinstance(report, InputError) else type(report).__name__ + ': '}{report}")
+        return BAD_INPUT if isinstance(report, InputError) else FAILED
     if root is not None:
         report.file = str(path.relative_to(root))
     reports.append(report)

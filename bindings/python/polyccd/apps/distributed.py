@@ -30,7 +30,7 @@ import threading
 import uuid
 from contextlib import contextmanager
 
-from .. import Body, Index, InputError
+from .. import Body, Index, InputError, InternalError
 from ._progress import bar
 
 try:
@@ -42,14 +42,20 @@ except ImportError as _e:  # pragma: no cover - depends on the install
 __all__ = ["cluster", "map_chunks", "index_map", "check_map", "corpus_map", "queries_map"]
 
 
+LOOPBACK = "127.0.0.1"  # the embedded cluster's only interface (cluster())
+
+
 @contextmanager
-def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1):
+def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1, dashboard=False):
     """A dask.distributed Client for the maps, closed on exit when made here.
 
     client: used as it is (not closed). scheduler: the address of a running scheduler
     ("tcp://host:8786"); workers then means: wait until that many workers are
     connected. Neither: an embedded LocalCluster of `workers` worker processes (default
-    os.cpu_count()), each with a nanny and threads_per_worker threads."""
+    os.cpu_count()), each with a nanny and threads_per_worker threads. Its scheduler,
+    workers and nannies listen on 127.0.0.1 only (dask's dashboard and endpoints take
+    no authentication: issue 23 found the dashboard on 0.0.0.0), and it has no
+    dashboard unless dashboard=True (then on 127.0.0.1, a free port)."""
     if client is not None:
         yield client
         return
@@ -64,7 +70,12 @@ def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1):
         return
     n = workers or os.cpu_count() or 1
     with _distributed.LocalCluster(n_workers=n, threads_per_worker=threads_per_worker,
-                                   processes=True, dashboard_address=":0",
+                                   processes=True, host=LOOPBACK,
+                                   # the scheduler's HTTP server (health, and the
+                                   # dashboard when asked) on loopback, a free port
+                                   dashboard_address=f"{LOOPBACK}:0",
+                                   scheduler_kwargs={"dashboard": bool(dashboard)},
+                                   worker_dashboard_address=None,
                                    silence_logs=40) as local, \
             _distributed.Client(local) as c:
         yield c
@@ -138,6 +149,18 @@ _INDEX_LOCK = threading.Lock()
 _BUILDS = [0]  # Index objects built in this process (tests read it on the workers)
 
 
+def _kept_going(place, fn, *args):
+    """fn(*args), or the error of this one item (returned, not raised, so that the other
+    items of its chunk and of the batch still get their answers): an InputError (or
+    LimitError) with `place` in front, anything else as an InternalError naming it."""
+    try:
+        return fn(*args)
+    except InputError as e:
+        return type(e)(f"{place}: {e}" if place else str(e))
+    except Exception as e:  # a bug: reported for this item, the batch goes on
+        return InternalError(f"{place + ': ' if place else ''}{type(e).__name__}: {e}")
+
+
 def _cached_index(token, body):
     """The Index of body for this token, built once per process (the first task of a
     worker builds it; the others of any thread of that worker reuse it)."""
@@ -152,8 +175,15 @@ def _cached_index(token, body):
 
 
 def _index_chunk(chunk, body, token, options):
-    """Index.query_many of the chunk (one C call; equal to Index.query of each)."""
-    return _cached_index(token, body).query_many(chunk, **options)
+    """Index.query_many of the chunk of (k, query) (one C call; equal to Index.query of
+    each). When it fails, each query is checked on its own, so a bad query gives its
+    own error, named by its place in the whole batch (queries[k]), and the others their
+    answers."""
+    ix = _cached_index(token, body)
+    try:
+        return ix.query_many([q for _, q in chunk], **options)
+    except InputError:
+        return [_kept_going(f"queries[{k}]", lambda q=q: ix.query(q, **options)) for k, q in chunk]
 
 
 def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **options):
@@ -162,17 +192,20 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
 
     index: a polyccd.Index or the Body to index (each worker builds its own Index once).
     queries: Body objects, or (shape, motion) / (shape, motion, name) tuples (the
-    "(body, motion) pairs" of a batch). options: the keywords of Index.query."""
+    "(body, motion) pairs" of a batch). options: the keywords of Index.query. A query
+    that fails yields its InputError (returned, not raised) naming it "queries[k]: ..."
+    by its place in `queries`; the other queries get their answers."""
     body = index.body if isinstance(index, Index) else index
     if not isinstance(body, Body):
         raise InputError(f"index: expected a polyccd.Index or polyccd.Body, got {type(index).__name__}")
     queries = [q if isinstance(q, Body) else Body(*q) for q in queries]
     token = uuid.uuid4().hex
-    answers = map_chunks(_index_chunk, queries, body, token, options, client=client,
+    answers = map_chunks(_index_chunk, list(enumerate(queries)), body, token, options, client=client,
                          chunk_size=chunk_size, progress=progress, desc="index queries",
                          unit="query")
     for q, r in zip(queries, answers):
-        object.__setattr__(r, "bodies", (body, q))
+        if not isinstance(r, Exception):
+            object.__setattr__(r, "bodies", (body, q))
         yield r
 
 
@@ -191,20 +224,19 @@ def _as_given(text, shown, real):
 
 def _check_chunk(files, threads, limits=None):
     from ._corpus import read_case, solve_case, solve_scene_case
-    out = []
-    for shown, real in files:
-        try:
-            what, case = read_case(real)
-            out.append(solve_scene_case(case, limits=limits, threads=threads) if what == "scene"
-                       else solve_case(case, limits))
-        except InputError as e:
-            out.append(type(e)(_as_given(str(e), shown, real)))
-    return out
+    def solve(real):
+        what, case = read_case(real)
+        return (solve_scene_case(case, limits=limits, threads=threads) if what == "scene"
+                else solve_case(case, limits))
+    out = [_kept_going("", solve, real) for _, real in files]
+    return [type(r)(_as_given(str(r), shown, real)) if isinstance(r, Exception) else r
+            for r, (shown, real) in zip(out, files)]
 
 
 def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None, limits=None):
     """Yields, for each scene or query file, what `polyccd check FILE` computes: the
-    SceneResult or Result, or the InputError of a bad file (returned, not raised).
+    SceneResult or Result, or the InputError of a bad file (returned, not raised; an
+    InternalError for a bug met on one file: the other files still get their answers).
     limits: a polyccd.Limits without a Cancel (each worker applies it to each file)."""
     return map_chunks(_check_chunk, _files(paths), threads, limits, client=client,
                       chunk_size=chunk_size, progress=progress, desc="check", unit="file")
@@ -212,26 +244,25 @@ def check_map(paths, *, threads=1, client=None, chunk_size=1, progress=None, lim
 
 def _corpus_chunk(files):
     from ._corpus import check_case
-    return [[_as_given(reason, shown, real) for reason in check_case(real)]
-            for shown, real in files]
+    out = [_kept_going(shown, check_case, real) for shown, real in files]
+    return [type(r)(_as_given(str(r), shown, real)) if isinstance(r, Exception)
+            else [_as_given(reason, shown, real) for reason in r]
+            for r, (shown, real) in zip(out, files)]
 
 
 def corpus_map(paths, *, client=None, chunk_size=None, progress=None):
     """Yields check_case(path) (the reasons a corpus case fails; empty: it passes) for
-    every case file, in order."""
+    every case file, in order; an error met on one case is yielded as "PATH: ..." in
+    its place (returned, not raised)."""
     return map_chunks(_corpus_chunk, _files(paths), client=client,
                       chunk_size=chunk_size, progress=progress, desc="corpus", unit="case")
 
 
 def _queries_chunk(files, kind):
     from ._queries import run_file
-    out = []
-    for shown, real in files:
-        try:
-            out.append(dataclasses.replace(run_file(real, kind), file=shown))
-        except InputError as e:
-            out.append(InputError(f"{shown}: {_as_given(str(e), shown, real)}"))
-    return out
+    out = [_kept_going(shown, run_file, real, kind) for shown, real in files]
+    return [type(r)(_as_given(str(r), shown, real)) if isinstance(r, Exception)
+            else dataclasses.replace(r, file=shown) for r, (shown, real) in zip(out, files)]
 
 
 def queries_map(paths, kind=None, *, client=None, chunk_size=1, progress=None):

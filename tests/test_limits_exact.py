@@ -1,0 +1,144 @@
+"""Limits that hold inside long exact computations (issue 23, item 1).
+
+Each case is one the audit of issue 23 reproduced: before the work steps counted by cost
+(util/work_budget.h, work_cost) these calls ran for minutes before their first check of
+the limits. The timing bounds are the issue's (a limit of 1 s ends the call within 2 s,
+a cancellation or Ctrl-C within 0.5 s), with the margins stated at each; the cases are
+seeded, so the same inputs run every time. tests/cpp/test_work_cost.cpp makes one
+polynomial product long on purpose and checks the limit holding inside it.
+"""
+import json
+import random
+import subprocess
+import sys
+import threading
+import time
+from fractions import Fraction as F
+
+import pytest
+
+import polyccd as P
+
+BUILD = r"""
+import random
+from fractions import Fraction as F
+import polyccd as P
+
+
+def edge_edge_48(seed=48):
+    # Edge a along x at z = 0, edge b along y falling from z = 1 to z = -1 (they cross
+    # near t = 1/2), every coordinate of degree 48: its coefficients up from t^1 are
+    # fractions of two 30-digit numbers (/ 1000: small perturbations of that motion)
+    rng = random.Random(seed)
+    def r30():
+        return F(rng.randrange(10 ** 29, 10 ** 30) * rng.choice([-1, 1]),
+                 rng.randrange(10 ** 29, 10 ** 30) * 1000)
+    base = [[-1, 0, 0], [1, 0, 0], [0, -1, 1], [0, 1, 1]]
+    points = [[[c] + [r30() for _ in range(48)] for c in p] for p in base]
+    for p in points[2:]:
+        p[2][1] += -2  # z = 1 - 2t
+    return points
+
+
+def rotation_64(seed=64):
+    # a degree-64 rotation whose coefficients are fractions of two 1,200-digit numbers
+    # (2,400 digits, 7,970 bits: inside the default input limit of 16,384 bits)
+    rng = random.Random(seed)
+    big = lambda: rng.randrange(10 ** 1199, 10 ** 1200)
+    return P.Motion(rotation=[[F(big(), big()) for _ in range(65)] for _ in range(4)])
+
+
+def two_balls(motion):
+    return [P.Body(P.Spheres([[0, 0, 0]], [1]), name="still"),
+            P.Body(P.Spheres([[3, 0, 0]], [1]), motion, name="turning")]
+"""
+exec(BUILD)
+
+
+def ends_within(call, seconds, **limits):
+    """Runs call(limits) and returns its seconds; it must raise LimitError."""
+    start = time.perf_counter()
+    with pytest.raises(P.LimitError) as e:
+        call(P.Limits(**limits))
+    took = time.perf_counter() - start
+    assert took < seconds, (took, str(e.value))
+    return e.value
+
+
+def test_degree_48_edge_edge_ends_within_the_limit():
+    points = edge_edge_48()
+    e = ends_within(lambda lim: P.solve("edge-edge", points, limits=lim), 2.0, max_seconds=1)
+    assert "config.max_seconds: the time limit of 1 s was reached" in str(e)
+    # A work limit ends it after the same count every time (the count is the input's).
+    messages = {str(ends_within(lambda lim: P.solve("edge-edge", points, limits=lim), 30,
+                                max_work=2000)).split(" and ")[0] for _ in range(2)}
+    assert messages == {"config.max_work: the limit of 2000 work steps was reached (after 2000 work steps"}
+
+
+def test_long_rotation_scene_index_and_position_end_within_the_limit():
+    motion = rotation_64()
+    bodies = two_balls(motion)
+    ends_within(lambda lim: P.check(bodies, limits=lim), 2.0, max_seconds=1)
+    ends_within(lambda lim: P.check(bodies, threads=2, all_contacts=True, limits=lim), 2.0,
+                max_seconds=1)
+    # Index construction and Motion.position take limits too (they took none: 11.5 s and
+    # more than 300 s on the audit's inputs). A fresh motion: the scene above may have
+    # kept the first one's derivation.
+    ends_within(lambda lim: P.Index(P.Body(bodies[1].shape, rotation_64()), limits=lim),
+                2.0, max_seconds=1)
+    t = F(1, 2 ** 63000 + 1)  # a time of 63,000 bits: beyond the default input limit
+    with pytest.raises(P.LimitError, match=r"^t: a number of 6300\d bits .* exceeds config.max_number_bits"):
+        motion.position([1, 2, 3], t, limits=P.Limits())
+    # One evaluation at such a time ends with a gcd of millions of bits (about a second
+    # on its own, not divisible): the bound allows for it.
+    ends_within(lambda lim: motion.position([1, 2, 3], t, limits=lim), 5.0, max_seconds=1,
+                max_number_bits=None)
+    # Composition (pccd_motion_compose_cfg): products of two such rotations.
+    ends_within(lambda lim: motion.then(rotation_64(seed=65), limits=lim), 2.0, max_seconds=1)
+    # Validation: the primitive parts of the components (lcms of 65 denominators of
+    # 4,000 bits) are counted by cost, then coprimality is proved modulo a prime.
+    ends_within(lambda lim: motion.validate(limits=lim), 30, max_work=1)
+    assert motion.validate(limits=P.Limits(max_seconds=60)) is motion
+    assert P.Motion.linear([0, 0, 0], [2, 4, 6]).position([1, 1, 1], F(1, 2), limits=P.Limits(max_work=10)) \
+        == (2, 3, 4)
+
+
+def test_cancel_ends_a_long_exact_step_at_once():
+    bodies = two_balls(rotation_64())
+    cancel = P.Cancel()
+    timer = threading.Timer(0.5, cancel.set)
+    timer.start()
+    start = time.perf_counter()
+    with pytest.raises(P.LimitError, match="config.cancel: the call was cancelled"):
+        P.check(bodies, limits=P.Limits(cancel=cancel))
+    after_set = time.perf_counter() - start - 0.5
+    timer.join()
+    assert after_set < 0.5, after_set
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+def test_ctrl_c_ends_a_long_exact_step_at_once():
+    from test_limits import interrupt_child
+    # 0.5 s: inside the motion's preparation by now
+    status, line, reacted = interrupt_child(BUILD + "bodies = two_balls(rotation_64())",
+                                            "P.check(bodies)", 0.5)
+    assert (status, line) == (3, "interrupted")
+    assert reacted < 0.5, reacted
+
+
+def test_command_line_time_limit_covers_reading_the_file(tmp_path):
+    """--max-seconds covers reading the file and building its bodies (a 38 MB scene read
+    for 63 s under --max-seconds 5): here 300,000 vertices (11 MB) and 0.2 s."""
+    n = 300000
+    rng = random.Random(3)
+    verts = [[rng.randrange(-10 ** 6, 10 ** 6) / 10 ** 6 for _ in range(3)] for _ in range(n)]
+    doc = {"format": "polyccd/1", "bodies": [
+        {"name": "m", "mesh": {"vertices": verts, "triangles": [[k, k + 1, k + 2] for k in range(n - 2)]}},
+        {"name": "b", "spheres": {"centers": [[5, 5, 5]], "radii": [0.1]}}]}
+    path = tmp_path / "big.json"
+    path.write_text(json.dumps(doc))
+    done = subprocess.run([sys.executable, "-m", "polyccd", "check", "--max-seconds", "0.2", str(path)],
+                          capture_output=True, text=True, timeout=600)
+    assert done.returncode == 2 and "Traceback" not in done.stderr
+    assert done.stderr.startswith(f"polyccd: {path}: config.max_seconds: the time limit of 0.2 s "
+                                  "was reached while reading the file (after ")
