@@ -26,7 +26,7 @@ class Index:
 
     __slots__ = ("body", "_handle")
 
-    def __init__(self, body: Body, *, limits=None) -> None:
+    def __init__(self, body: Body, *, limits: Optional[Limits] = None) -> None:
         """limits: a polyccd.Limits for the preprocessing (None: no limits; Ctrl-C still
         ends it)."""
         if not isinstance(body, Body):

@@ -13,9 +13,12 @@ itself cannot travel, e.g. to a Dask worker).
 from __future__ import annotations
 
 from fractions import Fraction
-from typing import Optional, Sequence, Tuple, Union
+from typing import TYPE_CHECKING, Optional, Sequence, Tuple, Union
 
 from ._types import Coefficients, Number, Pose, Quaternion, Vector
+
+if TYPE_CHECKING:
+    from ._limits import Limits
 from . import _handles as handles
 from . import _limits
 from ._errors import InputError, check
@@ -218,14 +221,14 @@ class Motion:
         check(lib.pccd_motion_compose_pose_s(handle, _SIDES[side], q, o))
         return Motion._wrap(handle, ("compose", (self._recipe, vq, vo, side)))
 
-    def then(self, outer: Motion, *, limits=None) -> Motion:
+    def then(self, outer: Motion, *, limits: Optional[Limits] = None) -> Motion:
         """A new motion: outer o self, the point p at outer(self(p, t), t). limits: a
         polyccd.Limits (None: no limits, Ctrl-C still ends the call)."""
         if not isinstance(outer, Motion):
             raise InputError(f"outer: expected a Motion, got {show(outer)}")
         return _composed(outer, self, limits)
 
-    def validate(self, *, limits=None) -> Motion:
+    def validate(self, *, limits: Optional[Limits] = None) -> Motion:
         """Returns self when r(t) vanishes nowhere on [0, 1]; else InputError with the
         first vanishing time (exact, or an enclosure when irrational). limits: a
         polyccd.Limits (None: no limits, Ctrl-C still ends the call)."""
@@ -234,7 +237,7 @@ class Motion:
         return self
 
     def position(self, p: Vector, t: Number, *,
-                 limits=None) -> Tuple[Fraction, Fraction, Fraction]:
+                 limits: Optional[Limits] = None) -> Tuple[Fraction, Fraction, Fraction]:
         """The exact position of body point p at time t in [0, 1]: 3 Fractions. limits: a
         polyccd.Limits (None: no limits, Ctrl-C still ends the call)."""
         point, _keep = _texts(_vector(p, "p"))
