@@ -19,7 +19,6 @@ from polyccd import Error, Index, InputError, Limits, __version__
 from ._corpus import (DEFAULT_TOLERANCE, check_case, files_under, read_case, solve_case,
                       solve_scene_case)
 from ._csv import CSV_KINDS
-from ._demo import query_dir, run_cases
 from ._json import result_json, time_json
 from ._queries import mismatch_lines, run_file
 from ._progress import bar, echo
@@ -295,25 +294,8 @@ def cmd_queries(args):
 
 
 def cmd_demo(args):
-    from ._demo_bodies import run_demo_scenes  # needs trimesh, gemmi, matplotlib
-    print(f"polyccd {__version__} demo: real scenes, a robot arm and a simulator step, checked exactly\n")
-    results = run_demo_scenes(args.out, threads=args.threads)
-    status = OK if all(r[0].collides for r in results.values()) else FAILED
-    from ._demo_robot import run_robot_demo  # skips itself without yourdfpy / robot data
-    print()
-    status = max(status, OK if run_robot_demo(args.out)[2] else FAILED)
-    from ._demo_step import run_step_demo
-    print()
-    status = max(status, OK if run_step_demo(args.out, threads=args.threads)[0].collides else FAILED)
-    print(f"\nexact answers for degenerate moving primitives\n")
-    status = max(status, OK if run_cases(print) else FAILED)
-    folder = query_dir()
-    if folder is None:
-        print("shared benchmark queries not found (set POLYCCD_QUERY_DIR to the "
-              "ccd-queries folder); skipped")
-        return status
-    print(f"benchmark queries of {folder} (decide only, against the truth column):")
-    return max(status, run_queries([folder], root=folder))
+    from ._demo_all import run_demo
+    return run_demo(args.out, args.threads, run_queries)
 
 
 def _positive(kind):
