@@ -225,12 +225,7 @@ class Box_source final : public narrow::Candidate_source {
 }  // namespace
 
 std::unique_ptr<narrow::Candidate_source> box_source(const Pair_ctx &ctx, double reach) {
-  // A body with numbers beyond the double range has infinite bounds (narrow/moving_body),
-  // on which the pose boxes would compute inf - inf: such a pair is solved by brute force
-  // (the same answer, issue 23: no non-finite double decides a candidate).
-  for (int s = 0; s < 2; ++s)
-    for (int a = 0; a < 3; ++a)
-      if (!std::isfinite(ctx.side(s).data->box_h[a])) return narrow::brute_source(ctx);
+  if (narrow::has_infinite_bounds(ctx)) return narrow::brute_source(ctx);  // candidate_source.h
   return std::make_unique<Box_source>(ctx, reach);
 }
 

@@ -234,6 +234,7 @@ class Bvh_source final : public narrow::Candidate_source {
 }  // namespace
 
 std::unique_ptr<narrow::Candidate_source> bvh_source(const Pair_ctx &ctx, double reach) {
+  if (narrow::has_infinite_bounds(ctx)) return narrow::brute_source(ctx);  // candidate_source.h
   return std::make_unique<Bvh_source>(ctx, reach);
 }
 

@@ -2,6 +2,8 @@
 // reference the other sources are tested against).
 #include "narrow/candidate_source.h"
 
+#include <cmath>
+
 namespace pccd::narrow {
 
 void Search_stats::add(const Search_stats &o) {
@@ -58,6 +60,13 @@ class Brute_source final : public Candidate_source {
 
 std::unique_ptr<Candidate_source> brute_source(const Pair_ctx &ctx) {
   return std::make_unique<Brute_source>(ctx);
+}
+
+bool has_infinite_bounds(const Pair_ctx &ctx) {
+  for (int s = 0; s < 2; ++s)
+    for (int a = 0; a < 3; ++a)
+      if (!std::isfinite(ctx.side(s).data->box_h[a])) return true;
+  return false;
 }
 
 }  // namespace pccd::narrow

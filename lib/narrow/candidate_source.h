@@ -67,4 +67,10 @@ class Candidate_source {
 // Every feature pair of the two bodies' types: the reference source (quadratic).
 std::unique_ptr<Candidate_source> brute_source(const Pair_ctx &ctx);
 
+// True when a body of the pair has numbers beyond the double range, so its bounds
+// (Motion_data::box_h, narrow/moving_body.h) are infinite: the box phases would compute
+// inf - inf on them (and the hierarchies never separate a piece), so they hand such a
+// pair to brute_source (the same answer: no non-finite double decides a candidate).
+bool has_infinite_bounds(const Pair_ctx &ctx);
+
 }  // namespace pccd::narrow
