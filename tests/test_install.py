@@ -252,7 +252,7 @@ def test_wheel_contents(wheel):
     import zipfile
     z = zipfile.ZipFile(wheel)
     names = z.namelist()
-    binaries = sorted(n for n in names if not n.endswith((".py", "/")) and "dist-info" not in n)
+    binaries = sorted(n for n in names if not n.endswith((".py", "/", "py.typed")) and "dist-info" not in n)
     assert len(binaries) == 3 and binaries[0].startswith("polyccd.libs/libgmp-") \
         and binaries[1].startswith("polyccd/_pccd.") and binaries[2] == "polyccd/libpolyccd.so.0", binaries
     assert re.match(r"polyccd-%s-cp3\d+-cp3\d+-manylinux_2_\d+_x86_64\.whl" % re.escape(VERSION),
