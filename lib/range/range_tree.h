@@ -12,7 +12,8 @@
 //
 // Splits: median of the box midpoints along the split coordinate (bit k of `split`)
 // whose spread below the node is the largest relative to its spread over the whole tree
-// (scale-free: box corners, normals and moments have different units). Only the box
+// (scale-free: box corners, normals and moments have different units), equal values
+// ordered by the other split coordinates (build, below). Only the box
 // coordinates are split on (the queries' cheap bounds are on them), but the hulls are
 // tight in every coordinate: where the plane offset n . a0 or an edge's moment follows
 // the position (parallel slivers, needles, fans: tests/bench/bench_adversarial.py), the
@@ -120,20 +121,32 @@ class Range_tree {
     }
     if (me == 0)
       for (int k = 0; k < D; ++k) root_spread_[k] = hi[k] - lo[k];
-    int best = -1;
-    double best_rel = 0;
+    // The split coordinates by decreasing relative spread (ties: the lower k first).
+    std::array<int, D> key;
+    std::array<double, D> rel;
+    int nkey = 0;
     for (int k = 0; k < D; ++k) {
-      if (!((split_ >> k) & 1) || !(root_spread_[k] > 0)) continue;
-      const double rel = (hi[k] - lo[k]) / root_spread_[k];
-      if (rel > best_rel) best_rel = rel, best = k;
+      if (!((split_ >> k) & 1) || !(root_spread_[k] > 0) || !(hi[k] > lo[k])) continue;
+      rel[k] = (hi[k] - lo[k]) / root_spread_[k];
+      key[nkey++] = k;
     }
-    if (end - begin <= kLeaf || best < 0) {  // small, or every split coordinate constant
+    std::stable_sort(key.begin(), key.begin() + nkey, [&](int a, int b) { return rel[a] > rel[b]; });
+    if (end - begin <= kLeaf || nkey == 0) {  // small, or every split coordinate constant
       nodes_[me] = nd;
       return;
     }
+    // Median of the first key, ties broken by the next keys, then the id. Without the
+    // tie-break, a run of equal values (one edge direction of many parallel plates, one
+    // box side of stacked slivers) is cut anywhere: both children then hold every layer
+    // of that run, interleaved, and a query between two layers enters both, at every
+    // such level (about sqrt n nodes per query on plates; with it, a few per level).
     const uint32_t half = begin + (end - begin) / 2;
     std::nth_element(order_.begin() + begin, order_.begin() + half, order_.begin() + end,
-                     [&](uint32_t a, uint32_t b) { return mid_[a][best] < mid_[b][best]; });
+                     [&](uint32_t a, uint32_t b) {
+                       for (int j = 0; j < nkey; ++j)
+                         if (mid_[a][key[j]] != mid_[b][key[j]]) return mid_[a][key[j]] < mid_[b][key[j]];
+                       return a < b;
+                     });
     nd.left = static_cast<uint32_t>(nodes_.size());
     nodes_.push_back(Node());
     nodes_.push_back(Node());
