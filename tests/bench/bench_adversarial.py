@@ -12,15 +12,21 @@ collides and first contact (lo, hi, exact) must equal the others' on every famil
 size (the library's contract); a difference aborts the run.
 
 Budget: a method runs at a size while its time predicted from the previous size
-(x (N / N_prev)^2) fits in --budget-seconds (60 s); otherwise "-" and it is not fitted.
+(x (N / N_prev)^2) fits in --budget-seconds (60 s), and stops for good once one of its
+sizes took more than --cap-seconds (default: no cap); otherwise "-" and it is not
+fitted. Each fitted exponent states the sizes it was fitted on.
 Timing: one process, threads 1, gc off; each cell is one polyccd.check (two-body) or one
 Index.query_many (on-line) call, the Python reading of the results included. The on-line
-families use the "linear" motions of bench_online.py.
+families use the "linear" motions of bench_online.py. With --repeat R every cell is run R
+times (in turn: each size's R runs before the next size): the table shows the minimum,
+and the exponents table the fit of the minima with, in brackets, the lowest and highest
+exponent fitted on the r-th runs alone (r = 1..R): the spread that load gives a fit.
 
 Usage: python tests/bench/bench_adversarial.py [--sizes 1k,2k,4k,8k,16k]
            [--families slivers,plates,fans,needles,balls,terrain,mol]
            [--methods range,bvh,boxes,auto] [--motion translation|axis|general]
-           [--budget-seconds 60] [--repeat 1] [--json FILE] [--tables-of FILE]
+           [--budget-seconds 60] [--cap-seconds S] [--repeat 1] [--fit-from N]
+           [--json FILE] [--tables-of FILE]
 """
 
 import argparse
@@ -87,11 +93,14 @@ def main():
     ap.add_argument("--families", default=",".join(af.FAMILIES + tuple(ONLINE)))
     ap.add_argument("--methods", default=",".join(METHODS))
     ap.add_argument("--budget-seconds", type=float, default=60.0)
+    ap.add_argument("--cap-seconds", type=float, default=None,
+                    help="a method stops once one of its sizes took longer than this")
     ap.add_argument("--motion", default="translation", choices=af.MOTIONS,
                     help="body 1's motion in the two-body families (adversarial_families.py)")
     ap.add_argument("--json", default=None, help="write every measurement here")
     ap.add_argument("--repeat", type=int, default=1, help="each cell: the minimum of this many runs")
-    ap.add_argument("--fit-from", default="1k", help="the second exponent column fits N >= this")
+    ap.add_argument("--fit-from", default="0",
+                    help="fit on N >= this (a method with fewer than two such sizes: on all it reached)")
     ap.add_argument("--tables-of", default=None, help="only print the tables of a --json file")
     opts = ap.parse_args()
     sizes = [parse_size(s) for s in opts.sizes.split(",")]
@@ -104,21 +113,22 @@ def main():
     import polyccd
     out = {}
     print(f"bench_adversarial: sizes {sizes}, methods {methods}, motion {opts.motion}, "
-          f"budget {opts.budget_seconds} s, threads 1")
+          f"budget {opts.budget_seconds} s, cap {opts.cap_seconds} s, repeat {opts.repeat}, threads 1")
     for family in opts.families.split(","):
         times = {m: {} for m in methods}
-        last = {}
+        last, capped = {}, set()
         for n in sizes:
             run = case_runner(polyccd, family, n, opts.motion)
             ref = None
             for m in methods:
-                if m in last and last[m][1] * (n / last[m][0]) ** 2 > opts.budget_seconds:
+                if m in capped or (m in last and last[m][1] * (n / last[m][0]) ** 2 > opts.budget_seconds):
                     continue
                 dt, ans, st = run(m)
-                for _ in range(opts.repeat - 1):      # the minimum over --repeat runs
-                    dt = min(dt, run(m)[0])
-                last[m] = (n, dt)
-                times[m][n] = dt
+                runs = [dt] + [run(m)[0] for _ in range(opts.repeat - 1)]
+                last[m] = (n, min(runs))
+                times[m][n] = runs
+                if opts.cap_seconds is not None and min(runs) > opts.cap_seconds:
+                    capped.add(m)
                 if ref is None:
                     ref = (m, ans)
                 elif ans != ref[1]:
@@ -126,7 +136,8 @@ def main():
                     print(f"ERROR: {family} N = {n}: {m} and {ref[0]} disagree (item {bad}: "
                           f"{ans[bad]} vs {ref[1][bad]}): a bug of polyccd")
                     sys.exit(1)
-                print(f"  {family:8s} N = {n:6d}  {m:5s} {dt:9.3f} s  {st}", flush=True)
+                print(f"  {family:8s} N = {n:6d}  {m:5s} {min(runs):9.3f} s  "
+                      f"(max {max(runs):.3f})  {st}", flush=True)
         out[family] = {m: {str(n): t for n, t in times[m].items()} for m in methods}
     print_tables(out, sizes, methods, parse_size(opts.fit_from))
     if opts.json:
@@ -134,36 +145,58 @@ def main():
             json.dump(out, f, indent=1)
 
 
-def exponent(res, m, lo=0):
-    return fit_exponent(sorted((int(n), t) for n, t in res.get(m, {}).items() if int(n) >= lo))
+def runs_of(cell):
+    """A cell's times: a list (--repeat), or one number (older --json files)."""
+    return cell if isinstance(cell, list) else [cell]
+
+
+def fitted(res, m, lo):
+    """(exponent of the minima, (lowest, highest) over the r-th runs, (N_lo, N_hi)) or None:
+    over the sizes >= lo, or all the sizes m reached when fewer than two are >= lo."""
+    cells = sorted((int(n), runs_of(c)) for n, c in res.get(m, {}).items())
+    if sum(n >= lo for n, _ in cells) >= 2:    # else every size it reached (bvh, boxes)
+        cells = [(n, r) for n, r in cells if n >= lo]
+    e = fit_exponent([(n, min(r)) for n, r in cells])
+    if e is None:
+        return None
+    reps = min(len(r) for _, r in cells)
+    each = [fit_exponent([(n, r[i]) for n, r in cells]) for i in range(reps)]
+    return e, (min(each), max(each)), (cells[0][0], cells[-1][0])
+
+
+def size_name(n):
+    return f"{n // 1000}k" if n >= 1000 and n % 1000 == 0 else str(n)
 
 
 def print_tables(out, sizes, methods, fit_from):
-    print("\nTime (s) per family, method and N; '-': over budget (not run)")
+    print("\nTime (s) per family, method and N (the minimum of the runs); '-': not run (budget, cap)")
     head = "| family | method | " + " | ".join(f"N={n}" for n in sizes) + " |"
     print(head)
     print("|" + "---|" * (head.count("|") - 1))
     for family, res in out.items():
         for m in methods:
-            cells = [f"{res[m][str(n)]:.3f}" if str(n) in res.get(m, {}) else "-" for n in sizes]
+            cells = [f"{min(runs_of(res[m][str(n)])):.3f}" if str(n) in res.get(m, {}) else "-"
+                     for n in sizes]
             print(f"| {family} | {m} | " + " | ".join(cells) + " |")
-    print(f"\nFitted exponents (least squares of log time on log N over the measured sizes: "
-          f"all / N >= {fit_from}; '-': fewer than two sizes)")
+    print(f"\nFitted exponents (least squares of log time on log N over the sizes measured, "
+          f"N >= {fit_from} where a method reached two such sizes, else all it reached: the fit "
+          f"of the minima [lowest-highest fit of single runs] (sizes fitted))")
     print("| family | " + " | ".join(methods) + " | auto / fastest (worst size) |")
     print("|" + "---|" * (len(methods) + 2))
-
-    def fmt(e):
-        return "-" if e is None else f"{e:.2f}"
     for family, res in out.items():
-        ex = [f"{fmt(exponent(res, m))} / {fmt(exponent(res, m, fit_from))}" for m in methods]
+        ex = []
+        for m in methods:
+            f = fitted(res, m, fit_from)
+            ex.append("-" if f is None else
+                      f"{f[0]:.2f} [{f[1][0]:.2f}-{f[1][1]:.2f}] ({size_name(f[2][0])}-{size_name(f[2][1])})")
         worst = None
         if "auto" in methods:
             for n in sizes:
-                ts = [res[m][str(n)] for m in methods if str(n) in res.get(m, {})]
+                ts = [min(runs_of(res[m][str(n)])) for m in methods if str(n) in res.get(m, {})]
                 if str(n) in res.get("auto", {}) and ts:
-                    r = res["auto"][str(n)] / min(ts)
+                    r = min(runs_of(res["auto"][str(n)])) / min(ts)
                     worst = r if worst is None else max(worst, r)
-        print(f"| {family} | " + " | ".join(ex) + f" | {fmt(worst)} |")
+        print(f"| {family} | " + " | ".join(ex) + f" | {'-' if worst is None else f'{worst:.2f}'} |")
 
 
 if __name__ == "__main__":
