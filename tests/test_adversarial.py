@@ -12,6 +12,7 @@ bvh, the larger ones (compared with bvh, itself compared with brute force above)
 index cases (a stored body of 40 or more) take range: answers must not depend on the
 choice.
 """
+import math
 import os
 import sys
 
@@ -87,3 +88,42 @@ def test_rotations_equal_brute_force(family, motion):
     assert want[0] is False, f"{family}, {motion}: touches: {want}"
     for m in METHODS:
         assert answers(bodies, m, False) == want, f"{family}, {motion}: {m} != brute force"
+
+
+def fan(k, z0, side):
+    """k triangles around the z axis, their common edge (0, 0, z0) (0, 0, z0 + 1), rims at
+    the angles (2 j + side) pi / k on the 2^-4 grid (as adversarial_families.fans)."""
+    V = [[0, 0, z0], [0, 0, z0 + 1]]
+    for j in range(k):
+        a = math.pi * (2 * j + side) / k
+        V.append([round(4 * math.cos(a) * 16) / 16, round(4 * math.sin(a) * 16) / 16, z0 + 5])
+    return P.Mesh(V, [[0, 1, 2 + j] for j in range(k)])
+
+
+# The range phase's static pass goes by edges (lib/range/range_index.h,
+# static_candidates): an edge of one triangle meeting the other, then every triangle
+# on that edge. Cases built so that the pairs touching at t = 0 are known: two fans
+# whose axis edges overlap at t = 0 (every triangle pair touches, on the axis); a point
+# triangle (three equal indices: no edge of its own) inside a triangle, on its side,
+# at its corner, and off it.
+STATIC = {
+    "fans overlapping": lambda: [P.Body(fan(6, 0, 0)),
+                                 P.Body(fan(6, 0.5, 1), P.Motion(translation=[[0, 0], [0, 0], [0, 1]]))],
+    "fans touching at an end": lambda: [P.Body(fan(5, 0, 0)), P.Body(fan(5, 1, 1))],
+    "point triangles": lambda: [
+        P.Body(P.Mesh([[0, 0, 0], [4, 0, 0], [0, 4, 0]], [[0, 1, 2]])),
+        P.Body(P.Mesh([[1, 1, 0], [2, 0, 0], [0, 4, 0], [3, 3, 1]], [[0, 0, 0], [1, 1, 1], [2, 2, 2], [3, 3, 3]]),
+               P.Motion(translation=[[0, 0], [0, 0], [0, 1]]))],
+}
+
+
+@pytest.mark.parametrize("case", sorted(STATIC))
+@pytest.mark.parametrize("all_contacts", [False, True])
+def test_static_pass_by_edges_equals_brute_force(case, all_contacts):
+    bodies = STATIC[case]()
+    want = answers(bodies, "brute", all_contacts)
+    assert want[0] is True, f"{case}: brute force says apart"
+    for m in METHODS:
+        for pair in (bodies, bodies[::-1]):
+            got = answers(pair, m, all_contacts)
+            assert got == answers(pair, "brute", all_contacts), f"{case}: {m} != brute force"

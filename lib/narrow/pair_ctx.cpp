@@ -182,43 +182,61 @@ pred::Contact_result Pair_ctx::solve(const Prim_pair &p, const pred::Solve_optio
   return pred::solve(query<Interval>(p, scaled), [&] { return query<Rational>(p, scaled); }, opt);
 }
 
-bool Pair_ctx::triangles_meet_at_zero(uint32_t a, uint32_t b) const {
+template <class NT, size_t K>
+std::array<pred::Vec3<NT>, K> Pair_ctx::at_zero(int s, const std::array<uint32_t, K> &ids) const {
   // Positions at t = 0 times D(0) > 0: N_s(0) + M_s(0) p, the constant coefficients of
   // the trajectories (traj_q / traj_i), taken without making the polynomials.
   const Common &c = init();
-  auto at0 = [](const auto &poly, auto zero) { return poly.c.empty() ? zero : poly.c[0]; };
-  auto corners = [&](auto zero, int s, uint32_t t) {
-    using NT = decltype(zero);
-    std::array<pred::Vec3<NT>, 3> x;
-    const auto tri = triangle(s, t);
-    for (int v = 0; v < 3; ++v) {
-      const motion::Point3_q &p = side(s).point(tri[v]);
-      for (int i = 0; i < 3; ++i) {
-        if constexpr (std::is_same_v<NT, Rational>) {
-          NT y = at0(c.N[s][i], zero);
-          for (int j = 0; j < 3; ++j)
-            if (sgn(p[j]) != 0) y += at0(c.M[s][i][j], zero) * p[j];
-          x[v][i] = y;
-        } else {  // p_j within pt_err of its double (Body_data), rounded outward
-          const Body_data &d = *side(s).data;
-          NT y = at0(c.Ni[s][i], zero);
-          for (int j = 0; j < 3; ++j) {
-            if (sgn(p[j]) == 0) continue;
-            const double m = d.pts[tri[v]][j];
-            const NT pj = d.pt_err == 0 ? NT(m) : NT(arith::round_down(m - d.pt_err), arith::round_up(m + d.pt_err));
-            y += at0(c.Mi[s][i][j], zero) * pj;
-          }
-          x[v][i] = y;
+  const NT zero(0);
+  auto at0 = [&](const auto &poly) { return poly.c.empty() ? zero : poly.c[0]; };
+  std::array<pred::Vec3<NT>, K> x;
+  for (size_t v = 0; v < K; ++v) {
+    const motion::Point3_q &p = side(s).point(ids[v]);
+    for (int i = 0; i < 3; ++i) {
+      if constexpr (std::is_same_v<NT, Rational>) {
+        NT y = at0(c.N[s][i]);
+        for (int j = 0; j < 3; ++j)
+          if (sgn(p[j]) != 0) y += at0(c.M[s][i][j]) * p[j];
+        x[v][i] = y;
+      } else {  // p_j within pt_err of its double (Body_data), rounded outward
+        const Body_data &d = *side(s).data;
+        NT y = at0(c.Ni[s][i]);
+        for (int j = 0; j < 3; ++j) {
+          if (sgn(p[j]) == 0) continue;
+          const double m = d.pts[ids[v]][j];
+          const NT pj = d.pt_err == 0 ? NT(m) : NT(arith::round_down(m - d.pt_err), arith::round_up(m + d.pt_err));
+          y += at0(c.Mi[s][i][j]) * pj;
         }
+        x[v][i] = y;
       }
     }
-    return x;
+  }
+  return x;
+}
+
+bool Pair_ctx::triangles_meet_at_zero(uint32_t a, uint32_t b) const {
+  const arith::Nearest_scope nearest;
+  try {
+    return pred::triangles_meet(at_zero<Interval>(0, triangle(0, a)), at_zero<Interval>(1, triangle(1, b)));
+  } catch (const arith::Uncertain &) {
+    return pred::triangles_meet(at_zero<Rational>(0, triangle(0, a)), at_zero<Rational>(1, triangle(1, b)));
+  }
+}
+
+bool Pair_ctx::edge_meets_triangle_at_zero(int s, uint32_t e, uint32_t t) const {
+  const auto &E = side(s).mesh->edges()[e];
+  const std::array<uint32_t, 2> ends = {E[0], E[1]};
+  auto test = [&](auto zero) {
+    using NT = decltype(zero);
+    const auto p = at_zero<NT>(s, ends);
+    const auto x = at_zero<NT>(1 - s, triangle(1 - s, t));
+    return pred::segment_meets_triangle(p[0], p[1], x);
   };
   const arith::Nearest_scope nearest;
   try {
-    return pred::triangles_meet(corners(Interval(0.0), 0, a), corners(Interval(0.0), 1, b));
+    return test(Interval(0.0));
   } catch (const arith::Uncertain &) {
-    return pred::triangles_meet(corners(Rational(0), 0, a), corners(Rational(0), 1, b));
+    return test(Rational(0));
   }
 }
 

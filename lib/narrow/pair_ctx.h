@@ -19,6 +19,7 @@
 
 #include "narrow/moving_body.h"
 #include "pred/solve.h"
+#include "pred/static_contact.h"
 
 namespace pccd::narrow {
 
@@ -58,6 +59,9 @@ class Pair_ctx {
   pred::Contact_result solve(const Prim_pair &p, const pred::Solve_options &opt) const;
   // TT: the closed triangles a (of A) and b (of B) share a point at t = 0 (exact).
   bool triangles_meet_at_zero(uint32_t a, uint32_t b) const;
+  // The closed edge e of side s (a mesh) and the closed triangle t of side 1 - s share a
+  // point at t = 0 (exact; the static pass of the range phase, range/range_index.h).
+  bool edge_meets_triangle_at_zero(int s, uint32_t e, uint32_t t) const;
 
   // The feature pairs a result reports, as features of the two bodies (deduplicated).
   std::vector<std::pair<Feature_ref, Feature_ref>> contacts(const Prim_pair &p,
@@ -92,6 +96,9 @@ class Pair_ctx {
   // need it with a minimum separation).
   template <class NT> pred::Query_data<NT> query(const Prim_pair &p, bool scaled) const;
   std::array<uint32_t, 3> triangle(int s, uint32_t t) const;
+  // Points ids of side s at t = 0 times D(0) > 0 (exact, or enclosures for Interval).
+  template <class NT, size_t K>
+  std::array<pred::Vec3<NT>, K> at_zero(int s, const std::array<uint32_t, K> &ids) const;
 };
 
 }  // namespace pccd::narrow

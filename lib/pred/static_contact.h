@@ -67,6 +67,10 @@ extern template bool triangles_meet(const std::array<Vec3<arith::Rational>, 3> &
                                     const std::array<Vec3<arith::Rational>, 3> &);
 extern template bool triangles_meet(const std::array<Vec3<arith::Interval>, 3> &,
                                     const std::array<Vec3<arith::Interval>, 3> &);
+extern template bool segment_meets_triangle(const Vec3<arith::Rational> &, const Vec3<arith::Rational> &,
+                                            const std::array<Vec3<arith::Rational>, 3> &);
+extern template bool segment_meets_triangle(const Vec3<arith::Interval> &, const Vec3<arith::Interval> &,
+                                            const std::array<Vec3<arith::Interval>, 3> &);
 extern template bool ball_meets_triangle(const Vec3<arith::Rational> &, const arith::Rational &,
                                          const std::array<Vec3<arith::Rational>, 3> &);
 extern template bool ball_meets_triangle(const Vec3<arith::Interval> &, const arith::Interval &,

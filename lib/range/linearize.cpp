@@ -343,6 +343,13 @@ void Piece_query::add_triangle_vs_triangle_planes(uint32_t tri, Cnf<kDimTriangle
   }
 }
 
+Cnf<kDimEdge> Piece_query::triangle_vs_edges_boxes(uint32_t tri) const {
+  const auto &t = q_.mesh->triangles()[tri];
+  Cnf<kDimEdge> q;
+  box_conditions(q, {t[0], t[1], t[2]}, 6, 9);
+  return q;
+}
+
 Cnf<kDimTriangle> Piece_query::vertex_vs_triangles_boxes(uint32_t v) const {
   Cnf<kDimTriangle> q;
   box_conditions(q, {v}, 4, 7);

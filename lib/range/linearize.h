@@ -107,12 +107,20 @@ class Piece_query {
   void add_translation_sides_vs_edges(uint32_t e, Cnf<kDimEdge> &q) const;
   bool linear_translation() const { return translation_; }
 
-  // query triangle, stored triangles: their boxes meet (for the static test at t = 0)
+  // A piece of one instant (a = b; the static test at t = 0, Range_index): query
+  // triangle, stored triangles whose boxes meet its box; then (add_) the query
+  // triangle's corners are not all strictly on one side of the stored triangle's plane,
+  // "some n . H_i - (n . a0) w >= 0" and "some <= 0" (linear in the lifted n, n . a0;
+  // necessary for two closed triangles to meet).
   Cnf<kDimTriangle> triangle_vs_triangles_boxes(uint32_t tri) const;
-  // A piece of one instant (a = b): the query triangle's corners are not all strictly on
-  // one side of the stored triangle's plane, "some n . H_i - (n . a0) w >= 0" and "some
-  // <= 0" (linear in the lifted n, n . a0; necessary for two closed triangles to meet).
   void add_triangle_vs_triangle_planes(uint32_t tri, Cnf<kDimTriangle> &q) const;
+  // The same instant: query triangle, stored edges whose boxes meet its box; then (add_) the stored edge's line
+  // meets the closed triangle: its side products with the triangle's three sides (from
+  // the corners at the instant) are all >= 0 or all <= 0 (all 0 when the line lies in
+  // the triangle's plane or the triangle is degenerate; linear in the Plücker
+  // coordinates 0..5 of the edge lift; necessary for the closed edge to meet it).
+  Cnf<kDimEdge> triangle_vs_edges_boxes(uint32_t tri) const;
+  void add_triangle_vs_edge_sides(uint32_t tri, Cnf<kDimEdge> &q) const;
 
   // ball and triangle: boxes only (the distance to a plane is not linear in it)
   Cnf<kDimBall> triangle_vs_balls_boxes(uint32_t tri) const;

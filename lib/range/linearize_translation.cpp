@@ -1,5 +1,6 @@
 // Piece_query's exact conditions for a linear translation (LINEARIZATION.md, "Linear
-// translations"); the rest of Piece_query is in linearize.cpp.
+// translations") and the same side conditions at one instant (the static test); the
+// rest of Piece_query is in linearize.cpp.
 //
 // On the piece every query point moves on the segment start(k) -> end(k) (homogeneous,
 // weight w = w_[0] > 0, constant), all by the same vector d = end - start. In
@@ -86,6 +87,23 @@ void Piece_query::add_translation_sides_vs_edges(uint32_t e, Cnf<kDimEdge> &q) c
   std::vector<Halfspace<kDimEdge>> side(4);  // coefficients start at 0
   for (int i = 0; i < 4; ++i) {
     const I3 &x = c[i], &y = c[(i + 1) % 4];
+    const I3 mom = cross(x, y), dir = scale3(w, sub(y, x));
+    for (int k = 0; k < 3; ++k) {
+      side[i].a[k] = mom[k];
+      side[i].a[3 + k] = dir[k];
+    }
+  }
+  same_sign(q, side);
+}
+
+void Piece_query::add_triangle_vs_edge_sides(uint32_t tri, Cnf<kDimEdge> &q) const {
+  // The stored edge's line (u, v) against the sides X -> Y of the triangle at the
+  // instant: (w (Y - X)) . v + (X x Y) . u, as in add_translation_sides_vs_edges.
+  const auto &t = q_.mesh->triangles()[tri];
+  const Interval w = w_[0];
+  std::vector<Halfspace<kDimEdge>> side(3);  // coefficients start at 0
+  for (int i = 0; i < 3; ++i) {
+    const I3 x = start(t[i]), y = start(t[(i + 1) % 3]);
     const I3 mom = cross(x, y), dir = scale3(w, sub(y, x));
     for (int k = 0; k < 3; ++k) {
       side[i].a[k] = mom[k];

@@ -205,17 +205,48 @@ std::vector<Prim_pair> Range_index::candidates(double a, double b, Thread_pool &
 }
 
 std::vector<Prim_pair> Range_index::static_candidates(Thread_pool &pool) const {
-  const Piece_query pq(rel_, ctx_.side(1 - s_), 0.0, 0.0);
-  const size_t n = ctx_.side(1 - s_).mesh->triangles().size();
-  return collect(n, pool, [&](size_t i, auto &part, auto &ids) {
-    const uint32_t t = static_cast<uint32_t>(i);
-    Cnf<kDimTriangle> q = pq.triangle_vs_triangles_boxes(t);
-    if (!trees_.triangles->may_hit(q)) return;
-    pq.add_triangle_vs_triangle_planes(t, q);
-    ids.clear();
-    trees_.triangles->search(q, ids);
-    for (uint32_t f : ids) part.push_back(pair(TT, TT, f, t));
-  });
+  std::vector<Prim_pair> out;
+  std::optional<Relative_motion> back;  // side s_'s triangles in the query side's frame
+  for (int es : {s_, 1 - s_}) {         // es: the side whose edges are searched
+    const Relative_motion &rel = es == s_ ? rel_ : back.emplace(ctx_.side(es), ctx_.side(s_));
+    const Piece_query pq(rel, ctx_.side(1 - es), 0.0, 0.0);
+    const Stored_trees &trees = es == s_ ? trees_ : stored_trees(*ctx_.side(es).data);
+    const motion::Mesh_body &edges_of = *ctx_.side(es).mesh;
+    const size_t n = ctx_.side(1 - es).mesh->triangles().size();
+    const motion::Mesh_body &tris_of = *ctx_.side(1 - es).mesh;
+    std::vector<Prim_pair> part = collect(n, pool, [&](size_t i, auto &part, auto &ids) {
+      const uint32_t t = static_cast<uint32_t>(i);
+      auto emit = [&](uint32_t f) { part.push_back(es == 0 ? Prim_pair{TT, f, t} : Prim_pair{TT, t, f}); };
+      // First: can t meet any triangle of side es at all (planes, boxes)? The pairs that
+      // meet pass it both ways, so only triangles passing it are searched by edges.
+      Cnf<kDimTriangle> planes = pq.triangle_vs_triangles_boxes(t);
+      if (!trees.triangles->may_hit(planes)) return;
+      pq.add_triangle_vs_triangle_planes(t, planes);
+      const auto &c = tris_of.triangles()[t];
+      if (c[0] == c[1] && c[1] == c[2]) {  // a point, no edge of its own: by triangles
+        ids.clear();
+        trees.triangles->search(planes, ids);
+        for (uint32_t f : ids) emit(f);
+        return;
+      }
+      if (!trees.triangles->any(planes)) return;
+      Cnf<kDimEdge> q = pq.triangle_vs_edges_boxes(t);
+      if (!trees.edges->may_hit(q)) return;
+      pq.add_triangle_vs_edge_sides(t, q);
+      ids.clear();
+      trees.edges->search(q, ids);
+      for (uint32_t e : ids) {
+        if (!ctx_.edge_meets_triangle_at_zero(es, e, t)) continue;
+        size_t count;
+        const uint32_t *f = edges_of.edge_triangles(e, &count);
+        for (size_t j = 0; j < count; ++j) emit(f[j]);
+      }
+    });
+    out.insert(out.end(), part.begin(), part.end());
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
 }
 
 }  // namespace pccd::range

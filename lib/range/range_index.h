@@ -58,8 +58,17 @@ class Range_index {
   int pieces() const { return pieces_; }
   // The candidates of piece [a, b], sorted and unique.
   std::vector<Prim_pair> candidates(double a, double b, Thread_pool &pool) const;
-  // Two meshes: the triangle pairs (TT) whose boxes meet at t = 0 and whose planes do
-  // not leave one triangle strictly on one side (for the static test).
+  // Two meshes: every triangle pair (TT) that meets at t = 0, and perhaps more (for
+  // the static test), sorted and unique. By edges: two closed triangles meet iff an
+  // edge of one meets the other (the extreme points of the intersection of two convex
+  // sets lie on their boundaries; a degenerate triangle is the union of its edges). Each
+  // triangle of one side is searched in the other side's edge tree (boxes, the line
+  // meets the closed triangle: Piece_query::add_triangle_vs_edge_sides), each candidate
+  // edge decided exactly (Pair_ctx::edge_meets_triangle_at_zero), and every triangle on
+  // a meeting edge is paired with the triangle (a triangle whose three indices are
+  // equal, a point, has no edge: it is paired with every triangle its plane clause
+  // leaves). So triangles sharing one edge (a fan) cost one exact test each, not one
+  // per pair of triangles.
   std::vector<Prim_pair> static_candidates(Thread_pool &pool) const;
 
  private:

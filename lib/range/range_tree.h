@@ -63,27 +63,19 @@ class Range_tree {
   // Whether some stored point may satisfy q (q tested on the hull of all lifted points).
   bool may_hit(const Cnf<D> &q) const { return !nodes_.empty() && cnf_possible(q, nodes_[0].hull.data()); }
 
+  // Whether some stored point may satisfy q (as search() reporting one; stops there).
+  bool any(const Cnf<D> &q) const {
+    bool found = false;
+    visit(q, [&](uint32_t, uint32_t) { return found = true; });
+    return found;
+  }
+
   // Appends to out the ids of the stored primitives that may satisfy q.
   void search(const Cnf<D> &q, std::vector<uint32_t> &out) const {
-    if (nodes_.empty()) return;
-    uint32_t stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node &nd = nodes_[stack[--top]];
-      if (!cnf_possible(q, nd.hull.data())) continue;
-      if (nd.left == 0) {  // leaf: each point with its own box
-        for (uint32_t i = nd.begin; i < nd.end; ++i)
-          if (cnf_possible(q, lifted_[order_[i]].data())) out.push_back(order_[i]);
-        continue;
-      }
-      if (cnf_certain(q, nd.hull.data())) {
-        out.insert(out.end(), order_.begin() + nd.begin, order_.begin() + nd.end);
-        continue;
-      }
-      stack[top++] = nd.left + 1;
-      stack[top++] = nd.left;
-    }
+    visit(q, [&](uint32_t begin, uint32_t end) {
+      out.insert(out.end(), order_.begin() + begin, order_.begin() + end);
+      return false;
+    });
   }
 
  private:
@@ -99,6 +91,32 @@ class Range_tree {
   std::vector<std::array<double, D>> mid_;   // box midpoints (building only)
   std::vector<Node> nodes_;                  // nodes_[0]: the root
   std::array<double, D> root_spread_{};
+
+  // The search: report(begin, end) for each run order_[begin, end) of points that may
+  // satisfy q (a whole node where q certainly holds, or one leaf point); stops when
+  // report returns true.
+  template <class Report>
+  void visit(const Cnf<D> &q, Report report) const {
+    if (nodes_.empty()) return;
+    uint32_t stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node &nd = nodes_[stack[--top]];
+      if (!cnf_possible(q, nd.hull.data())) continue;
+      if (nd.left == 0) {  // leaf: each point with its own box
+        for (uint32_t i = nd.begin; i < nd.end; ++i)
+          if (cnf_possible(q, lifted_[order_[i]].data()) && report(i, i + 1)) return;
+        continue;
+      }
+      if (cnf_certain(q, nd.hull.data())) {
+        if (report(nd.begin, nd.end)) return;
+        continue;
+      }
+      stack[top++] = nd.left + 1;
+      stack[top++] = nd.left;
+    }
+  }
 
   // Builds the node of order_[begin, end) at nodes_[at] (appended when at is null).
   void build(uint32_t begin, uint32_t end, uint32_t *at) {
