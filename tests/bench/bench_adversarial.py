@@ -12,9 +12,10 @@ collides and first contact (lo, hi, exact) must equal the others' on every famil
 size (the library's contract); a difference aborts the run.
 
 Budget: a method runs at a size while its time predicted from the previous size
-(x (N / N_prev)^2) fits in --budget-seconds (60 s), and stops for good once one of its
-sizes took more than --cap-seconds (default: no cap); otherwise "-" and it is not
-fitted. Each fitted exponent states the sizes it was fitted on.
+(x (N / N_prev)^2) fits in --budget-seconds (30 s), and stops for good once one of its
+sizes took more than --cap-seconds (30 s); otherwise "-" and it is not fitted. The
+exponents are fitted on N >= --fit-from (1k), or, for a method that reached fewer than
+two such sizes (bvh, boxes), on every size it reached; each states its sizes.
 Timing: one process, threads 1, gc off; each cell is one polyccd.check (two-body) or one
 Index.query_many (on-line) call, the Python reading of the results included. The on-line
 families use the "linear" motions of bench_online.py. With --repeat R every cell is run R
@@ -22,10 +23,10 @@ times (in turn: each size's R runs before the next size): the table shows the mi
 and the exponents table the fit of the minima with, in brackets, the lowest and highest
 exponent fitted on the r-th runs alone (r = 1..R): the spread that load gives a fit.
 
-Usage: python tests/bench/bench_adversarial.py [--sizes 1k,2k,4k,8k,16k]
+Usage: python tests/bench/bench_adversarial.py [--sizes 125,250,500,1k,2k,4k,8k,16k]
            [--families slivers,plates,fans,needles,balls,terrain,mol]
            [--methods range,bvh,boxes,auto] [--motion translation|axis|general]
-           [--budget-seconds 60] [--cap-seconds S] [--repeat 1] [--fit-from N]
+           [--budget-seconds 30] [--cap-seconds 30] [--repeat 1] [--fit-from 1k]
            [--json FILE] [--tables-of FILE]
 """
 
@@ -89,17 +90,17 @@ def case_runner(polyccd, family, n, motion):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--sizes", default="1k,2k,4k,8k,16k")
+    ap.add_argument("--sizes", default="125,250,500,1k,2k,4k,8k,16k")
     ap.add_argument("--families", default=",".join(af.FAMILIES + tuple(ONLINE)))
     ap.add_argument("--methods", default=",".join(METHODS))
-    ap.add_argument("--budget-seconds", type=float, default=60.0)
-    ap.add_argument("--cap-seconds", type=float, default=None,
+    ap.add_argument("--budget-seconds", type=float, default=30.0)
+    ap.add_argument("--cap-seconds", type=float, default=30.0,
                     help="a method stops once one of its sizes took longer than this")
     ap.add_argument("--motion", default="translation", choices=af.MOTIONS,
                     help="body 1's motion in the two-body families (adversarial_families.py)")
     ap.add_argument("--json", default=None, help="write every measurement here")
     ap.add_argument("--repeat", type=int, default=1, help="each cell: the minimum of this many runs")
-    ap.add_argument("--fit-from", default="0",
+    ap.add_argument("--fit-from", default="1k",
                     help="fit on N >= this (a method with fewer than two such sizes: on all it reached)")
     ap.add_argument("--tables-of", default=None, help="only print the tables of a --json file")
     opts = ap.parse_args()
