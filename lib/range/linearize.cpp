@@ -169,9 +169,6 @@ std::vector<std::array<Interval, kDimSides>> lift_triangle_sides(const Body_data
   return out;
 }
 
-namespace {
-
-// Both rotations (hence W) constant and both translations of degree <= 1, exactly.
 bool is_linear_translation(const Moving_body &b) {
   if (b.mo->W.degree() > 0) return false;
   for (int i = 0; i < 3; ++i) {
@@ -181,6 +178,8 @@ bool is_linear_translation(const Moving_body &b) {
   }
   return true;
 }
+
+namespace {
 
 }  // namespace
 

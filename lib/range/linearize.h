@@ -49,6 +49,9 @@ std::vector<std::array<Interval, kDimEdge>> lift_edges(const Body_data &b);
 std::vector<std::array<Interval, kDimBall>> lift_balls(const Body_data &b);
 std::vector<std::array<Interval, kDimSides>> lift_triangle_sides(const Body_data &b);
 
+// The body's rotation (hence W) constant and its translation of degree <= 1, exactly.
+bool is_linear_translation(const Moving_body &b);
+
 // The query body's homogeneous motion in the stored body's frame, in t.
 struct Relative_motion {
   std::array<std::array<IPoly, 3>, 3> M;

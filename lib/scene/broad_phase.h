@@ -28,8 +28,10 @@ inline Broad_phase resolve(Broad_phase p, bool /*online*/, bool min_distance) {
 
 // The automatic phase of one body pair, chosen by evidence (the rule and the
 // measurements it rests on: docs/benchmarks.md, "Where boxes cannot help"): p itself
-// unless it is automatic; bvh with a minimum separation (range has no delta); else
-// range when either body's self box degree is at least kRangeDegree, bvh below.
+// unless it is automatic; bvh with a minimum separation (range has no delta); range for
+// two sphere sets both on linear translations (or at rest: range/linearize.h,
+// is_linear_translation); else range when either body's self box degree is at least
+// kRangeDegree, bvh below.
 // Speed only: every phase gives the same answers.
 constexpr double kRangeDegree = 32;
 Broad_phase choose(Broad_phase p, const narrow::Pair_ctx &ctx, bool min_distance);

@@ -6,6 +6,7 @@
 #include <unordered_map>
 
 #include "enclose/enclose.h"
+#include "range/linearize.h"
 
 namespace pccd::scene {
 
@@ -56,7 +57,10 @@ double self_degree(const narrow::Body_data &d) {
 Broad_phase choose(Broad_phase p, const Pair_ctx &ctx, bool min_distance) {
   if (p != Broad_phase::automatic) return p;
   if (min_distance) return Broad_phase::bvh;
-  const double degree = std::max(self_degree(*ctx.side(0).data), self_degree(*ctx.side(1).data));
+  const Moving_body &a = ctx.side(0), &b = ctx.side(1);
+  if (!a.is_mesh() && !b.is_mesh() && range::is_linear_translation(a) && range::is_linear_translation(b))
+    return Broad_phase::range;
+  const double degree = std::max(self_degree(*a.data), self_degree(*b.data));
   return degree >= kRangeDegree ? Broad_phase::range : Broad_phase::bvh;
 }
 
