@@ -19,7 +19,8 @@ two such sizes (bvh, boxes), on every size it reached; each states its sizes.
 Timing: one process, threads 1, gc off; each cell is one polyccd.check (two-body) or one
 Index.query_many (on-line) call, the Python reading of the results included. The on-line
 families use the "linear" motions of bench_online.py. With --repeat R every cell is run R
-times (in turn: each size's R runs before the next size): the table shows the minimum,
+times (round robin over the methods at each size, so that a burst of load from other
+processes hits every method alike; the first round prints): the table shows the minimum,
 and the exponents table the fit of the minima with, in brackets, the lowest and highest
 exponent fitted on the r-th runs alone (r = 1..R): the spread that load gives a fit.
 
@@ -121,24 +122,28 @@ def main():
         for n in sizes:
             run = case_runner(polyccd, family, n, opts.motion)
             ref = None
-            for m in methods:
-                if m in capped or (m in last and last[m][1] * (n / last[m][0]) ** 2 > opts.budget_seconds):
-                    continue
-                dt, ans, st = run(m)
-                runs = [dt] + [run(m)[0] for _ in range(opts.repeat - 1)]
-                last[m] = (n, min(runs))
-                times[m][n] = runs
-                if opts.cap_seconds is not None and min(runs) > opts.cap_seconds:
+            todo = [m for m in methods if m not in capped and not (
+                m in last and last[m][1] * (n / last[m][0]) ** 2 > opts.budget_seconds)]
+            runs = {m: [] for m in todo}
+            for r in range(opts.repeat):   # round robin: load bursts hit every method alike
+                for m in todo:
+                    dt, ans, st = run(m)
+                    runs[m].append(dt)
+                    if r > 0:
+                        continue
+                    if ref is None:
+                        ref = (m, ans)
+                    elif ans != ref[1]:
+                        bad = next(i for i, (a, b) in enumerate(zip(ans, ref[1])) if a != b)
+                        print(f"ERROR: {family} N = {n}: {m} and {ref[0]} disagree (item {bad}: "
+                              f"{ans[bad]} vs {ref[1][bad]}): a bug of polyccd")
+                        sys.exit(1)
+                    print(f"  {family:8s} N = {n:6d}  {m:5s} {dt:9.3f} s  {st}", flush=True)
+            for m in todo:
+                last[m] = (n, min(runs[m]))
+                times[m][n] = runs[m]
+                if opts.cap_seconds is not None and min(runs[m]) > opts.cap_seconds:
                     capped.add(m)
-                if ref is None:
-                    ref = (m, ans)
-                elif ans != ref[1]:
-                    bad = next(i for i, (a, b) in enumerate(zip(ans, ref[1])) if a != b)
-                    print(f"ERROR: {family} N = {n}: {m} and {ref[0]} disagree (item {bad}: "
-                          f"{ans[bad]} vs {ref[1][bad]}): a bug of polyccd")
-                    sys.exit(1)
-                print(f"  {family:8s} N = {n:6d}  {m:5s} {min(runs):9.3f} s  "
-                      f"(max {max(runs):.3f})  {st}", flush=True)
         out[family] = {m: {str(n): t for n, t in times[m].items()} for m in methods}
     print_tables(out, sizes, methods, parse_size(opts.fit_from))
     if opts.json:
