@@ -16,7 +16,9 @@ Budget: a method runs at a size while its time predicted from the previous size
 sizes took more than --cap-seconds (30 s); otherwise "-" and it is not fitted. The
 exponents are fitted on N >= --fit-from (1k), or, for a method that reached fewer than
 two such sizes (bvh, boxes), on every size it reached; each states its sizes.
-Timing: one process, threads 1, gc off; each cell is one polyccd.check (two-body) or one
+Timing: one process, threads 1, gc off, the process's CPU time (--clock cpu, the default:
+on a machine shared with other processes elapsed time varied up to 2x between adjacent
+runs of the same code) or elapsed time (--clock wall); each cell is one polyccd.check (two-body) or one
 Index.query_many (on-line) call, the Python reading of the results included. The on-line
 families use the "linear" motions of bench_online.py. With --repeat R every cell is run R
 times (round robin over the methods at each size, so that a burst of load from other
@@ -28,7 +30,7 @@ Usage: python tests/bench/bench_adversarial.py [--sizes 125,250,500,1k,2k,4k,8k,
            [--families slivers,plates,fans,needles,balls,terrain,mol]
            [--methods range,bvh,boxes,auto] [--motion translation|axis|general]
            [--budget-seconds 30] [--cap-seconds 30] [--repeat 1] [--fit-from 1k]
-           [--json FILE] [--tables-of FILE]
+           [--clock cpu|wall] [--json FILE] [--tables-of FILE]
 """
 
 import argparse
@@ -56,13 +58,17 @@ def answer(r):
     return (r.collides, None if ct is None else (ct.lo, ct.hi, ct.exact))
 
 
+CLOCK = {"wall": time.perf_counter, "cpu": time.process_time}
+clock = CLOCK["cpu"]
+
+
 def timed(fn):
     gc.collect()
     gc.disable()
     try:
-        t0 = time.perf_counter()
+        t0 = clock()
         res = fn()
-        return time.perf_counter() - t0, res
+        return clock() - t0, res
     finally:
         gc.enable()
 
@@ -104,7 +110,12 @@ def main():
     ap.add_argument("--fit-from", default="1k",
                     help="fit on N >= this (a method with fewer than two such sizes: on all it reached)")
     ap.add_argument("--tables-of", default=None, help="only print the tables of a --json file")
+    ap.add_argument("--clock", default="cpu", choices=sorted(CLOCK),
+                    help="cpu: the process's CPU time (threads 1; what other processes' load "
+                         "does not change), wall: elapsed time")
     opts = ap.parse_args()
+    global clock
+    clock = CLOCK[opts.clock]
     sizes = [parse_size(s) for s in opts.sizes.split(",")]
     methods = opts.methods.split(",")
     if opts.tables_of:
@@ -115,7 +126,8 @@ def main():
     import polyccd
     out = {}
     print(f"bench_adversarial: sizes {sizes}, methods {methods}, motion {opts.motion}, "
-          f"budget {opts.budget_seconds} s, cap {opts.cap_seconds} s, repeat {opts.repeat}, threads 1")
+          f"budget {opts.budget_seconds} s, cap {opts.cap_seconds} s, repeat {opts.repeat}, threads 1, "
+          f"clock {opts.clock}")
     for family in opts.families.split(","):
         times = {m: {} for m in methods}
         last, capped = {}, set()
