@@ -8,6 +8,7 @@
 #include <functional>
 #include <vector>
 
+#include "arith/convert.h"
 #include "pred/query_systems.h"
 
 namespace pccd::pred {
@@ -31,6 +32,13 @@ struct Solve_options {
   // it to the query: ball radii grow by delta, point kinds get the systems of
   // pred/delta_systems.h.
   arith::Rational delta = 0;
+  // delta enclosed in doubles, for the filters (delta_filter.h): set with delta, only
+  // through set_delta.
+  arith::Interval delta_box = 0.0;
+  void set_delta(const arith::Rational &d) {
+    delta = d;
+    delta_box = arith::enclose(d);
+  }
   // The one test of "a minimum distance is set" (config.min_distance > 0).
   bool min_distance() const { return sgn(delta) > 0; }
 };
