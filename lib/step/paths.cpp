@@ -18,6 +18,28 @@ double coefficient(const Step_set &s, uint32_t v, size_t k, int a) {
   return s.coef[m][(k * nv + i) * 3 + a];
 }
 
+// The pair's trajectories: a path's coefficients, a straight vertex as x0 + (x1 - x0) t
+// (NT = Interval: points, the slope enclosed; NT = Rational: exact).
+template <class NT>
+pred::Query_data<NT> query_of(const Step_set &s, int kind, const uint32_t *pts, int n) {
+  pred::Query_data<NT> q;
+  q.kind = kind;
+  q.p.resize(n);
+  for (int i = 0; i < n; ++i)
+    for (int a = 0; a < 3; ++a) {
+      const uint32_t v = pts[i];
+      std::vector<NT> c;
+      if (on_path(s, v)) {
+        for (size_t k = 0; k < s.ncoef[s.vmesh[v]]; ++k) c.push_back(NT(coefficient(s, v, k, a)));
+      } else {
+        const NT x0(s.x0[3 * size_t(v) + a]), x1(s.x1[3 * size_t(v) + a]);
+        c = {x0, x1 - x0};
+      }
+      q.p[i][a] = poly::Poly<NT>(std::move(c));
+    }
+  return q;
+}
+
 }  // namespace
 
 enclose::Box path_box(const Step_set &s, uint32_t v, const double u[3]) {
@@ -38,40 +60,8 @@ enclose::Box path_box(const Step_set &s, uint32_t v, const double u[3]) {
 void solve_paths(const Step_set &s, int kind, const uint32_t *pts, int n, const pred::Solve_options &opt,
                  pred::Contact_result &out) {
   const arith::Nearest_scope nearest;  // before the interval arithmetic
-  pred::Query_data<Interval> iq;
-  iq.kind = kind;
-  iq.p.resize(n);
-  for (int i = 0; i < n; ++i)
-    for (int a = 0; a < 3; ++a) {
-      const uint32_t v = pts[i];
-      std::vector<Interval> c;
-      if (on_path(s, v)) {
-        for (size_t k = 0; k < s.ncoef[s.vmesh[v]]; ++k) c.push_back(Interval(coefficient(s, v, k, a)));
-      } else {
-        const double x0 = s.x0[3 * size_t(v) + a], x1 = s.x1[3 * size_t(v) + a];
-        c = {Interval(x0), Interval(x1) - Interval(x0)};  // the slope enclosed
-      }
-      iq.p[i][a] = poly::Poly<Interval>(std::move(c));
-    }
-  auto exact = [&] {
-    pred::Query_data<Rational> eq;
-    eq.kind = kind;
-    eq.p.resize(n);
-    for (int i = 0; i < n; ++i)
-      for (int a = 0; a < 3; ++a) {
-        const uint32_t v = pts[i];
-        std::vector<Rational> c;
-        if (on_path(s, v)) {
-          for (size_t k = 0; k < s.ncoef[s.vmesh[v]]; ++k) c.push_back(Rational(coefficient(s, v, k, a)));
-        } else {
-          const Rational x0(s.x0[3 * size_t(v) + a]), x1(s.x1[3 * size_t(v) + a]);
-          c = {x0, x1 - x0};
-        }
-        eq.p[i][a] = poly::Poly<Rational>(std::move(c));
-      }
-    return eq;
-  };
-  out = pred::solve(iq, exact, opt);
+  const pred::Query_data<Interval> iq = query_of<Interval>(s, kind, pts, n);
+  out = pred::solve(iq, [&] { return query_of<Rational>(s, kind, pts, n); }, opt);
 }
 
 }  // namespace pccd::step
