@@ -3,7 +3,8 @@
 Checked against things not written here:
   - hand cases with known answers (a vertex on a parabola meeting a static triangle at
     t = 1/2 transversally, tangentially (a double root), missing it by 2^-40, and at the
-    irrational t = 1/sqrt(2), checked by squaring the Fraction bounds);
+    irrational t = 1/sqrt(2), checked by squaring the Fraction bounds; within a minimum
+    distance 3/4 at t = 1/4);
   - brute force over every primitive pair of random small meshes on random cubic paths
     (and a straight obstacle), each pair solved alone by polyccd.solve on its exact
     Fraction trajectories: the set of touching pairs, each pair's time, the first time;
@@ -46,6 +47,14 @@ def test_hand_cases_with_known_times():
     assert hi - lo < F(1, 10 ** 9)
     assert r.stepsize <= 2 ** -0.5 and F(r.stepsize) <= hi
     assert list(r.contacts.kind) == ["vertex-face"] and r.contacts.indices.tolist() == [[0, 0, 0, 0]]
+    # within 3/4 of the face when 1 - 4 t^2 = 3/4, at t = 1/4; never within 1/4 of it
+    # on z = 1 - t^2 / 8 >= 7/8
+    r = P.check_step(None, None, faces, points=[0], paths=vertex_over_triangle([1, 0, -4]),
+                     min_distance="3/4")
+    assert r.first_contact.exact == F(1, 4)
+    r = P.check_step(None, None, faces, points=[0], paths=vertex_over_triangle([1, 0, -0.125]),
+                     min_distance="1/4")
+    assert not r.collides
 
 
 def random_mesh(rng, n):
