@@ -135,17 +135,18 @@ double dot_low(const double *d, const Interval *x) {
 // The certificate of the header for the direction s d (s = +-1, exact).
 bool certified(const V3 &d, double s, const Ends &q, const Interval &delta) {
   const double sd[3] = {s * d.x[0], s * d.x[1], s * d.x[2]};
-  const Interval D[3] = {Interval(sd[0]), Interval(sd[1]), Interval(sd[2])};
   double low = HUGE_VAL;
   for (int k = 0; k < q.pairs; ++k) {
     const double g = dot_low(sd, q.diff[k]);
     if (!(g > 0)) return false;  // also NaN
     low = least(low, g);
   }
-  const Interval dd = D[0] * D[0] + D[1] * D[1] + D[2] * D[2];
-  const Interval need = delta * delta * dd;
-  const Interval have = Interval(low) * Interval(low);
-  return need.hi < HUGE_VAL && have.lo > need.hi;
+  // delta^2 (d . d) rounded up, low^2 rounded down (each operation then one ulp outward).
+  double dd = 0;
+  for (double x : sd) dd = arith::round_up(dd + arith::round_up(x * x));
+  const double need = arith::round_up(arith::round_up(delta.hi * delta.hi) * dd);
+  const double have = arith::round_down(low * low);
+  return need < HUGE_VAL && have > need;
 }
 
 }  // namespace

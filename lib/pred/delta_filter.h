@@ -10,10 +10,13 @@
 // common normal and the in-plane normals of each edge, also in the plane of edge a and
 // b's start for nearly parallel edges; vertex-edge: the perpendicular from the vertex to
 // the line; vertex-vertex: the difference; each at t = 0 and t = 1) are scored in plain
-// doubles (the approximate gap), in this order, and the first clear of delta is certified, in outward-rounded
-// intervals (arith/interval.h): g at both ends from the enclosures c0 and c0 + c1 of
-// the endpoints, its least lower bound L, then L > 0 and L * L > delta^2 (d . d) with
-// the left side rounded down and the right side up. A derived bound, no tolerance.
+// doubles (the approximate gap), in this order, and the first clear of delta (the axes
+// first) is certified with outward rounding (arith/interval.h): the point differences
+// at both ends as intervals from the enclosures c0 and c0 + c1 of the endpoints, g's
+// lower bound over them with every product and sum stepped one ulp down (valid in any
+// rounding mode), its least value L over the pairs, then L > 0 and L * L > delta^2
+// (d . d) with the left side rounded down and the right side up. A derived bound, no
+// tolerance.
 //
 // Same decision on every path: the filter reads only the points' coefficient
 // enclosures (x(t) = c0 + c1 t, Linear_points) and delta's enclosure. The single call
