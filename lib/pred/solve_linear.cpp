@@ -13,7 +13,6 @@ namespace {
 // The staged solver on n points with finite coordinates.
 Contact_result solve_staged(int kind, size_t n, const double *p0, const double *p1,
                             const Solve_options &opt) {
-  const arith::Nearest_scope nearest;  // before any interval arithmetic
   // The interval stages see the doubles as exact points; the exact trajectories are
   // built only if those stages cannot decide.
   Query_data<Interval> iq;
