@@ -46,7 +46,7 @@ bool linear_points_of(const Query_data<arith::Interval> &q, Linear_points &out);
 
 // The coefficients of n points moving from p0 to p1 (3 finite doubles each) as the
 // staged solver encloses them: c0 = x0, c1 = x1 - x0 (a point or its tightest enclosure
-// under round-to-nearest; the caller holds an arith::Nearest_scope).
+// under round-to-nearest: the C call's rounding scope, util/rounding.h).
 void linear_points_from(size_t n, const double *p0, const double *p1, Linear_points &out);
 
 // True when the query (kind VERTEX_FACE, EDGE_EDGE, VERTEX_EDGE or VERTEX_VERTEX; false

@@ -259,7 +259,6 @@ Contact_result solve_at(const Query_data<Interval> &iq,
                         const std::function<Query_data<Rational>()> &exact_points,
                         const Solve_options &opt) {
   Contact_result out;
-  const arith::Nearest_scope nearest;  // lets intervals certify exact operations
   util::work_step();  // one query (util/work_budget.h)
   if (bounds_separate(iq)) {
     out.stage = STAGE_BOUNDS;

@@ -14,7 +14,6 @@ namespace {
 // The staged solver on n points with finite coordinates.
 Contact_result solve_staged(int kind, size_t n, const double *p0, const double *p1,
                             const Solve_options &opt) {
-  const arith::Nearest_scope nearest;  // before any interval arithmetic
   // The interval stages see the doubles as exact points; the exact trajectories are
   // built only if those stages cannot decide.
   Query_data<Interval> iq;
@@ -65,7 +64,6 @@ void solve_linear(int kind, size_t n, const double *p0, const double *p1, const 
   } else {
     // The staged solver's first test with a minimum distance (delta_filter.h), on the
     // same enclosures, before its interval query is built.
-    const arith::Nearest_scope nearest;
     Linear_points lp;
     linear_points_from(n, p0, p1, lp);
     if (delta_separated(kind, lp, opt.delta_box)) {

@@ -43,7 +43,6 @@ pred::Query_data<NT> query_of(const Step_set &s, int kind, const uint32_t *pts, 
 }  // namespace
 
 enclose::Box path_box(const Step_set &s, uint32_t v, const double u[3]) {
-  const arith::Nearest_scope nearest;
   const size_t n = s.ncoef[s.vmesh[v]];
   enclose::Box b;
   for (int a = 0; a < 3; ++a) {
@@ -59,7 +58,6 @@ enclose::Box path_box(const Step_set &s, uint32_t v, const double u[3]) {
 
 void solve_paths(const Step_set &s, int kind, const uint32_t *pts, int n, const pred::Solve_options &opt,
                  pred::Contact_result &out) {
-  const arith::Nearest_scope nearest;  // before the interval arithmetic
   const pred::Query_data<Interval> iq = query_of<Interval>(s, kind, pts, n);
   out = pred::solve(iq, [&] { return query_of<Rational>(s, kind, pts, n); }, opt);
 }

@@ -204,10 +204,7 @@ def _paths(paths, V0, V1):
 
 def _solve(V0, V1, faces, edges, points, obstacles, min_distance, mode, threads, limits,
            time_tolerance="1e-12", paths=None):
-    if threads is None:
-        threads = 1
-    if not isinstance(threads, int) or isinstance(threads, bool) or not 1 <= threads <= 1024:
-        raise InputError(f"opt.threads: {threads!r} is outside 1..1024")
+    threads = _limits.thread_count(1 if threads is None else threads)  # C checks the range
     _limits.warn_threads(threads)
     c = None if paths is None else _paths(paths, V0, V1)
     if c is not None:
