@@ -232,7 +232,6 @@ bool Pair_ctx::edge_meets_triangle_at_zero(int s, uint32_t e, uint32_t t) const 
     const auto x = at_zero<NT>(1 - s, triangle(1 - s, t));
     return pred::segment_meets_triangle(p[0], p[1], x);
   };
-  const arith::Nearest_scope nearest;
   try {
     return test(Interval(0.0));
   } catch (const arith::Uncertain &) {
