@@ -215,7 +215,6 @@ std::array<pred::Vec3<NT>, K> Pair_ctx::at_zero(int s, const std::array<uint32_t
 }
 
 bool Pair_ctx::triangles_meet_at_zero(uint32_t a, uint32_t b) const {
-  const arith::Nearest_scope nearest;
   try {
     return pred::triangles_meet(at_zero<Interval>(0, triangle(0, a)), at_zero<Interval>(1, triangle(1, b)));
   } catch (const arith::Uncertain &) {
