@@ -6,6 +6,7 @@
 namespace pccd::motion {
 
 using arith::Interval;
+using arith::round_down;
 using arith::round_up;
 
 namespace {
@@ -98,74 +99,148 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
 
 void Chain_path::enclose(double a, double b, std::vector<Pose_bounds> &out) const {
   const Interval T(a, b);
-  const size_t n = ends_.size();
-  out.resize(n);
-  for (size_t k = 0; k < n; ++k) {
-    const Chain_link &L = c_.link(k);
-    const Joint_doubles &d = ends_[k];
-    const Pose_bounds &O = origin_[k];
-    Pose_bounds &P = out[k];
-    double Rpo[3][3], epo;  // R_parent R_origin
-    if (L.parent < 0) {
-      for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) Rpo[i][j] = O.Rm[i][j];
-        P.om[i] = O.om[i];
+  out.resize(ends_.size());
+  for (size_t k = 0; k < ends_.size(); ++k) ball_of_link(k, T, out);
+}
+
+void Chain_path::enclose_link(double a, double b, size_t k, std::vector<Pose_bounds> &out,
+                              std::vector<char> &have) const {
+  out.resize(ends_.size());
+  have.resize(ends_.size(), 0);
+  if (have[k]) return;
+  const long p = c_.link(k).parent;
+  if (p >= 0) enclose_link(a, b, static_cast<size_t>(p), out, have);  // parents come first
+  ball_of_link(k, Interval(a, b), out);
+  have[k] = 1;
+}
+
+void Chain_path::ball_of_link(size_t k, const Interval &T, std::vector<Pose_bounds> &out) const {
+  const Chain_link &L = c_.link(k);
+  const Joint_doubles &d = ends_[k];
+  const Pose_bounds &O = origin_[k];
+  Pose_bounds &P = out[k];
+  double Rpo[3][3], epo;  // R_parent R_origin
+  if (L.parent < 0) {
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) Rpo[i][j] = O.Rm[i][j];
+      P.om[i] = O.om[i];
+    }
+    epo = O.eps;
+    P.rho = 0;
+  } else {
+    const Pose_bounds &Q = out[L.parent];
+    compose(Q.Rm, Q.eps, O.Rm, O.eps, Rpo, epo);
+    for (int i = 0; i < 3; ++i) P.om[i] = Q.om[i];
+    P.rho = Q.rho;
+    add_rotated(Q.Rm, Q.eps, O.om, 0.0, P.om, P.rho);
+  }
+  const double *ax = axis_[k].data();
+  if (L.joint == Joint_type::prismatic) {
+    const Interval e = line(d.e0, d.e1, T);
+    double vm[3], s = 0;
+    for (int i = 0; i < 3; ++i) {
+      const Interval v = e * Interval(ax[i]);
+      vm[i] = 0.5 * v.lo + 0.5 * v.hi;
+      const double r = std::max(round_up(v.hi - vm[i]), round_up(vm[i] - v.lo));
+      s += r * r;
+    }
+    add_rotated(Rpo, epo, vm, up(std::sqrt(up(s))), P.om, P.rho);
+  }
+  if (L.joint != Joint_type::revolute && L.joint != Joint_type::continuous) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) P.Rm[i][j] = Rpo[i][j];
+    P.eps = epo;
+    return;
+  }
+  Interval J[3][3];
+  const Interval c = line(d.c0, d.c1, T), s = line(d.s0, d.s1, T);
+  const Interval nn = sq(c) + sq(s) * axis2_[k];
+  double Jm[3][3], ej;
+  if (nn.lo > 0) {
+    const Interval two(2.0);
+    Interval alpha = two * c * s / nn, beta = two * sq(s) / nn;
+    if (axis2_[k].lo == 1 && axis2_[k].hi == 1) {
+      alpha = clip(alpha, -1, 1);
+      beta = clip(beta, 0, 2);
+    }
+    // I + alpha [a]x + beta (a a^T - |a|^2 I)
+    const Interval A[3] = {ax[0], ax[1], ax[2]};
+    const Interval cross[3][3] = {{0.0, -A[2], A[1]}, {A[2], 0.0, -A[0]}, {-A[1], A[0], 0.0}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        Interval v = beta * (A[i] * A[j] - (i == j ? axis2_[k] : Interval(0.0))) + alpha * cross[i][j];
+        if (i == j) v = Interval(1.0) + v;
+        J[i][j] = clip(v, -1, 1);
       }
-      epo = O.eps;
-      P.rho = 0;
-    } else {
-      const Pose_bounds &Q = out[L.parent];
-      compose(Q.Rm, Q.eps, O.Rm, O.eps, Rpo, epo);
-      for (int i = 0; i < 3; ++i) P.om[i] = Q.om[i];
-      P.rho = Q.rho;
-      add_rotated(Q.Rm, Q.eps, O.om, 0.0, P.om, P.rho);
-    }
-    const double *ax = axis_[k].data();
-    if (L.joint == Joint_type::prismatic) {
-      const Interval e = line(d.e0, d.e1, T);
-      double vm[3], s = 0;
-      for (int i = 0; i < 3; ++i) {
-        const Interval v = e * Interval(ax[i]);
-        vm[i] = 0.5 * v.lo + 0.5 * v.hi;
-        const double r = std::max(round_up(v.hi - vm[i]), round_up(vm[i] - v.lo));
-        s += r * r;
-      }
-      add_rotated(Rpo, epo, vm, up(std::sqrt(up(s))), P.om, P.rho);
-    }
-    if (L.joint != Joint_type::revolute && L.joint != Joint_type::continuous) {
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) P.Rm[i][j] = Rpo[i][j];
-      P.eps = epo;
-      continue;
-    }
-    Interval J[3][3];
+    ball_of(J, Jm, ej);
+  } else {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) Jm[i][j] = 0;
+    ej = 1;  // a rotation has norm 1
+  }
+  compose(Rpo, epo, Jm, ej, P.Rm, P.eps);
+}
+
+void Chain_path::derivatives(double a, double b, std::vector<Path_derivs> &out) const {
+  const Interval T(a, b);
+  out.resize(ends_.size());
+  for (size_t k = 0; k < ends_.size(); ++k) derivs_of_link(k, T, out);
+}
+
+void Chain_path::derivatives_link(double a, double b, size_t k, std::vector<Path_derivs> &out,
+                                  std::vector<char> &have) const {
+  out.resize(ends_.size());
+  have.resize(ends_.size(), 0);
+  if (have[k]) return;
+  const long p = c_.link(k).parent;
+  if (p >= 0) derivatives_link(a, b, static_cast<size_t>(p), out, have);
+  derivs_of_link(k, Interval(a, b), out);
+  have[k] = 1;
+}
+
+void Chain_path::derivs_of_link(size_t k, const Interval &T, std::vector<Path_derivs> &out) const {
+  auto mag = [](const Interval &x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); };
+  const Chain_link &L = c_.link(k);
+  const Joint_doubles &d = ends_[k];
+  Path_derivs P;
+  Interval d1p(0.0), d2p(0.0), o2p(0.0);
+  if (L.parent >= 0) {
+    const Path_derivs &Q = out[L.parent];
+    d1p = Interval(Q.d1);
+    d2p = Interval(Q.d2);
+    o2p = Interval(Q.o2);
+  }
+  // |a| enclosed: sqrt is within one ulp in any rounding mode, so two steps out suffice.
+  const double an_lo = std::sqrt(axis2_[k].lo), an_hi = std::sqrt(axis2_[k].hi);
+  const Interval A(round_down(round_down(an_lo)), round_up(round_up(an_hi)));
+  const double *po = origin_[k].om;
+  double vmax = norm(po), v1 = 0;
+  Interval th1(0.0), th2(0.0);
+  if (L.joint == Joint_type::prismatic) {
+    vmax = up(vmax + up(A.hi * std::max(std::fabs(d.e0), std::fabs(d.e1))));
+    v1 = mag(A * (Interval(d.e1) - Interval(d.e0)));  // |v'| = |A (e1 - e0)|
+  } else if (L.joint == Joint_type::revolute || L.joint == Joint_type::continuous) {
+    const Interval dc = Interval(d.c1) - Interval(d.c0), ds = Interval(d.s1) - Interval(d.s0);
+    const Interval K = Interval(d.c0) * ds - Interval(d.s0) * dc;
     const Interval c = line(d.c0, d.c1, T), s = line(d.s0, d.s1, T);
     const Interval nn = sq(c) + sq(s) * axis2_[k];
-    double Jm[3][3], ej;
-    if (nn.lo > 0) {
-      const Interval two(2.0);
-      Interval alpha = two * c * s / nn, beta = two * sq(s) / nn;
-      if (axis2_[k].lo == 1 && axis2_[k].hi == 1) {
-        alpha = clip(alpha, -1, 1);
-        beta = clip(beta, 0, 2);
-      }
-      // I + alpha [a]x + beta (a a^T - |a|^2 I)
-      const Interval A[3] = {ax[0], ax[1], ax[2]};
-      const Interval cross[3][3] = {{0.0, -A[2], A[1]}, {A[2], 0.0, -A[0]}, {-A[1], A[0], 0.0}};
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          Interval v = beta * (A[i] * A[j] - (i == j ? axis2_[k] : Interval(0.0))) + alpha * cross[i][j];
-          if (i == j) v = Interval(1.0) + v;
-          J[i][j] = clip(v, -1, 1);
-        }
-      ball_of(J, Jm, ej);
-    } else {
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) Jm[i][j] = 0;
-      ej = 1;  // a rotation has norm 1
+    if (!(nn.lo > 0)) {
+      out[k] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+      return;
     }
-    compose(Rpo, epo, Jm, ej, P.Rm, P.eps);
+    const Interval nlo(nn.lo), np = Interval(2.0) * (c * dc + axis2_[k] * s * ds);
+    const Interval akt = Interval(2.0) * A * Interval(mag(K));  // >= |2 A K|
+    th1 = Interval(mag(akt / nlo));
+    th2 = Interval(mag(akt * Interval(mag(np)) / (nlo * nlo)));
   }
+  const Interval d1 = d1p + th1;
+  const Interval d2 = d2p + Interval(2.0) * d1p * th1 + th1 * th1 + th2;
+  const Interval o2 = o2p + d2p * Interval(vmax) + Interval(2.0) * d1p * Interval(v1);
+  P.d1 = d1.hi;
+  P.d2 = d2.hi;
+  P.o2 = o2.hi;
+  if (!std::isfinite(P.d1) || !std::isfinite(P.d2) || !std::isfinite(P.o2)) P = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+  out[k] = P;
 }
 
 }  // namespace pccd::motion

@@ -30,52 +30,127 @@ enclose::Pose_piece pose_piece(const motion::Pose_bounds &p) {
   return out;
 }
 
-// The poses of every link and obstacle on the dyadic pieces the filter visits, each
-// computed once per check.
+// The poses of every link and obstacle on the dyadic pieces and at the dyadic instants
+// the filter visits, each computed once per check.
 class Piece_poses {
  public:
   Piece_poses(const motion::Chain_path &path, const std::vector<Moving_body> &obstacles)
       : path_(path), obstacles_(obstacles) {}
 
-  const enclose::Pose_piece &link(size_t k, int d, long i) { return at(d, i, true).links[k]; }
-  const enclose::Pose_piece &obstacle(size_t k, int d, long i) {
-    Piece &p = at(d, i, false);
+  // Link k over the piece: the ball, and the second-order enclosure (link_filter.h) when
+  // its chords' growth is at most half the ball's radii (at the coarse pieces the ball
+  // is tighter; the choice is a heuristic, both enclosures hold).
+  Side_piece link(size_t k, int d, long i) {
+    Piece &p = at(d, i);
+    const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
+    Side_piece s;
+    s.ball = &link_pose(p, k, a, b);
+    path_.derivatives_link(a, b, k, p.derivs, p.have_derivs);
+    const motion::Path_derivs &D = p.derivs[k];
+    const double gr = arith::round_up(std::ldexp(D.d2, -2 * d - 3)), go = arith::round_up(std::ldexp(D.o2, -2 * d - 3));
+    if (std::isfinite(gr) && std::isfinite(go) && gr <= 0.5 * s.ball->Rr[0][0] && go <= 0.5 * s.ball->orad[0]) {
+      s.at_a = &link_at(k, d, i);
+      s.at_b = &link_at(k, d, i + 1);
+      s.g_rot = gr;
+      s.g_off = go;
+    }
+    return s;
+  }
+  const enclose::Pose_piece &link_at(size_t k, int d, long i) {
+    const double t = std::ldexp(static_cast<double>(i), -d);
+    return link_pose(instant(d, i), k, t, t);
+  }
+  Side_piece obstacle(size_t k, int d, long i) {
+    Piece &p = at(d, i);
     if (!p.have_obstacle[k]) {
       const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
-      // A stationary obstacle's pose is the same on every piece.
-      const bool still = obstacles_[k].mo == narrow::identity_motion();
-      p.obstacles[k] = d == 0 || still ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], a, b);
+      p.obstacles[k] = still(k) || d == 0 ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], a, b);
+      p.have_obstacle[k] = true;
+    }
+    Side_piece s;
+    s.ball = &p.obstacles[k];
+    s.identity = still(k);
+    return s;
+  }
+  const enclose::Pose_piece &obstacle_at(size_t k, int d, long i) {
+    Piece &p = instant(d, i);
+    if (!p.have_obstacle[k]) {
+      const double t = std::ldexp(static_cast<double>(i), -d);
+      p.obstacles[k] = still(k) ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], t, t);
       p.have_obstacle[k] = true;
     }
     return p.obstacles[k];
   }
 
  private:
+  // The poses over one piece or at one instant, each link's made on its first demand
+  // (with its ancestors': motion/chain_path.h, enclose_link).
   struct Piece {
+    std::vector<motion::Pose_bounds> bounds;
+    std::vector<char> have_bounds;
     std::vector<enclose::Pose_piece> links;
+    std::vector<char> have_links;
+    std::vector<motion::Path_derivs> derivs;  // pieces only
+    std::vector<char> have_derivs;
     std::vector<enclose::Pose_piece> obstacles;
     std::vector<bool> have_obstacle;
   };
-  Piece &at(int d, long i, bool links) {
-    Piece &p = pieces_[{d, i}];
+  // A stationary obstacle's pose is the same on every piece.
+  bool still(size_t k) const { return obstacles_[k].mo == narrow::identity_motion(); }
+  Piece &start(Piece &p) {
     if (p.have_obstacle.empty()) {
       p.obstacles.resize(obstacles_.size());
       p.have_obstacle.assign(obstacles_.size() + 1, false);  // + 1: never empty after this
-    }
-    if (links && p.links.empty()) {
-      const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
-      path_.enclose(a, b, bounds_);
-      p.links.reserve(bounds_.size());
-      for (const motion::Pose_bounds &x : bounds_) p.links.push_back(pose_piece(x));
+      p.links.resize(path_.size());
+      p.have_links.assign(path_.size(), 0);
     }
     return p;
+  }
+  const enclose::Pose_piece &link_pose(Piece &p, size_t k, double a, double b) {
+    if (!p.have_links[k]) {
+      path_.enclose_link(a, b, k, p.bounds, p.have_bounds);
+      p.links[k] = pose_piece(p.bounds[k]);
+      p.have_links[k] = 1;
+    }
+    return p.links[k];
+  }
+  Piece &at(int d, long i) { return start(pieces_[{d, i}]); }
+  // The instant i / 2^d, kept under its lowest terms (the end of one piece is the start
+  // of the next, and of pieces of other depths).
+  Piece &instant(int d, long i) {
+    while (d > 0 && i % 2 == 0) {
+      i /= 2;
+      --d;
+    }
+    if (i == 0) d = 0;
+    return start(instants_[{d, i}]);
   }
 
   const motion::Chain_path &path_;
   const std::vector<Moving_body> &obstacles_;
   std::map<std::pair<int, long>, Piece> pieces_;
-  std::vector<motion::Pose_bounds> bounds_;
+  std::map<std::pair<int, long>, Piece> instants_;
 };
+
+// The report of a witness found by the filter (decide mode): the pair alone, touching
+// exactly at the witness's instant (scene.h, solve_planned's decide report).
+Scene_report witness_report(size_t i, size_t j, const Witness &w, double free_until) {
+  Scene_report rep;
+  const Rational t = Rational(static_cast<long>(w.index)) / Rational(mpz_class(1) << w.depth);
+  Pair_report pr;
+  pr.i = i;
+  pr.j = j;
+  pr.lo = pr.hi = t;
+  pr.exact = true;
+  pr.contacts.push_back({{narrow::F_TRIANGLE, w.a}, {narrow::F_TRIANGLE, w.b}, t, t, true});
+  rep.pairs.push_back(std::move(pr));
+  rep.first_pairs.push_back(0);
+  rep.collides = true;
+  rep.lo = rep.hi = t;
+  rep.exact = true;
+  rep.free_until = Rational(free_until);
+  return rep;
+}
 
 }  // namespace
 
@@ -99,20 +174,49 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
   if (ro.filter) {
     Piece_poses poses(path, obst);
     const double reach = opt.reach;
-    auto side = [&](size_t k) -> Pose_of {
-      if (k < nr) return [&, link = r.bodies[k].link](int d, long i) -> const enclose::Pose_piece & {
-        return poses.link(link, d, i);
-      };
-      return [&, k](int d, long i) -> const enclose::Pose_piece & { return poses.obstacle(k - nr, d, i); };
+    const bool decide = !opt.solve.want_time && !opt.all_contacts;
+    auto side = [&](size_t k) {
+      Filter_side s;
+      if (k < nr) {
+        const size_t link = r.bodies[k].link;
+        s.data = r.bodies[k].body.get();
+        s.piece = [&poses, link](int d, long i) { return poses.link(link, d, i); };
+        s.instant = [&poses, link](int d, long i) -> const enclose::Pose_piece & { return poses.link_at(link, d, i); };
+      } else {
+        s.data = obst[k - nr].data.get();
+        s.piece = [&poses, o = k - nr](int d, long i) { return poses.obstacle(o, d, i); };
+        s.instant = [&poses, o = k - nr](int d, long i) -> const enclose::Pose_piece & { return poses.obstacle_at(o, d, i); };
+      }
+      return s;
     };
-    auto data = [&](size_t k) -> const Body_data & { return k < nr ? *r.bodies[k].body : *obst[k - nr].data; };
     std::vector<Pair_plan> kept;
+    Witness found;
+    size_t found_i = 0, found_j = 0;
+    // After a witness the other pairs are only cleared up to its pair's bound, and
+    // briefly (kAfter_tests): their bounds serve free_until alone.
+    constexpr size_t kAfter_tests = 1024;
+    Filter_limits lim;
     for (Pair_plan p : plans) {
-      p.lower = first_uncleared(data(p.i), side(p.i), data(p.j), side(p.j), reach);
+      Witness w;
+      p.lower = first_uncleared(side(p.i), side(p.j), reach, lim, decide && !found.found ? &w : nullptr);
+      if (w.found) {
+        found = w;
+        found_i = p.i;
+        found_j = p.j;
+        lim.until = p.lower;
+        lim.max_tests = kAfter_tests;
+      }
       if (p.lower <= 1) kept.push_back(p);
     }
     std::stable_sort(kept.begin(), kept.end(),
                      [](const Pair_plan &x, const Pair_plan &y) { return x.lower < y.lower; });
+    // Decide mode: a witness just after a kept pair's bound, before any exact motion.
+    for (size_t k = 0; k < kept.size() && decide && !found.found; ++k)
+      if (witness_after(side(kept[k].i), side(kept[k].j), kept[k].lower, found)) {
+        found_i = kept[k].i;
+        found_j = kept[k].j;
+      }
+    if (found.found) return witness_report(found_i, found_j, found, kept.empty() ? 1.0 : kept[0].lower);
     plans = std::move(kept);
   }
 
