@@ -100,27 +100,44 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
 void Chain_path::enclose(double a, double b, std::vector<Pose_bounds> &out) const {
   const Interval T(a, b);
   out.resize(ends_.size());
-  for (size_t k = 0; k < ends_.size(); ++k) ball_of_link(k, T, out);
+  for (size_t k = 0; k < ends_.size(); ++k) ball_of_link(k, T, out, -1);
 }
 
-void Chain_path::enclose_link(double a, double b, size_t k, std::vector<Pose_bounds> &out,
+void Chain_path::enclose_link(double a, double b, size_t k, long base, std::vector<Pose_bounds> &out,
                               std::vector<char> &have) const {
   out.resize(ends_.size());
   have.resize(ends_.size(), 0);
   if (have[k]) return;
   const long p = c_.link(k).parent;
-  if (p >= 0) enclose_link(a, b, static_cast<size_t>(p), out, have);  // parents come first
-  ball_of_link(k, Interval(a, b), out);
+  if (p >= 0 && p != base) enclose_link(a, b, static_cast<size_t>(p), base, out, have);  // parents first
+  ball_of_link(k, Interval(a, b), out, base);
   have[k] = 1;
 }
 
-void Chain_path::ball_of_link(size_t k, const Interval &T, std::vector<Pose_bounds> &out) const {
+long Chain_path::common_ancestor(size_t i, size_t j) const {
+  auto depth = [&](long k) {
+    int n = 0;
+    for (; k >= 0; k = c_.link(static_cast<size_t>(k)).parent) ++n;
+    return n;
+  };
+  long a = static_cast<long>(i), b = static_cast<long>(j);
+  int da = depth(a), db = depth(b);
+  for (; da > db; --da) a = c_.link(static_cast<size_t>(a)).parent;
+  for (; db > da; --db) b = c_.link(static_cast<size_t>(b)).parent;
+  while (a != b) {
+    a = c_.link(static_cast<size_t>(a)).parent;
+    b = c_.link(static_cast<size_t>(b)).parent;
+  }
+  return a;  // -1 when the two hang from different roots
+}
+
+void Chain_path::ball_of_link(size_t k, const Interval &T, std::vector<Pose_bounds> &out, long base) const {
   const Chain_link &L = c_.link(k);
   const Joint_doubles &d = ends_[k];
   const Pose_bounds &O = origin_[k];
   Pose_bounds &P = out[k];
   double Rpo[3][3], epo;  // R_parent R_origin
-  if (L.parent < 0) {
+  if (L.parent < 0 || L.parent == base) {
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) Rpo[i][j] = O.Rm[i][j];
       P.om[i] = O.om[i];
@@ -184,27 +201,27 @@ void Chain_path::ball_of_link(size_t k, const Interval &T, std::vector<Pose_boun
 void Chain_path::derivatives(double a, double b, std::vector<Path_derivs> &out) const {
   const Interval T(a, b);
   out.resize(ends_.size());
-  for (size_t k = 0; k < ends_.size(); ++k) derivs_of_link(k, T, out);
+  for (size_t k = 0; k < ends_.size(); ++k) derivs_of_link(k, T, out, -1);
 }
 
-void Chain_path::derivatives_link(double a, double b, size_t k, std::vector<Path_derivs> &out,
+void Chain_path::derivatives_link(double a, double b, size_t k, long base, std::vector<Path_derivs> &out,
                                   std::vector<char> &have) const {
   out.resize(ends_.size());
   have.resize(ends_.size(), 0);
   if (have[k]) return;
   const long p = c_.link(k).parent;
-  if (p >= 0) derivatives_link(a, b, static_cast<size_t>(p), out, have);
-  derivs_of_link(k, Interval(a, b), out);
+  if (p >= 0 && p != base) derivatives_link(a, b, static_cast<size_t>(p), base, out, have);
+  derivs_of_link(k, Interval(a, b), out, base);
   have[k] = 1;
 }
 
-void Chain_path::derivs_of_link(size_t k, const Interval &T, std::vector<Path_derivs> &out) const {
+void Chain_path::derivs_of_link(size_t k, const Interval &T, std::vector<Path_derivs> &out, long base) const {
   auto mag = [](const Interval &x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); };
   const Chain_link &L = c_.link(k);
   const Joint_doubles &d = ends_[k];
   Path_derivs P;
   Interval d1p(0.0), d2p(0.0), o2p(0.0);
-  if (L.parent >= 0) {
+  if (L.parent >= 0 && L.parent != base) {
     const Path_derivs &Q = out[L.parent];
     d1p = Interval(Q.d1);
     d2p = Interval(Q.d2);

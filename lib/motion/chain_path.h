@@ -80,17 +80,24 @@ class Chain_path {
   void enclose(double a, double b, std::vector<Pose_bounds> &out) const;
   // The derivative bounds of every link over [a, b] (above), into out (resized).
   void derivatives(double a, double b, std::vector<Path_derivs> &out) const;
-  // The same for link k and its ancestors alone, those not yet marked in have (one flag
-  // per link; out and have are resized on first use, then kept by the caller per piece).
-  void enclose_link(double a, double b, size_t k, std::vector<Pose_bounds> &out, std::vector<char> &have) const;
-  void derivatives_link(double a, double b, size_t k, std::vector<Path_derivs> &out,
+  // The same for link k and its ancestors below base alone, those not yet marked in have
+  // (one flag per link; out and have are resized on first use, then kept by the caller
+  // per piece), relative to link base: base an ancestor of k, or -1 (the world frame).
+  // Relative to base, the poses are those of the chain below base with base's pose
+  // taken as the identity: the motion of the ancestors that move both links of a
+  // self-collision pair alike drops out (scene/robot.h).
+  void enclose_link(double a, double b, size_t k, long base, std::vector<Pose_bounds> &out,
+                    std::vector<char> &have) const;
+  void derivatives_link(double a, double b, size_t k, long base, std::vector<Path_derivs> &out,
                         std::vector<char> &have) const;
+  // The lowest link that is i or an ancestor of i and j or an ancestor of j; -1: none.
+  long common_ancestor(size_t i, size_t j) const;
   size_t size() const { return ends_.size(); }
 
  private:
   // Link k over T, its parent's entry of out already made.
-  void ball_of_link(size_t k, const arith::Interval &T, std::vector<Pose_bounds> &out) const;
-  void derivs_of_link(size_t k, const arith::Interval &T, std::vector<Path_derivs> &out) const;
+  void ball_of_link(size_t k, const arith::Interval &T, std::vector<Pose_bounds> &out, long base) const;
+  void derivs_of_link(size_t k, const arith::Interval &T, std::vector<Path_derivs> &out, long base) const;
   const Chain &c_;
   std::vector<Joint_doubles> ends_;
   std::vector<Pose_bounds> origin_;  // each link's origin pose (R of origin_q, p: rho = 0)

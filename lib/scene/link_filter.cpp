@@ -30,6 +30,14 @@ double spread_of(const enclose::Pose_piece &p, const narrow::Body_data &d) {
   return 3 * rr * d.reach + orad;
 }
 
+// With the piece's ends: what the motion adds across the chords (the chords themselves
+// are thin across the motion, so nodes are split down to that).
+double spread_of(const Side_piece &s, const narrow::Body_data &d) {
+  if (s.identity) return 0;
+  if (!s.at_a) return spread_of(*s.ball, d);
+  return s.g_rot * kSqrt3_up * d.reach + s.g_off;
+}
+
 // The world box over the piece of the body-frame box (c, h) of a body whose points y all
 // have |y|_2 <= yn (link_filter.h). The growth g_rot yn + g_off takes two roundings,
 // each within 2^-52 relative in any mode: 2^-50 relative and 1e-300 cover them.
@@ -50,23 +58,32 @@ enclose::Box box_of(const Side_piece &s, const std::array<double, 3> &c, const s
 
 double norm_bound(const narrow::Body_data &d) { return kSqrt3_up * d.reach * (1 + 0x1p-50); }
 
-// The world boxes over the piece of an element's points (a triangle's three vertices;
-// a ball's centre grown by its radius), side A's grown by reach.
+// Boxes whose convex hull holds the element at every t of the piece, side A's grown by
+// reach: with the ball pose, the world boxes of its points (a triangle's three vertices;
+// a ball's centre grown by its radius); with the piece's two ends, the boxes of its
+// points at a and at b, each grown by the chords' growth g (a point at t is within g of
+// its chord, so the element at t, a convex combination of its points, is within g of
+// the hull of the end boxes: link_filter.h). Up to 6 boxes.
 int element_boxes(const narrow::Body_data &d, const bvh::Hierarchy &h, uint32_t node, const Side_piece &p,
-                  double reach, enclose::Box out[3]) {
+                  double reach, enclose::Box out[6]) {
   const uint32_t e = h.elems[h.nodes[node].first];
-  const double yn = norm_bound(d), er = d.pt_err;
-  if (!d.mesh) {
-    out[0] = enclose::grow(box_of(p, d.pts[e], {er, er, er}, yn), d.radius_up[e]);
-    if (reach > 0) out[0] = enclose::grow(out[0], reach);
-    return 1;
-  }
+  const double er = d.pt_err;
+  const bool ends = p.at_a && !p.identity;
+  const double g = ends ? (p.g_rot * norm_bound(d) + p.g_off) * (1 + 0x1p-50) + 1e-300 : 0;
+  auto boxes_of = [&](const std::array<double, 3> &x, double grow_by, enclose::Box *o) {
+    if (!ends) {
+      o[0] = enclose::grow(box_of(p, x, {er, er, er}, 0), grow_by);
+      return 1;
+    }
+    o[0] = enclose::grow(enclose::frame_box(*p.at_a, x, {er, er, er}), grow_by + g);
+    o[1] = enclose::grow(enclose::frame_box(*p.at_b, x, {er, er, er}), grow_by + g);
+    return 2;
+  };
+  if (!d.mesh) return boxes_of(d.pts[e], d.radius_up[e] + reach, out);
   const auto &t = d.mesh->triangles()[e];
-  for (int v = 0; v < 3; ++v) {
-    out[v] = box_of(p, d.pts[t[v]], {er, er, er}, yn);
-    if (reach > 0) out[v] = enclose::grow(out[v], reach);
-  }
-  return 3;
+  int n = 0;
+  for (int v = 0; v < 3; ++v) n += boxes_of(d.pts[t[v]], reach, out + n);
+  return n;
 }
 
 // n . x over the boxes: an interval holding every value. Each bound is a sum of three
@@ -104,7 +121,7 @@ void project(const double n[3], const enclose::Box *b, int count, double &lo, do
 bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t ka, const Side_piece &pa,
                   const narrow::Body_data &B, const bvh::Hierarchy &hb, uint32_t kb, const Side_piece &pb,
                   double reach) {
-  enclose::Box ba[3], bb[3];
+  enclose::Box ba[6], bb[6];
   const int na = element_boxes(A, ha, ka, pa, reach, ba), nb = element_boxes(B, hb, kb, pb, 0, bb);
   double axes[12][3];
   int n_axes = 0;
@@ -229,7 +246,7 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
     const double start = std::ldexp(static_cast<double>(it.i), -it.d);
     if (start >= until) return start;  // every earlier piece is separated
     const Side_piece pa = SA.piece(it.d, it.i), pb = SB.piece(it.d, it.i);
-    const double spread = std::max(spread_of(*pa.ball, A), spread_of(*pb.ball, B));
+    const double spread = std::max(spread_of(pa, A), spread_of(pb, B));
     util::work_step(1 + it.front.size() / 1024);
     tests += it.front.size();
     if (tests > lim.max_tests) return start;  // this piece's start

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <string>
+#include <tuple>
 
 #include "motion/chain_path.h"
 #include "scene/link_filter.h"
@@ -40,28 +41,28 @@ class Piece_poses {
   // Link k over the piece: the ball, and the second-order enclosure (link_filter.h) when
   // its chords' growth is at most half the ball's radii (at the coarse pieces the ball
   // is tighter; the choice is a heuristic, both enclosures hold).
-  Side_piece link(size_t k, int d, long i) {
-    Piece &p = at(d, i);
+  Side_piece link(long base, size_t k, int d, long i) {
+    Piece &p = at(base, d, i);
     const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
     Side_piece s;
-    s.ball = &link_pose(p, k, a, b);
-    path_.derivatives_link(a, b, k, p.derivs, p.have_derivs);
+    s.ball = &link_pose(p, base, k, a, b);
+    path_.derivatives_link(a, b, k, base, p.derivs, p.have_derivs);
     const motion::Path_derivs &D = p.derivs[k];
     const double gr = arith::round_up(std::ldexp(D.d2, -2 * d - 3)), go = arith::round_up(std::ldexp(D.o2, -2 * d - 3));
     if (std::isfinite(gr) && std::isfinite(go) && gr <= 0.5 * s.ball->Rr[0][0] && go <= 0.5 * s.ball->orad[0]) {
-      s.at_a = &link_at(k, d, i);
-      s.at_b = &link_at(k, d, i + 1);
+      s.at_a = &link_at(base, k, d, i);
+      s.at_b = &link_at(base, k, d, i + 1);
       s.g_rot = gr;
       s.g_off = go;
     }
     return s;
   }
-  const enclose::Pose_piece &link_at(size_t k, int d, long i) {
+  const enclose::Pose_piece &link_at(long base, size_t k, int d, long i) {
     const double t = std::ldexp(static_cast<double>(i), -d);
-    return link_pose(instant(d, i), k, t, t);
+    return link_pose(instant(base, d, i), base, k, t, t);
   }
   Side_piece obstacle(size_t k, int d, long i) {
-    Piece &p = at(d, i);
+    Piece &p = at(-1, d, i);
     if (!p.have_obstacle[k]) {
       const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
       p.obstacles[k] = still(k) || d == 0 ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], a, b);
@@ -73,7 +74,7 @@ class Piece_poses {
     return s;
   }
   const enclose::Pose_piece &obstacle_at(size_t k, int d, long i) {
-    Piece &p = instant(d, i);
+    Piece &p = instant(-1, d, i);
     if (!p.have_obstacle[k]) {
       const double t = std::ldexp(static_cast<double>(i), -d);
       p.obstacles[k] = still(k) ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], t, t);
@@ -106,30 +107,32 @@ class Piece_poses {
     }
     return p;
   }
-  const enclose::Pose_piece &link_pose(Piece &p, size_t k, double a, double b) {
+  const enclose::Pose_piece &link_pose(Piece &p, long base, size_t k, double a, double b) {
     if (!p.have_links[k]) {
-      path_.enclose_link(a, b, k, p.bounds, p.have_bounds);
+      path_.enclose_link(a, b, k, base, p.bounds, p.have_bounds);
       p.links[k] = pose_piece(p.bounds[k]);
       p.have_links[k] = 1;
     }
     return p.links[k];
   }
-  Piece &at(int d, long i) { return start(pieces_[{d, i}]); }
+  Piece &at(long base, int d, long i) { return start(pieces_[{base, d, i}]); }
   // The instant i / 2^d, kept under its lowest terms (the end of one piece is the start
   // of the next, and of pieces of other depths).
-  Piece &instant(int d, long i) {
+  Piece &instant(long base, int d, long i) {
     while (d > 0 && i % 2 == 0) {
       i /= 2;
       --d;
     }
     if (i == 0) d = 0;
-    return start(instants_[{d, i}]);
+    return start(instants_[{base, d, i}]);
   }
 
   const motion::Chain_path &path_;
   const std::vector<Moving_body> &obstacles_;
-  std::map<std::pair<int, long>, Piece> pieces_;
-  std::map<std::pair<int, long>, Piece> instants_;
+  // Keyed by (base, depth, index): links relative to link base (-1: the world, and the
+  // obstacles), on the piece or at the instant index / 2^depth.
+  std::map<std::tuple<long, int, long>, Piece> pieces_;
+  std::map<std::tuple<long, int, long>, Piece> instants_;
 };
 
 // The report of a witness found by the filter (decide mode): the pair alone, touching
@@ -175,19 +178,46 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     Piece_poses poses(path, obst);
     const double reach = opt.reach;
     const bool decide = !opt.solve.want_time && !opt.all_contacts;
-    auto side = [&](size_t k) {
+    // Body k of pair p's side: a link body relative to the pair's base (the links' lowest
+    // common ancestor for a self pair: the motion of the joints above it moves both
+    // alike and drops out; -1 against an obstacle), the base's own bodies standing still.
+    static const enclose::Pose_piece identity_pose = [] {
+      enclose::Pose_piece p;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          p.Rm[i][j] = i == j ? 1 : 0;
+          p.Rr[i][j] = 0;
+        }
+      return p;
+    }();
+    auto side = [&](size_t k, long base) {
       Filter_side s;
       if (k < nr) {
         const size_t link = r.bodies[k].link;
         s.data = r.bodies[k].body.get();
-        s.piece = [&poses, link](int d, long i) { return poses.link(link, d, i); };
-        s.instant = [&poses, link](int d, long i) -> const enclose::Pose_piece & { return poses.link_at(link, d, i); };
+        if (static_cast<long>(link) == base) {
+          s.piece = [](int, long) {
+            Side_piece x;
+            x.ball = &identity_pose;
+            x.identity = true;
+            return x;
+          };
+          s.instant = [](int, long) -> const enclose::Pose_piece & { return identity_pose; };
+        } else {
+          s.piece = [&poses, base, link](int d, long i) { return poses.link(base, link, d, i); };
+          s.instant = [&poses, base, link](int d, long i) -> const enclose::Pose_piece & {
+            return poses.link_at(base, link, d, i);
+          };
+        }
       } else {
         s.data = obst[k - nr].data.get();
         s.piece = [&poses, o = k - nr](int d, long i) { return poses.obstacle(o, d, i); };
         s.instant = [&poses, o = k - nr](int d, long i) -> const enclose::Pose_piece & { return poses.obstacle_at(o, d, i); };
       }
       return s;
+    };
+    auto base_of = [&](const Pair_plan &p) {
+      return p.j < nr ? path.common_ancestor(r.bodies[p.i].link, r.bodies[p.j].link) : -1L;
     };
     std::vector<Pair_plan> kept;
     Witness found;
@@ -198,7 +228,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     Filter_limits lim;
     for (Pair_plan p : plans) {
       Witness w;
-      p.lower = first_uncleared(side(p.i), side(p.j), reach, lim, decide && !found.found ? &w : nullptr);
+      const long base = base_of(p);
+      p.lower = first_uncleared(side(p.i, base), side(p.j, base), reach, lim, decide && !found.found ? &w : nullptr);
       if (w.found) {
         found = w;
         found_i = p.i;
@@ -212,7 +243,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
                      [](const Pair_plan &x, const Pair_plan &y) { return x.lower < y.lower; });
     // Decide mode: a witness just after a kept pair's bound, before any exact motion.
     for (size_t k = 0; k < kept.size() && decide && !found.found; ++k)
-      if (witness_after(side(kept[k].i), side(kept[k].j), kept[k].lower, found)) {
+      if (witness_after(side(kept[k].i, base_of(kept[k])), side(kept[k].j, base_of(kept[k])), kept[k].lower, found)) {
         found_i = kept[k].i;
         found_j = kept[k].j;
       }
