@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include "motion/chain_path.h"
+#include "poly/poly.h"
 #include "scene/link_filter.h"
 
 namespace pccd::scene {
@@ -155,6 +156,83 @@ Scene_report witness_report(size_t i, size_t j, const Witness &w, double free_un
   return rep;
 }
 
+// A time window [lo, hi] of [0, 1] holding the first contact (no checked pair touches
+// before lo: the filter's bounds; some pair touches at hi: a witness), solved as the
+// segment t = lo + (hi - lo) s, s in [0, 1]: the exact motions reparametrized (the same
+// motion, each polynomial composed with that affine map), the report's times mapped
+// back. The first contact, the pairs touching first and their features are those of
+// [0, 1]; the exact solve's enclosures are far tighter on the short window.
+struct Window {
+  bool on = false;
+  double lo = 0, hi = 1;  // dyadic doubles
+  Rational to_t(const Rational &s) const { return Rational(lo) + (Rational(hi) - Rational(lo)) * s; }
+  double to_s(double t) const {  // a lower bound of the window time of t >= lo
+    return std::max(0.0, arith::round_down((t - lo) / (hi - lo)));
+  }
+};
+
+void map_back(Scene_report &rep, const Window &w) {
+  rep.lo = w.to_t(rep.lo);
+  rep.hi = w.to_t(rep.hi);
+  rep.free_until = w.to_t(rep.free_until);
+  for (Pair_report &p : rep.pairs) {
+    p.lo = w.to_t(p.lo);
+    p.hi = w.to_t(p.hi);
+    for (Contact_report &c : p.contacts) {
+      c.lo = w.to_t(c.lo);
+      c.hi = w.to_t(c.hi);
+    }
+  }
+}
+
+// The exact solve of the pairs left (scene.h, solve_planned), the exact motions of their
+// links built on the first demand (over the window when it is on: obstacles stationary).
+Scene_report solve_exact(const Robot_model &r, const double *q0, const double *q1, const std::vector<Moving_body> &obst,
+                         std::vector<Pair_plan> plans, const Scene_options &opt, const Window &win = {}) {
+  const size_t nr = r.bodies.size();
+  std::vector<bool> needed(r.chain.size(), false);
+  for (Pair_plan &p : plans) {
+    needed[r.bodies[p.i].link] = true;
+    if (p.j < nr) needed[r.bodies[p.j].link] = true;
+    if (win.on) p.lower = win.to_s(p.lower);
+  }
+  std::vector<motion::Rigid_motion> motions;
+  std::vector<motion::Mat3_poly> rn;
+  std::vector<std::shared_ptr<const narrow::Motion_data>> link_data(r.chain.size());
+  std::vector<std::unique_ptr<Moving_body>> robot_mb(nr);
+  bool built = false;
+  auto body = [&](size_t k) -> const Moving_body & {
+    if (k >= nr) return obst[k - nr];
+    if (!robot_mb[k]) {
+      if (!built) {
+        motions = r.chain.segment_motions(q0, q1, win.on ? nullptr : &rn, &needed);
+        if (win.on) {
+          const Rational a(win.lo), b(win.hi);
+          for (size_t L = 0; L < motions.size(); ++L) {
+            if (!needed[L]) continue;
+            motion::Rigid_motion &m = motions[L];
+            for (auto &c : m.r) c = poly::reparametrize(c, a, b);
+            for (int i = 0; i < 3; ++i) {
+              m.o[i] = poly::reparametrize(m.o[i], a, b);
+              m.b[i] = poly::reparametrize(m.b[i], a, b);
+            }
+          }
+        }
+      }
+      built = true;
+      const size_t L = r.bodies[k].link;
+      if (!link_data[L]) link_data[L] = narrow::prepare_motion(motions[L], true, win.on ? nullptr : &rn[L]);
+      robot_mb[k] = std::make_unique<Moving_body>(narrow::prepare_body(r.bodies[k].body, link_data[L]));
+    }
+    return *robot_mb[k];
+  };
+  Scene_options o = opt;
+  if (win.on) o.solve.until = 1;  // the window ends at the witness: every contact up to it
+  Scene_report rep = solve_planned(body, plans, o, -1, true);
+  if (win.on) map_back(rep, win);
+  return rep;
+}
+
 }  // namespace
 
 Scene_report check_robot(const Robot_model &r, const double *q0, const double *q1,
@@ -222,22 +300,27 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     std::vector<Pair_plan> kept;
     Witness found;
     size_t found_i = 0, found_j = 0;
-    // After a witness the other pairs are only cleared up to its pair's bound, and
-    // briefly (kAfter_tests): their bounds serve free_until alone.
+    // After a witness at t_w: decide mode clears the other pairs only up to the witness
+    // pair's bound, and briefly (kAfter_tests: their bounds serve free_until alone);
+    // first-contact mode clears them up to t_w (the first contact is at most t_w) and
+    // keeps those that may touch by then.
     constexpr size_t kAfter_tests = 1024;
     Filter_limits lim;
+    double horizon = 1;  // first-contact mode: the witness's t_w
     for (Pair_plan p : plans) {
       Witness w;
       const long base = base_of(p);
-      p.lower = first_uncleared(side(p.i, base), side(p.j, base), reach, lim, decide && !found.found ? &w : nullptr);
+      p.lower = first_uncleared(side(p.i, base), side(p.j, base), reach, lim,
+                                !opt.all_contacts && !found.found ? &w : nullptr);
       if (w.found) {
         found = w;
         found_i = p.i;
         found_j = p.j;
-        lim.until = p.lower;
-        lim.max_tests = kAfter_tests;
+        horizon = std::ldexp(static_cast<double>(w.index), -w.depth);  // exact: dyadic
+        lim.until = decide ? p.lower : horizon;
+        if (decide) lim.max_tests = kAfter_tests;
       }
-      if (p.lower <= 1) kept.push_back(p);
+      if (p.lower <= horizon) kept.push_back(p);
     }
     std::stable_sort(kept.begin(), kept.end(),
                      [](const Pair_plan &x, const Pair_plan &y) { return x.lower < y.lower; });
@@ -247,33 +330,41 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         found_i = kept[k].i;
         found_j = kept[k].j;
       }
-    if (found.found) return witness_report(found_i, found_j, found, kept.empty() ? 1.0 : kept[0].lower);
+    if (found.found && decide) return witness_report(found_i, found_j, found, kept.empty() ? 1.0 : kept[0].lower);
+    if (found.found) {  // first-contact mode: only contacts up to t_w can be first
+      // A tighter window: the witness pair's own bound without witnesses (to the finest
+      // piece), and a witness just after it.
+      for (Pair_plan &p : kept)
+        if (p.i == found_i && p.j == found_j) {
+          Filter_limits upto;
+          upto.until = horizon;
+          const long base = base_of(p);
+          p.lower = std::max(p.lower, first_uncleared(side(p.i, base), side(p.j, base), reach, upto));
+          Witness w;
+          if (p.lower < horizon && witness_after(side(p.i, base), side(p.j, base), p.lower, w)) {
+            const double t = std::ldexp(static_cast<double>(w.index), -w.depth);
+            if (t < horizon) horizon = t;
+          }
+        }
+      std::vector<Pair_plan> left;
+      for (const Pair_plan &p : kept)
+        if (p.lower <= horizon) left.push_back(p);
+      std::stable_sort(left.begin(), left.end(),
+                       [](const Pair_plan &x, const Pair_plan &y) { return x.lower < y.lower; });
+      Window win;
+      win.lo = left.empty() ? 0 : std::min(left[0].lower, horizon);
+      win.hi = horizon;
+      bool still = true;
+      for (const Moving_body &o : obst) still = still && o.mo == narrow::identity_motion();
+      win.on = still && win.lo < win.hi && !(opt.solve.until < Rational(horizon));
+      Scene_options bounded = opt;
+      if (Rational(horizon) < bounded.solve.until) bounded.solve.until = Rational(horizon);
+      return solve_exact(r, q0, q1, obst, left, bounded, win);
+    }
     plans = std::move(kept);
   }
 
-  // The exact motions of the links of the pairs left, built on the first demand.
-  std::vector<bool> needed(r.chain.size(), false);
-  for (const Pair_plan &p : plans) {
-    needed[r.bodies[p.i].link] = true;
-    if (p.j < nr) needed[r.bodies[p.j].link] = true;
-  }
-  std::vector<motion::Rigid_motion> motions;
-  std::vector<motion::Mat3_poly> rn;
-  std::vector<std::shared_ptr<const narrow::Motion_data>> link_data(r.chain.size());
-  std::vector<std::unique_ptr<Moving_body>> robot_mb(nr);
-  bool built = false;
-  auto body = [&](size_t k) -> const Moving_body & {
-    if (k >= nr) return obst[k - nr];
-    if (!robot_mb[k]) {
-      if (!built) motions = r.chain.segment_motions(q0, q1, &rn, &needed);
-      built = true;
-      const size_t L = r.bodies[k].link;
-      if (!link_data[L]) link_data[L] = narrow::prepare_motion(motions[L], true, &rn[L]);
-      robot_mb[k] = std::make_unique<Moving_body>(narrow::prepare_body(r.bodies[k].body, link_data[L]));
-    }
-    return *robot_mb[k];
-  };
-  return solve_planned(body, plans, opt, -1, true);
+  return solve_exact(r, q0, q1, obst, plans, opt);
 }
 
 }  // namespace pccd::scene
