@@ -129,25 +129,8 @@ def test_filter_equals_brute_force_on_boxed_arms(name):
         obstacles = obstacles_near(robot, q0, q1, rng)
         for self_collision in (False, True):
             what = (name, k, self_collision)
-            opts = dict(self_collision=self_collision, time_tolerance="1e-9")
-            plain = robot.check(q0, q1, obstacles, filter=False, **opts)
-            # brute force for the obstacle pairs (every feature pair of a link pair too
-            # would take minutes): with self-collision the unfiltered bvh is the reference
-            brute = (plain if self_collision else
-                     robot.check(q0, q1, obstacles, filter=False, broad_phase="brute", **opts))
-            first = robot.check(q0, q1, obstacles, **opts)
-            same_first(first, brute, what)
-            same_first(plain, brute, what)
-            decide = robot.check(q0, q1, obstacles, first_contact=False, **opts)
-            assert decide.collides == brute.collides, what
-            if brute.collides:
-                assert decide.free_until <= brute.first_contact.lo, what
-                assert first.free_until == first.first_contact.lo, what
-                (witness,) = decide.scene.pairs
-                assert pair_touches(robot, q0, q1, obstacles, witness.names), what
-            else:
-                assert decide.free_until == first.free_until == 1, what
-            seen["hit" if brute.collides else "free"] += 1
+            hit = check_all_ways(robot, q0, q1, obstacles, self_collision, what)
+            seen["hit" if hit else "free"] += 1
     assert seen["hit"] and seen["free"], seen  # both kinds were checked
 
 

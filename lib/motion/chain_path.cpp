@@ -58,6 +58,19 @@ void add_rotated(const double R[3][3], double e, const double vm[3], double vr, 
 // The value of a linear interpolation x0 + t (x1 - x0) over t in T.
 Interval line(double x0, double x1, const Interval &T) { return Interval(x0) + T * (Interval(x1) - Interval(x0)); }
 
+// Makes link k and its ancestors below base that are not yet marked in have, parents
+// first (out and have sized to the chain on first use).
+template <class T, class Make>
+void make_lazily(const Chain &c, size_t k, long base, std::vector<T> &out, std::vector<char> &have, Make make) {
+  out.resize(c.size());
+  have.resize(c.size(), 0);
+  if (have[k]) return;
+  const long p = c.link(k).parent;
+  if (p >= 0 && p != base) make_lazily(c, static_cast<size_t>(p), base, out, have, make);
+  make(k);
+  have[k] = 1;
+}
+
 }  // namespace
 
 Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(c) {
@@ -105,13 +118,7 @@ void Chain_path::enclose(double a, double b, std::vector<Pose_bounds> &out) cons
 
 void Chain_path::enclose_link(double a, double b, size_t k, long base, std::vector<Pose_bounds> &out,
                               std::vector<char> &have) const {
-  out.resize(ends_.size());
-  have.resize(ends_.size(), 0);
-  if (have[k]) return;
-  const long p = c_.link(k).parent;
-  if (p >= 0 && p != base) enclose_link(a, b, static_cast<size_t>(p), base, out, have);  // parents first
-  ball_of_link(k, Interval(a, b), out, base);
-  have[k] = 1;
+  make_lazily(c_, k, base, out, have, [&](size_t j) { ball_of_link(j, Interval(a, b), out, base); });
 }
 
 long Chain_path::common_ancestor(size_t i, size_t j) const {
@@ -206,13 +213,7 @@ void Chain_path::derivatives(double a, double b, std::vector<Path_derivs> &out) 
 
 void Chain_path::derivatives_link(double a, double b, size_t k, long base, std::vector<Path_derivs> &out,
                                   std::vector<char> &have) const {
-  out.resize(ends_.size());
-  have.resize(ends_.size(), 0);
-  if (have[k]) return;
-  const long p = c_.link(k).parent;
-  if (p >= 0 && p != base) derivatives_link(a, b, static_cast<size_t>(p), base, out, have);
-  derivs_of_link(k, Interval(a, b), out, base);
-  have[k] = 1;
+  make_lazily(c_, k, base, out, have, [&](size_t j) { derivs_of_link(j, Interval(a, b), out, base); });
 }
 
 void Chain_path::derivs_of_link(size_t k, const Interval &T, std::vector<Path_derivs> &out, long base) const {
