@@ -9,8 +9,7 @@ import threading
 import time
 from contextlib import contextmanager
 
-from .._errors import LimitError
-from .._limits import Limits
+from .. import LimitError, Limits
 
 _EVERY = 4096
 _state = threading.local()
