@@ -11,7 +11,12 @@ real arms (Panda and UR5 of example-robot-data), obstacles placed where the link
     alone as a scene (pccd_scene_solve on the two bodies), free_until never above
     brute force's first contact (and equal to the first contact's lo);
   - against the exact check without the filter (bvh): the same first contact and
-    decide answer on the arms' full meshes (robot versus obstacles).
+    decide answer on the arms' full meshes, robot versus obstacles and with
+    self-collision (SRDF pairs allowed; some segments without obstacles);
+  - built near misses and touches: a small box placed, in exact rationals, with a face
+    at a gap of 0, +-1e-4 or 1e-9 m ahead of a link's extreme vertex at t = 1 (so the
+    link touches it exactly, or stops a hair from it, or dips into it), on the boxed
+    arms against brute force and the unfiltered check, both modes.
 (All contacts through the filter against brute force: tests/test_robot.py.)
 Brute force takes every feature pair, so its arms are the links' bounding boxes in their
 own frames (Robot.shapes replaced: 12 triangles a link); the full meshes are compared
@@ -75,6 +80,28 @@ def same_first(got, ref, what):
         assert a.lo <= b.hi and b.lo <= a.hi, (what, a, b)
 
 
+def check_all_ways(robot, q0, q1, obstacles, self_collision, what, brute_force=True):
+    """Filtered first contact and decide mode against the unfiltered exact check (and
+    brute force without self-collision): same answers; decide's witness pair touches
+    alone and its free_until is no later than the first contact."""
+    opts = dict(self_collision=self_collision, time_tolerance="1e-9")
+    plain = robot.check(q0, q1, obstacles, filter=False, **opts)
+    if brute_force and not self_collision:
+        same_first(robot.check(q0, q1, obstacles, filter=False, broad_phase="brute", **opts), plain, what)
+    first = robot.check(q0, q1, obstacles, **opts)
+    same_first(first, plain, what)
+    decide = robot.check(q0, q1, obstacles, first_contact=False, **opts)
+    assert decide.collides == plain.collides, what
+    if plain.collides:
+        assert decide.free_until <= plain.first_contact.lo, what
+        assert first.free_until == first.first_contact.lo, what
+        (witness,) = decide.scene.pairs
+        assert pair_touches(robot, q0, q1, obstacles, witness.names), what
+    else:
+        assert decide.free_until == first.free_until == 1, what
+    return plain.collides
+
+
 def pair_touches(robot, q0, q1, obstacles, names):
     """The two bodies of a reported pair, checked alone as a polyccd scene (the links on
     robot.motions, pccd_scene_solve): do they touch?"""
@@ -102,25 +129,8 @@ def test_filter_equals_brute_force_on_boxed_arms(name):
         obstacles = obstacles_near(robot, q0, q1, rng)
         for self_collision in (False, True):
             what = (name, k, self_collision)
-            opts = dict(self_collision=self_collision, time_tolerance="1e-9")
-            plain = robot.check(q0, q1, obstacles, filter=False, **opts)
-            # brute force for the obstacle pairs (every feature pair of a link pair too
-            # would take minutes): with self-collision the unfiltered bvh is the reference
-            brute = (plain if self_collision else
-                     robot.check(q0, q1, obstacles, filter=False, broad_phase="brute", **opts))
-            first = robot.check(q0, q1, obstacles, **opts)
-            same_first(first, brute, what)
-            same_first(plain, brute, what)
-            decide = robot.check(q0, q1, obstacles, first_contact=False, **opts)
-            assert decide.collides == brute.collides, what
-            if brute.collides:
-                assert decide.free_until <= brute.first_contact.lo, what
-                assert first.free_until == first.first_contact.lo, what
-                (witness,) = decide.scene.pairs
-                assert pair_touches(robot, q0, q1, obstacles, witness.names), what
-            else:
-                assert decide.free_until == first.free_until == 1, what
-            seen["hit" if brute.collides else "free"] += 1
+            hit = check_all_ways(robot, q0, q1, obstacles, self_collision, what)
+            seen["hit" if hit else "free"] += 1
     assert seen["hit"] and seen["free"], seen  # both kinds were checked
 
 
@@ -168,3 +178,54 @@ def test_overlapping_start_answers_with_one_touching_pair(name, q):
     every = robot.check(q0, q0, [], allowed=allowed, all_contacts=True, joint_limits="ignore")
     assert pair.names in {p.names for p in every.scene.pairs}
     assert sum(len(p.contacts) for p in every.scene.pairs) > 1
+
+
+@needs_robots
+@pytest.mark.parametrize("name", sorted(URDFS))
+def test_filter_equals_unfiltered_with_self_collision(name):
+    """Full meshes, self-collision on (adjacent and SRDF pairs allowed): link pairs are
+    filtered relative to their common ancestor, so this compares that path too."""
+    robot = arm(name)
+    rng = random.Random(SEED + 11 * len(name))
+    for k in range(max(3, SEGMENTS)):
+        q0, q1 = random_segment(robot, rng)
+        q1 = q0 + (q1 - q0) / 5
+        obstacles = obstacles_near(robot, q0, q1, rng, n=2) if k % 2 else []
+        check_all_ways(robot, q0, q1, obstacles, True, (name, k))
+
+
+def gap_box(robot, q0, q1, rng, gap):
+    """A 1 cm box ahead of a random link at t = 1, on the axis along which the link last
+    moved most, its near face exactly gap (a Fraction) beyond the link's extreme vertex
+    then, in exact rationals: gap 0 touches at t = 1, a small gap passes a hair from it
+    (unless another part of the link crossed the box on the way), a negative one dips in."""
+    motions = robot.motions(q0, q1)
+    _, _, k, shape = rng.choice(robot.shapes)
+    verts = [[float(c) for c in v] for v in shape.vertices]
+    v = rng.choice(verts)
+    d = [p - q for p, q in zip(motions[k].position(v, 1), motions[k].position(v, F(15, 16)))]
+    a = max(range(3), key=lambda b: abs(d[b]))
+    sign = 1 if d[a] > 0 else -1
+    x = max((motions[k].position(v, 1) for v in verts), key=lambda p: sign * p[a])
+    lo = [c - F(1, 200) for c in x]
+    hi = [c + F(1, 200) for c in x]
+    lo[a], hi[a] = sorted((x[a] + sign * gap, x[a] + sign * (gap + F(1, 100))))
+    return P.Body(P.Mesh([[(lo[b], hi[b])[(i >> b) & 1] for b in range(3)] for i in range(8)], BOX_T),
+                  name="gap")
+
+
+@needs_robots
+@pytest.mark.parametrize("name", sorted(URDFS))
+def test_built_near_misses_and_touches(name):
+    """Robot versus the gap boxes (self-collision is covered above: on the boxed arms the
+    unfiltered self-collision check of such a segment can take minutes)."""
+    robot = boxed(arm(name))
+    rng = random.Random(SEED + 13 * len(name))
+    seen = {True: 0, False: 0}
+    for k in range(max(3, SEGMENTS // 2)):
+        q0, q1 = random_segment(robot, rng)
+        q1 = q0 + (q1 - q0) / 3
+        for gap in (F(0), F(1, 10 ** 4), F(-1, 10 ** 4), F(1, 10 ** 9)):
+            box = gap_box(robot, q0, q1, rng, gap)
+            seen[check_all_ways(robot, q0, q1, [box], False, (name, k, str(gap)))] += 1
+    assert seen[True] and seen[False], seen  # both kinds were checked

@@ -270,7 +270,12 @@ def test_panda_meshes_equal_brute_force_and_sampling(k):
     every = robot.check(q0, q1, bodies, all_contacts=True, **options)
     brute = robot.check(q0, q1, bodies, all_contacts=True, broad_phase="brute", **options)
     assert summary(every.scene) == summary(brute.scene), (SEED, k)
-    assert (got.collides, got.first_contact) == (brute.collides, brute.first_contact), (SEED, k)
+    # The same first contact: equal when exact, else overlapping enclosures (each holds
+    # it; a robot check may solve on a shorter window and enclose it more tightly).
+    assert got.collides == brute.collides, (SEED, k)
+    if got.collides:
+        a, b = got.first_contact, brute.first_contact
+        assert a.exact == b.exact and a.lo <= b.hi and b.lo <= a.hi, (SEED, k, a, b)
     if got.collides:
         assert got.contacts and all(c.b[0].startswith("plate") for c in got.contacts)
     # Sampling: all plates, then each plate alone (the plates the arm misses or grazes).

@@ -6,6 +6,7 @@
 namespace pccd::motion {
 
 using arith::Interval;
+using arith::round_down;
 using arith::round_up;
 
 namespace {
@@ -57,6 +58,19 @@ void add_rotated(const double R[3][3], double e, const double vm[3], double vr, 
 // The value of a linear interpolation x0 + t (x1 - x0) over t in T.
 Interval line(double x0, double x1, const Interval &T) { return Interval(x0) + T * (Interval(x1) - Interval(x0)); }
 
+// Makes link k and its ancestors below base that are not yet marked in have, parents
+// first (out and have sized to the chain on first use).
+template <class T, class Make>
+void make_lazily(const Chain &c, size_t k, long base, std::vector<T> &out, std::vector<char> &have, Make make) {
+  out.resize(c.size());
+  have.resize(c.size(), 0);
+  if (have[k]) return;
+  const long p = c.link(k).parent;
+  if (p >= 0 && p != base) make_lazily(c, static_cast<size_t>(p), base, out, have, make);
+  make(k);
+  have[k] = 1;
+}
+
 }  // namespace
 
 Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(c) {
@@ -98,74 +112,153 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
 
 void Chain_path::enclose(double a, double b, std::vector<Pose_bounds> &out) const {
   const Interval T(a, b);
-  const size_t n = ends_.size();
-  out.resize(n);
-  for (size_t k = 0; k < n; ++k) {
-    const Chain_link &L = c_.link(k);
-    const Joint_doubles &d = ends_[k];
-    const Pose_bounds &O = origin_[k];
-    Pose_bounds &P = out[k];
-    double Rpo[3][3], epo;  // R_parent R_origin
-    if (L.parent < 0) {
-      for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) Rpo[i][j] = O.Rm[i][j];
-        P.om[i] = O.om[i];
+  out.resize(ends_.size());
+  for (size_t k = 0; k < ends_.size(); ++k) ball_of_link(k, T, out, -1);
+}
+
+void Chain_path::enclose_link(double a, double b, size_t k, long base, std::vector<Pose_bounds> &out,
+                              std::vector<char> &have) const {
+  make_lazily(c_, k, base, out, have, [&](size_t j) { ball_of_link(j, Interval(a, b), out, base); });
+}
+
+long Chain_path::common_ancestor(size_t i, size_t j) const {
+  auto depth = [&](long k) {
+    int n = 0;
+    for (; k >= 0; k = c_.link(static_cast<size_t>(k)).parent) ++n;
+    return n;
+  };
+  long a = static_cast<long>(i), b = static_cast<long>(j);
+  int da = depth(a), db = depth(b);
+  for (; da > db; --da) a = c_.link(static_cast<size_t>(a)).parent;
+  for (; db > da; --db) b = c_.link(static_cast<size_t>(b)).parent;
+  while (a != b) {
+    a = c_.link(static_cast<size_t>(a)).parent;
+    b = c_.link(static_cast<size_t>(b)).parent;
+  }
+  return a;  // -1 when the two hang from different roots
+}
+
+void Chain_path::ball_of_link(size_t k, const Interval &T, std::vector<Pose_bounds> &out, long base) const {
+  const Chain_link &L = c_.link(k);
+  const Joint_doubles &d = ends_[k];
+  const Pose_bounds &O = origin_[k];
+  Pose_bounds &P = out[k];
+  double Rpo[3][3], epo;  // R_parent R_origin
+  if (L.parent < 0 || L.parent == base) {
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) Rpo[i][j] = O.Rm[i][j];
+      P.om[i] = O.om[i];
+    }
+    epo = O.eps;
+    P.rho = 0;
+  } else {
+    const Pose_bounds &Q = out[L.parent];
+    compose(Q.Rm, Q.eps, O.Rm, O.eps, Rpo, epo);
+    for (int i = 0; i < 3; ++i) P.om[i] = Q.om[i];
+    P.rho = Q.rho;
+    add_rotated(Q.Rm, Q.eps, O.om, 0.0, P.om, P.rho);
+  }
+  const double *ax = axis_[k].data();
+  if (L.joint == Joint_type::prismatic) {
+    const Interval e = line(d.e0, d.e1, T);
+    double vm[3], s = 0;
+    for (int i = 0; i < 3; ++i) {
+      const Interval v = e * Interval(ax[i]);
+      vm[i] = 0.5 * v.lo + 0.5 * v.hi;
+      const double r = std::max(round_up(v.hi - vm[i]), round_up(vm[i] - v.lo));
+      s += r * r;
+    }
+    add_rotated(Rpo, epo, vm, up(std::sqrt(up(s))), P.om, P.rho);
+  }
+  if (L.joint != Joint_type::revolute && L.joint != Joint_type::continuous) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) P.Rm[i][j] = Rpo[i][j];
+    P.eps = epo;
+    return;
+  }
+  Interval J[3][3];
+  const Interval c = line(d.c0, d.c1, T), s = line(d.s0, d.s1, T);
+  const Interval nn = sq(c) + sq(s) * axis2_[k];
+  double Jm[3][3], ej;
+  if (nn.lo > 0) {
+    const Interval two(2.0);
+    Interval alpha = two * c * s / nn, beta = two * sq(s) / nn;
+    if (axis2_[k].lo == 1 && axis2_[k].hi == 1) {
+      alpha = clip(alpha, -1, 1);
+      beta = clip(beta, 0, 2);
+    }
+    // I + alpha [a]x + beta (a a^T - |a|^2 I)
+    const Interval A[3] = {ax[0], ax[1], ax[2]};
+    const Interval cross[3][3] = {{0.0, -A[2], A[1]}, {A[2], 0.0, -A[0]}, {-A[1], A[0], 0.0}};
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        Interval v = beta * (A[i] * A[j] - (i == j ? axis2_[k] : Interval(0.0))) + alpha * cross[i][j];
+        if (i == j) v = Interval(1.0) + v;
+        J[i][j] = clip(v, -1, 1);
       }
-      epo = O.eps;
-      P.rho = 0;
-    } else {
-      const Pose_bounds &Q = out[L.parent];
-      compose(Q.Rm, Q.eps, O.Rm, O.eps, Rpo, epo);
-      for (int i = 0; i < 3; ++i) P.om[i] = Q.om[i];
-      P.rho = Q.rho;
-      add_rotated(Q.Rm, Q.eps, O.om, 0.0, P.om, P.rho);
-    }
-    const double *ax = axis_[k].data();
-    if (L.joint == Joint_type::prismatic) {
-      const Interval e = line(d.e0, d.e1, T);
-      double vm[3], s = 0;
-      for (int i = 0; i < 3; ++i) {
-        const Interval v = e * Interval(ax[i]);
-        vm[i] = 0.5 * v.lo + 0.5 * v.hi;
-        const double r = std::max(round_up(v.hi - vm[i]), round_up(vm[i] - v.lo));
-        s += r * r;
-      }
-      add_rotated(Rpo, epo, vm, up(std::sqrt(up(s))), P.om, P.rho);
-    }
-    if (L.joint != Joint_type::revolute && L.joint != Joint_type::continuous) {
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) P.Rm[i][j] = Rpo[i][j];
-      P.eps = epo;
-      continue;
-    }
-    Interval J[3][3];
+    ball_of(J, Jm, ej);
+  } else {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) Jm[i][j] = 0;
+    ej = 1;  // a rotation has norm 1
+  }
+  compose(Rpo, epo, Jm, ej, P.Rm, P.eps);
+}
+
+void Chain_path::derivatives(double a, double b, std::vector<Path_derivs> &out) const {
+  const Interval T(a, b);
+  out.resize(ends_.size());
+  for (size_t k = 0; k < ends_.size(); ++k) derivs_of_link(k, T, out, -1);
+}
+
+void Chain_path::derivatives_link(double a, double b, size_t k, long base, std::vector<Path_derivs> &out,
+                                  std::vector<char> &have) const {
+  make_lazily(c_, k, base, out, have, [&](size_t j) { derivs_of_link(j, Interval(a, b), out, base); });
+}
+
+void Chain_path::derivs_of_link(size_t k, const Interval &T, std::vector<Path_derivs> &out, long base) const {
+  auto mag = [](const Interval &x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); };
+  const Chain_link &L = c_.link(k);
+  const Joint_doubles &d = ends_[k];
+  Path_derivs P;
+  Interval d1p(0.0), d2p(0.0), o2p(0.0);
+  if (L.parent >= 0 && L.parent != base) {
+    const Path_derivs &Q = out[L.parent];
+    d1p = Interval(Q.d1);
+    d2p = Interval(Q.d2);
+    o2p = Interval(Q.o2);
+  }
+  // |a| enclosed: sqrt is within one ulp in any rounding mode, so two steps out suffice.
+  const double an_lo = std::sqrt(axis2_[k].lo), an_hi = std::sqrt(axis2_[k].hi);
+  const Interval A(round_down(round_down(an_lo)), round_up(round_up(an_hi)));
+  const double *po = origin_[k].om;
+  double vmax = norm(po), v1 = 0;
+  Interval th1(0.0), th2(0.0);
+  if (L.joint == Joint_type::prismatic) {
+    vmax = up(vmax + up(A.hi * std::max(std::fabs(d.e0), std::fabs(d.e1))));
+    v1 = mag(A * (Interval(d.e1) - Interval(d.e0)));  // |v'| = |A (e1 - e0)|
+  } else if (L.joint == Joint_type::revolute || L.joint == Joint_type::continuous) {
+    const Interval dc = Interval(d.c1) - Interval(d.c0), ds = Interval(d.s1) - Interval(d.s0);
+    const Interval K = Interval(d.c0) * ds - Interval(d.s0) * dc;
     const Interval c = line(d.c0, d.c1, T), s = line(d.s0, d.s1, T);
     const Interval nn = sq(c) + sq(s) * axis2_[k];
-    double Jm[3][3], ej;
-    if (nn.lo > 0) {
-      const Interval two(2.0);
-      Interval alpha = two * c * s / nn, beta = two * sq(s) / nn;
-      if (axis2_[k].lo == 1 && axis2_[k].hi == 1) {
-        alpha = clip(alpha, -1, 1);
-        beta = clip(beta, 0, 2);
-      }
-      // I + alpha [a]x + beta (a a^T - |a|^2 I)
-      const Interval A[3] = {ax[0], ax[1], ax[2]};
-      const Interval cross[3][3] = {{0.0, -A[2], A[1]}, {A[2], 0.0, -A[0]}, {-A[1], A[0], 0.0}};
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          Interval v = beta * (A[i] * A[j] - (i == j ? axis2_[k] : Interval(0.0))) + alpha * cross[i][j];
-          if (i == j) v = Interval(1.0) + v;
-          J[i][j] = clip(v, -1, 1);
-        }
-      ball_of(J, Jm, ej);
-    } else {
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) Jm[i][j] = 0;
-      ej = 1;  // a rotation has norm 1
+    if (!(nn.lo > 0)) {
+      out[k] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+      return;
     }
-    compose(Rpo, epo, Jm, ej, P.Rm, P.eps);
+    const Interval nlo(nn.lo), np = Interval(2.0) * (c * dc + axis2_[k] * s * ds);
+    const Interval akt = Interval(2.0) * A * Interval(mag(K));  // >= |2 A K|
+    th1 = Interval(mag(akt / nlo));
+    th2 = Interval(mag(akt * Interval(mag(np)) / (nlo * nlo)));
   }
+  const Interval d1 = d1p + th1;
+  const Interval d2 = d2p + Interval(2.0) * d1p * th1 + th1 * th1 + th2;
+  const Interval o2 = o2p + d2p * Interval(vmax) + Interval(2.0) * d1p * Interval(v1);
+  P.d1 = d1.hi;
+  P.d2 = d2.hi;
+  P.o2 = o2.hi;
+  if (!std::isfinite(P.d1) || !std::isfinite(P.d2) || !std::isfinite(P.o2)) P = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
+  out[k] = P;
 }
 
 }  // namespace pccd::motion

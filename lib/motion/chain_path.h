@@ -33,6 +33,25 @@
 // kSlack = 2^-40 (> 30 u, covering also the norms' own rounding) times them, plus
 // 1e-300 for underflow. A divisor n that is not certainly positive (a piece so wide
 // that c and s may both vanish) gives the joint the ball {0, 1} (||R - 0|| = 1).
+//
+// Second-order enclosures (derivatives): for every link k, bounds over t in [a, b] of
+// ||R_k'(t)||_2 <= d1, ||R_k''(t)||_2 <= d2 and |o_k''(t)|_2 <= o2 (derivatives in t).
+// Then for f = R_k or o_k and every t in [a, b], |f(t) - ((1 - s) f(a) + s f(b))| <=
+// (t - a)(b - t) / 2 max |f''| <= (b - a)^2 / 8 max |f''| (s = (t - a) / (b - a); the
+// interpolation error of a C^2 function, f - L = -int G f'' with the Green's function
+// G >= 0 of integral (t - a)(b - t) / 2, for any norm): a link's points over [a, b]
+// lie within that of the chords between their poses at a and at b, which is far
+// tighter than the ball of enclose once the piece is short (scene/link_filter.h).
+// Where they come from: a revolute joint turns by theta(t) = 2 atan2(A s(t), c(t)) about
+// its unit axis (A = |a|), so theta' = 2 A K / n with K = c0 s1 - s0 c1 (constant: c, s
+// are linear) and n = c^2 + A^2 s^2, and theta'' = -2 A K n' / n^2, n' = 2 (c (c1 - c0)
+// + A^2 s (s1 - s0)); its factor J(t) = exp(theta [u]x) has ||J'|| = |theta'| and
+// ||J''|| <= theta'^2 + |theta''| (||[u]x|| = ||[u]x^2|| = 1). R_k = R_p O J (the parent's
+// rotation, the constant origin rotation, norm 1 each) gives d1_k = d1_p + |theta'| and
+// d2_k = d2_p + 2 d1_p |theta'| + theta'^2 + |theta''|; o_k = o_p + R_p v(t), v = p_origin
+// (+ O e(t) a for a prismatic joint: v' = O a (e1 - e0), v'' = 0) gives o2_k = o2_p +
+// d2_p max|v| + 2 d1_p |v'|. All in outward-rounded intervals (upper ends taken); a piece
+// on which n may vanish gives infinite bounds (then only the ball serves).
 #pragma once
 #include <array>
 #include <vector>
@@ -49,15 +68,36 @@ struct Pose_bounds {
   double rho = 0;  // |o(t) - om|_2 <= rho
 };
 
+struct Path_derivs {
+  double d1 = 0, d2 = 0, o2 = 0;  // bounds of ||R'||, ||R''||, |o''| over the piece
+};
+
 class Chain_path {
  public:
   // Input_error as Chain::segment_motions for a segment it rejects ("q1[k]: ...").
   Chain_path(const Chain &c, const double *q0, const double *q1);
   // The bounds of every link over [a, b], 0 <= a <= b <= 1 (doubles), into out (resized).
   void enclose(double a, double b, std::vector<Pose_bounds> &out) const;
+  // The derivative bounds of every link over [a, b] (above), into out (resized).
+  void derivatives(double a, double b, std::vector<Path_derivs> &out) const;
+  // The same for link k and its ancestors below base alone, those not yet marked in have
+  // (one flag per link; out and have are resized on first use, then kept by the caller
+  // per piece), relative to link base: base an ancestor of k, or -1 (the world frame).
+  // Relative to base, the poses are those of the chain below base with base's pose
+  // taken as the identity: the motion of the ancestors that move both links of a
+  // self-collision pair alike drops out (scene/robot.h).
+  void enclose_link(double a, double b, size_t k, long base, std::vector<Pose_bounds> &out,
+                    std::vector<char> &have) const;
+  void derivatives_link(double a, double b, size_t k, long base, std::vector<Path_derivs> &out,
+                        std::vector<char> &have) const;
+  // The lowest link that is i or an ancestor of i and j or an ancestor of j; -1: none.
+  long common_ancestor(size_t i, size_t j) const;
   size_t size() const { return ends_.size(); }
 
  private:
+  // Link k over T, its parent's entry of out already made.
+  void ball_of_link(size_t k, const arith::Interval &T, std::vector<Pose_bounds> &out, long base) const;
+  void derivs_of_link(size_t k, const arith::Interval &T, std::vector<Path_derivs> &out, long base) const;
   const Chain &c_;
   std::vector<Joint_doubles> ends_;
   std::vector<Pose_bounds> origin_;  // each link's origin pose (R of origin_q, p: rho = 0)

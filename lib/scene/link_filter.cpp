@@ -6,16 +6,20 @@
 #include <vector>
 
 #include "bvh/hierarchy.h"
+#include "pred/static_contact.h"
 #include "util/work_budget.h"
 
 namespace pccd::scene {
 
 namespace {
 
-using Front = std::vector<std::pair<uint32_t, uint32_t>>;
+using Front = Node_pairs;
+
+constexpr double kSqrt3_up = 1.7320508075688774;  // > sqrt(3)
 
 // What the piece's motion adds to a box of the body (enclose::Pose_piece::spread's bound,
-// recomputed here for poses made without it): |R(t) - Rm| |x| + orad over the body.
+// recomputed here for poses made without it): |R(t) - Rm| |x| + orad over the body. A
+// heuristic here (when to split a node rather than the piece), never a decision.
 double spread_of(const enclose::Pose_piece &p, const narrow::Body_data &d) {
   if (!p.finite) return HUGE_VAL;
   double rr = 0, orad = 0;
@@ -26,22 +30,60 @@ double spread_of(const enclose::Pose_piece &p, const narrow::Body_data &d) {
   return 3 * rr * d.reach + orad;
 }
 
-// The world boxes over the piece of an element's points (a triangle's three vertices;
-// a ball's centre grown by its radius), side A's grown by reach.
-int element_boxes(const narrow::Body_data &d, const bvh::Hierarchy &h, uint32_t node,
-                  const enclose::Pose_piece &p, double reach, enclose::Box out[3]) {
+// With the piece's ends: what the motion adds across the chords (the chords themselves
+// are thin across the motion, so nodes are split down to that).
+double spread_of(const Side_piece &s, const narrow::Body_data &d) {
+  if (s.identity) return 0;
+  if (!s.at_a) return spread_of(*s.ball, d);
+  return s.g_rot * kSqrt3_up * d.reach + s.g_off;
+}
+
+// The world box over the piece of the body-frame box (c, h) of a body whose points y all
+// have |y|_2 <= yn (link_filter.h). The growth g_rot yn + g_off takes two roundings,
+// each within 2^-52 relative in any mode: 2^-50 relative and 1e-300 cover them.
+enclose::Box box_of(const Side_piece &s, const std::array<double, 3> &c, const std::array<double, 3> &h,
+                    double yn) {
+  if (s.identity) {
+    enclose::Box b;
+    for (int i = 0; i < 3; ++i) {
+      b.lo[i] = arith::round_down(c[i] - h[i]);
+      b.hi[i] = arith::round_up(c[i] + h[i]);
+    }
+    return b;
+  }
+  if (!s.at_a) return enclose::frame_box(*s.ball, c, h);
+  const double g = (s.g_rot * yn + s.g_off) * (1 + 0x1p-50) + 1e-300;
+  return enclose::grow(enclose::hull(enclose::frame_box(*s.at_a, c, h), enclose::frame_box(*s.at_b, c, h)), g);
+}
+
+double norm_bound(const narrow::Body_data &d) { return kSqrt3_up * d.reach * (1 + 0x1p-50); }
+
+// Boxes whose convex hull holds the element at every t of the piece, side A's grown by
+// reach: with the ball pose, the world boxes of its points (a triangle's three vertices;
+// a ball's centre grown by its radius); with the piece's two ends, the boxes of its
+// points at a and at b, each grown by the chords' growth g (a point at t is within g of
+// its chord, so the element at t, a convex combination of its points, is within g of
+// the hull of the end boxes: link_filter.h). Up to 6 boxes.
+int element_boxes(const narrow::Body_data &d, const bvh::Hierarchy &h, uint32_t node, const Side_piece &p,
+                  double reach, enclose::Box out[6]) {
   const uint32_t e = h.elems[h.nodes[node].first];
-  if (!d.mesh) {
-    out[0] = enclose::grow(enclose::point_box(p, d.pts[e], d.pt_err), d.radius_up[e]);
-    if (reach > 0) out[0] = enclose::grow(out[0], reach);
-    return 1;
-  }
+  const double er = d.pt_err;
+  const bool ends = p.at_a && !p.identity;
+  const double g = ends ? (p.g_rot * norm_bound(d) + p.g_off) * (1 + 0x1p-50) + 1e-300 : 0;
+  auto boxes_of = [&](const std::array<double, 3> &x, double grow_by, enclose::Box *o) {
+    if (!ends) {
+      o[0] = enclose::grow(box_of(p, x, {er, er, er}, 0), grow_by);
+      return 1;
+    }
+    o[0] = enclose::grow(enclose::frame_box(*p.at_a, x, {er, er, er}), grow_by + g);
+    o[1] = enclose::grow(enclose::frame_box(*p.at_b, x, {er, er, er}), grow_by + g);
+    return 2;
+  };
+  if (!d.mesh) return boxes_of(d.pts[e], d.radius_up[e] + reach, out);
   const auto &t = d.mesh->triangles()[e];
-  for (int v = 0; v < 3; ++v) {
-    out[v] = enclose::point_box(p, d.pts[t[v]], d.pt_err);
-    if (reach > 0) out[v] = enclose::grow(out[v], reach);
-  }
-  return 3;
+  int n = 0;
+  for (int v = 0; v < 3; ++v) n += boxes_of(d.pts[t[v]], reach, out + n);
+  return n;
 }
 
 // n . x over the boxes: an interval holding every value. Each bound is a sum of three
@@ -76,10 +118,10 @@ void project(const double n[3], const enclose::Box *b, int count, double &lo, do
 // double vectors serve: the projections are certified): the difference of the two
 // sets' box centres, each triangle's normal and, for two triangles, the cross products
 // of their edges, directions taken at the piece's pose midpoints.
-bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t ka, const enclose::Pose_piece &pa,
-                  const narrow::Body_data &B, const bvh::Hierarchy &hb, uint32_t kb, const enclose::Pose_piece &pb,
+bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t ka, const Side_piece &pa,
+                  const narrow::Body_data &B, const bvh::Hierarchy &hb, uint32_t kb, const Side_piece &pb,
                   double reach) {
-  enclose::Box ba[3], bb[3];
+  enclose::Box ba[6], bb[6];
   const int na = element_boxes(A, ha, ka, pa, reach, ba), nb = element_boxes(B, hb, kb, pb, 0, bb);
   double axes[12][3];
   int n_axes = 0;
@@ -94,7 +136,7 @@ bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t
   for (int s = 0; s < 2; ++s) {
     const narrow::Body_data &d = s == 0 ? A : B;
     const bvh::Hierarchy &h = s == 0 ? ha : hb;
-    const enclose::Pose_piece &p = s == 0 ? pa : pb;
+    const enclose::Pose_piece &p = *(s == 0 ? pa : pb).ball;
     if (!d.mesh) continue;
     const auto &t = d.mesh->triangles()[h.elems[h.nodes[s == 0 ? ka : kb].first]];
     const auto &x = d.pts[t[0]], &y = d.pts[t[1]], &z = d.pts[t[2]];
@@ -125,11 +167,70 @@ bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t
   return false;
 }
 
+// The leaf pair's triangles share a point at the instant (touching_at): their vertex
+// boxes at the instant's poses as interval points.
+bool triangles_touch(const narrow::Body_data &A, uint32_t ea, const enclose::Pose_piece &pa,
+                     const narrow::Body_data &B, uint32_t eb, const enclose::Pose_piece &pb) {
+  std::array<pred::Vec3<arith::Interval>, 3> ta, tb;
+  for (int s = 0; s < 2; ++s) {
+    const narrow::Body_data &d = s == 0 ? A : B;
+    const auto &t = d.mesh->triangles()[s == 0 ? ea : eb];
+    auto &out = s == 0 ? ta : tb;
+    for (int v = 0; v < 3; ++v) {
+      const enclose::Box x = enclose::point_box(s == 0 ? pa : pb, d.pts[t[v]], d.pt_err);
+      for (int i = 0; i < 3; ++i) out[v][i] = arith::Interval(x.lo[i], x.hi[i]);
+    }
+  }
+  try {
+    return pred::triangles_meet(ta, tb);
+  } catch (const arith::Uncertain &) {
+    return false;  // not certain: no witness
+  }
+}
+
 }  // namespace
 
-double first_uncleared(const narrow::Body_data &A, const Pose_of &pose_a, const narrow::Body_data &B,
-                       const Pose_of &pose_b, double reach) {
+bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
+                 const enclose::Pose_piece &pb, Node_pairs front, size_t &budget, uint32_t &ea, uint32_t &eb) {
+  if (!A.mesh || !B.mesh || !pa.finite || !pb.finite) return false;
   const bvh::Hierarchy &ha = bvh::hierarchy(A), &hb = bvh::hierarchy(B);
+  for (; !front.empty() && budget > 0; --budget) {
+    const auto [ka, kb] = front.back();
+    front.pop_back();
+    if (!enclose::boxes_meet(enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h),
+                             enclose::frame_box(pb, hb.nodes[kb].c, hb.nodes[kb].h)))
+      continue;
+    const bool la = ha.nodes[ka].leaf(), lb = hb.nodes[kb].leaf();
+    if (la && lb) {
+      const Side_piece sa{&pa}, sb{&pb};
+      if (leaves_apart(A, ha, ka, sa, B, hb, kb, sb, 0)) continue;
+      const uint32_t a = ha.elems[ha.nodes[ka].first], b = hb.elems[hb.nodes[kb].first];
+      if (triangles_touch(A, a, pa, B, b, pb)) {
+        ea = a;
+        eb = b;
+        return true;
+      }
+    } else if (la || (!lb && hb.size(kb) > ha.size(ka))) {
+      const uint32_t c = hb.nodes[kb].first;
+      front.push_back({ka, c + 1});
+      front.push_back({ka, c});
+    } else {
+      const uint32_t c = ha.nodes[ka].first;
+      front.push_back({c + 1, kb});
+      front.push_back({c, kb});
+    }
+  }
+  return false;
+}
+
+double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reach, const Filter_limits &lim,
+                       Witness *w) {
+  const double until = lim.until;
+  const narrow::Body_data &A = *SA.data, &B = *SB.data;
+  const bvh::Hierarchy &ha = bvh::hierarchy(A), &hb = bvh::hierarchy(B);
+  const double yna = norm_bound(A), ynb = norm_bound(B);
+  if (reach > 0 || !A.mesh || !B.mesh || !SA.instant || !SB.instant) w = nullptr;
+  size_t witness_spent = 0;  // node pairs tested at midpoints
   struct Item {
     int d;
     long i;
@@ -142,26 +243,28 @@ double first_uncleared(const narrow::Body_data &A, const Pose_of &pose_a, const 
   while (!stack.empty()) {
     Item it = std::move(stack.back());
     stack.pop_back();
-    const enclose::Pose_piece &pa = pose_a(it.d, it.i), &pb = pose_b(it.d, it.i);
+    const double start = std::ldexp(static_cast<double>(it.i), -it.d);
+    if (start >= until) return start;  // every earlier piece is separated
+    const Side_piece pa = SA.piece(it.d, it.i), pb = SB.piece(it.d, it.i);
     const double spread = std::max(spread_of(pa, A), spread_of(pb, B));
     util::work_step(1 + it.front.size() / 1024);
     tests += it.front.size();
-    if (tests > kMax_tests) return std::ldexp(static_cast<double>(it.i), -it.d);  // this piece's start
+    if (tests > lim.max_tests) return start;  // this piece's start
     next.clear();
     work = std::move(it.front);
     while (!work.empty()) {
       const auto [ka, kb] = work.back();
       work.pop_back();
-      enclose::Box x = enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h);
+      enclose::Box x = box_of(pa, ha.nodes[ka].c, ha.nodes[ka].h, yna);
       if (reach > 0) x = enclose::grow(x, reach);
-      if (!enclose::boxes_meet(x, enclose::frame_box(pb, hb.nodes[kb].c, hb.nodes[kb].h))) continue;
+      if (!enclose::boxes_meet(x, box_of(pb, hb.nodes[kb].c, hb.nodes[kb].h, ynb))) continue;
       const bool la = ha.nodes[ka].leaf(), lb = hb.nodes[kb].leaf();
       const double sa = la ? -1 : ha.size(ka), sb = lb ? -1 : hb.size(kb);
       if (la && lb && leaves_apart(A, ha, ka, pa, B, hb, kb, pb, reach)) continue;
       if (std::max(sa, sb) <= spread || (la && lb)) {
         next.push_back({ka, kb});  // waits for the halves of the piece
         if (next.size() > kMax_front) {  // the rest waits unrefined (kMax_front)
-          if (next.size() + work.size() > 16 * kMax_front) return std::ldexp(static_cast<double>(it.i), -it.d);
+          if (next.size() + work.size() > 16 * kMax_front) return start;
           next.insert(next.end(), work.begin(), work.end());
           work.clear();
         }
@@ -176,12 +279,44 @@ double first_uncleared(const narrow::Body_data &A, const Pose_of &pose_a, const 
       }
     }
     if (next.empty()) continue;  // separated on this piece
-    if (it.d == kMax_depth) return std::ldexp(static_cast<double>(it.i), -it.d);  // exact
+    if (w && it.d >= kWitness_depth && witness_spent < kWitness_tests + tests / 2) {
+      size_t budget = kWitness_tests + tests / 2 - witness_spent;
+      const size_t before = budget;
+      const int md = it.d + 1;
+      const long mi = 2 * it.i + 1;
+      bool hit = touching_at(A, SA.instant(md, mi), B, SB.instant(md, mi), next, budget, w->a, w->b);
+      witness_spent += before - budget;
+      if (hit) {
+        w->found = true;
+        w->depth = md;
+        w->index = mi;
+        return start;
+      }
+    }
+    if (it.d == kMax_depth) return start;  // exact
     stack.push_back({it.d + 1, 2 * it.i + 1, next});
     stack.push_back({it.d + 1, 2 * it.i, std::move(next)});
     next = Front();
   }
   return kNever;
+}
+
+bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w) {
+  if (!A.data->mesh || !B.data->mesh || !A.instant || !B.instant || !(lower >= 0 && lower < 1)) return false;
+  const long base = std::lround(std::ldexp(lower, kMax_depth));  // exact: lower is on the grid
+  for (int k = kMax_depth; k >= 1; k -= 2) {
+    const long i = base + (1L << (kMax_depth - k));
+    if (i >= (1L << kMax_depth)) break;
+    size_t budget = kWitness_tests;
+    if (touching_at(*A.data, A.instant(kMax_depth, i), *B.data, B.instant(kMax_depth, i), {{0, 0}}, budget, w.a,
+                    w.b)) {
+      w.found = true;
+      w.depth = kMax_depth;
+      w.index = i;
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace pccd::scene

@@ -1,12 +1,19 @@
 // The certified filter of a robot check (robot.h): which body pairs may touch over a
 // segment, and from when, decided on pose enclosures alone, before any exact motion is
-// built.
+// built; in decide mode also a certified contact found on the way (a witness).
 //
-// A body on a time piece [a, b] is given by a enclose::Pose_piece: for a robot link the
-// interval pose of motion/chain_path.h (straight from the joint path) in midpoint-radius
-// form, for an obstacle enclose::enclose_pose of its exact motion. A node's world box over
-// the piece is enclose::frame_box of its body-frame box (hierarchy.h): it holds the node's
-// elements at every t of the piece.
+// A body on a time piece [a, b] is given by a Side_piece: a ball pose (enclose::
+// Pose_piece: for a robot link the interval pose of motion/chain_path.h straight from
+// the joint path in midpoint-radius form, for an obstacle enclose::enclose_pose of its
+// exact motion), and for a robot link on a short piece the second-order enclosure of
+// motion/chain_path.h ("Second-order enclosures"): its poses at a and at b (enclosures
+// of the exact poses at those instants) and the chords' growth g_rot |y| + g_off. A node's
+// world box over the piece is then the hull of its boxes at a and at b (enclose::
+// frame_box of its body-frame box) grown by g_rot |y|max + g_off, |y|max <= sqrt(3)
+// reach over the body (every point y of the node: R(t) y + o(t) is within that of the
+// chord between R(a) y + o(a) and R(b) y + o(b), whose points lie in the hull); without
+// the ends, frame_box of the ball pose. Either holds the node's elements at every t of
+// the piece.
 //
 // first_uncleared: a swept traversal of the two hierarchies over dyadic pieces of
 // [0, 1], earlier half first, carrying a front of node pairs from a piece to its halves
@@ -20,14 +27,21 @@
 // the halves as they are (each may still meet: nothing is dropped unseparated). The
 // first piece that is still not separated at depth kMax_depth, or whose front outgrows
 // 16 kMax_front, or that starts after kMax_tests front pairs were taken for the body
-// pair (overlapping links hold a front of thousands at t = 0 on every depth), gives its
-// start: a certified lower bound of the pair's
+// pair (overlapping links hold a front of thousands at t = 0 on every depth; or
+// Filter_limits::max_tests), or that starts at or after Filter_limits::until, gives its start: a certified lower bound of the pair's
 // contact times (every earlier time lies in a separated piece). kNever (> 1) when every
 // piece is separated: the pair never touches on [0, 1].
+// Witness (decide mode, when asked): on a piece of depth >= kWitness_depth that is not
+// separated, while the body pair's witness budget lasts (kWitness_tests), the front is
+// tested at the piece's midpoint, an instant m = (2i + 1) /
+// 2^(d + 1) (touching_at); a triangle pair found touching there ends the traversal (the
+// pair touches at m, exactly: the answer is certain) and the piece's start is returned.
 // Minimum separation: side A's boxes grow by reach (enclose::reach_of), so "touch" reads
-// "come within delta" throughout.
+// "come within delta" throughout (no witness is looked for then).
 #pragma once
 #include <functional>
+#include <utility>
+#include <vector>
 
 #include "enclose/enclose.h"
 
@@ -37,12 +51,58 @@ constexpr int kMax_depth = 14;         // pieces of 1/16384 at the finest
 constexpr size_t kMax_front = 4096;    // node pairs per piece (then: not separated)
 constexpr size_t kMax_tests = 1 << 16;  // front pairs per body pair (then: the piece's start)
 constexpr double kNever = 2.0;         // first_uncleared: no contact on [0, 1]
+constexpr int kWitness_depth = 3;      // witnesses are looked for from pieces of 1/8
+// Node pairs tested at midpoints, per body pair: at most kWitness_tests plus half the
+// front pairs taken so far (a near miss that is never a contact costs at most half again).
+constexpr size_t kWitness_tests = 256;
 
-// The pose of one side on the dyadic piece (depth, index): [index / 2^depth,
-// (index + 1) / 2^depth].
-using Pose_of = std::function<const enclose::Pose_piece &(int depth, long index)>;
+struct Side_piece {
+  const enclose::Pose_piece *ball = nullptr;                    // always
+  bool identity = false;  // the body does not move: world boxes are body-frame boxes
+  const enclose::Pose_piece *at_a = nullptr, *at_b = nullptr;  // both, or neither
+  double g_rot = 0, g_off = 0;  // (b - a)^2 / 8 times d2, o2 (rounded up)
+};
 
-double first_uncleared(const narrow::Body_data &A, const Pose_of &pose_a, const narrow::Body_data &B,
-                       const Pose_of &pose_b, double reach);
+struct Filter_side {
+  const narrow::Body_data *data = nullptr;
+  std::function<Side_piece(int depth, long index)> piece;  // over the dyadic piece
+  // The pose at the instant index / 2^depth (an enclosure of the exact pose then).
+  std::function<const enclose::Pose_piece &(int depth, long index)> instant;
+};
+
+// A certified contact: elements a (of A) and b (of B) share a point at t = index / 2^depth.
+struct Witness {
+  bool found = false;
+  int depth = 0;
+  long index = 0;
+  uint32_t a = 0, b = 0;
+};
+
+using Node_pairs = std::vector<std::pair<uint32_t, uint32_t>>;
+
+struct Filter_limits {
+  double until = 1;               // pieces starting at or after it are not looked at
+  size_t max_tests = kMax_tests;  // front pairs per body pair
+};
+
+// w: when not null (and reach is 0, both bodies meshes), witnesses are looked for.
+double first_uncleared(const Filter_side &A, const Filter_side &B, double reach, const Filter_limits &lim = {},
+                       Witness *w = nullptr);
+
+// A witness at the instants lower + 2^-k, k = kMax_depth, kMax_depth - 2, ..., while
+// below 1 (lower: a pair's first_uncleared, on the dyadic grid of kMax_depth): after
+// the first uncleared piece, where a contact that first_uncleared's midpoints missed
+// most likely overlaps. touching_at from the roots, kWitness_tests node pairs each.
+bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w);
+
+// Whether some element pair under the node pairs of front (e.g. {{0, 0}}: the roots)
+// certainly shares a point at the instant of the poses pa, pb (enclosures of the exact
+// poses then): a traversal with frame_box at the instant, then pred::triangles_meet in
+// interval arithmetic on the element boxes (a certain answer holds for every point of
+// the boxes, so for the exact one; an uncertain one is not a witness). Triangles of two
+// meshes only; each node pair tested takes one from budget, and none is tested once it
+// is 0 (then: none found).
+bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
+                 const enclose::Pose_piece &pb, Node_pairs front, size_t &budget, uint32_t &ea, uint32_t &eb);
 
 }  // namespace pccd::scene

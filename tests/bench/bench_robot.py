@@ -32,6 +32,10 @@ the mode's self-collision setting), as a planner's states are. Obstacles: BOXES 
 (5 to 20 cm sides) and PLATES plates (2 mm thick, 10 to 30 cm wide) axis-aligned, centred
 0.3 to 0.75 m from the base axis at heights 0.1 to 0.8 m; all seeded (--seed).
 
+Times: CPU time of the process by default (time.process_time: on a shared, loaded
+machine wall time mostly measures waiting for a core; both sides are single-threaded
+here), wall time with --clock wall.
+
 Reported per arm and self-collision setting: time per segment (mean, median, max) of
 each method, segments each reports colliding, MISSES (polyccd collides, discrete free),
 and counts that must be 0, printed loudly when not: decide and first-contact modes
@@ -61,6 +65,7 @@ def ms(values):
 
 def run_arm(P, load_urdf, example_robot_file, name, self_collision, args, summary):
     """One arm, one self-collision setting: the segments, the table, rows for summary."""
+    clock = time.process_time if args.clock == "cpu" else time.perf_counter
     urdf, srdf = (example_robot_file(f) for f in ARMS[name])
     robot = load_urdf(urdf, srdf=srdf)
     allowed = robot.adjacent_pairs() | robot.allowed_from_srdf(srdf)
@@ -101,17 +106,17 @@ def run_arm(P, load_urdf, example_robot_file, name, self_collision, args, summar
         s = len(times["first"])
         out = {}
         for m, kw in modes.items():
-            t0 = time.perf_counter()
+            t0 = clock()
             out[m] = robot.check(q0, q1, obstacles, **options, **kw)
-            times[m].append(time.perf_counter() - t0)
+            times[m].append(clock() - t0)
             hits[m] += out[m].collides
         exact = out["first"]
         if out["decide"].collides != exact.collides:
             disagree.append(f"segment {s}: q0 = {q0.tolist()}, q1 = {q1.tolist()}")
         for r, run in runs.items():
-            t0 = time.perf_counter()
+            t0 = clock()
             sample, poses = discrete.check(q0, q1, r)
-            run["times"].append(time.perf_counter() - t0)
+            run["times"].append(clock() - t0)
             run["poses"].append(poses)
             run["hits"] += sample is not None
             if exact.collides and sample is None:
@@ -160,6 +165,8 @@ def main(argv=None):
     ap.add_argument("--span", type=float, default=1.0, help="largest change per joint (rad)")
     ap.add_argument("--boxes", type=int, default=3)
     ap.add_argument("--plates", type=int, default=3)
+    ap.add_argument("--clock", choices=["cpu", "wall"], default="cpu",
+                    help="time per check: process CPU time (default) or wall time")
     ap.add_argument("--arms", nargs="+", default=sorted(ARMS), choices=sorted(ARMS))
     ap.add_argument("--self-collision", nargs="+", default=["off", "on"], choices=["off", "on"])
     args = ap.parse_args(argv)
@@ -178,7 +185,7 @@ def main(argv=None):
         return 0
     print(f"bench_robot: {args.n} segments per arm and setting (seed {args.seed}, span "
           f"{args.span} rad), {args.boxes} boxes + {args.plates} plates (2 mm), discrete every "
-          f"{' / '.join(map(str, args.resolution))} rad")
+          f"{' / '.join(map(str, args.resolution))} rad; {args.clock} time")
     summary = []
     for name in args.arms:
         for sc in args.self_collision:

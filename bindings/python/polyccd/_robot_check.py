@@ -64,27 +64,39 @@ def _handle(robot):
     for link, _, k, shape in robot.shapes:
         check(lib.pccd_robot_add_body(r, k, groups[link], shape._handle, ffi.NULL))
     bodies = [Body(shape, None, name=name) for (_, _, _, shape), name in zip(robot.shapes, _names(robot))]
-    made = (r, bodies, groups, [None])  # [None]: the allowed set last handed to C
+    # [the allowed set last handed to C, then (key, default allowed set) once known]
+    made = (r, bodies, groups, [None])
     _HANDLES[robot] = (key, made, [s for *_, s in robot.shapes])  # the list keeps the ids valid
     return made
 
 
 def _set_allowed(robot, made, allowed):
     r, _, groups, last = made
-    if allowed is None:
-        allowed = robot.adjacent_pairs() | robot.__dict__.get("srdf_pairs", set())
-    allowed_set = set()
-    for k, pair in enumerate(allowed):
-        pair = tuple(pair)
-        if len(pair) != 2 or any(x not in robot.tree for x in pair):
-            raise InputError(f"allowed[{k}]: {pair!r} is not a pair of link names")
-        allowed_set.add(frozenset(pair))
+    if allowed is None:  # the default, recomputed only when the tree or SRDF pairs change
+        srdf = robot.__dict__.get("srdf_pairs", set())
+        key = (tuple(robot.tree.items()), frozenset(srdf))
+        if len(last) < 3 or last[1] != key:
+            last[1:] = [key, _validated(robot, robot.adjacent_pairs() | srdf)]
+        allowed_set = last[2]
+    else:
+        allowed_set = _validated(robot, allowed)
     if last[0] == allowed_set:
         return
     flat = [groups[x] for pair in allowed_set for x in (sorted(pair) * 2)[:2]]
     arr = np.asarray(flat, dtype=np.uintp)
     check(lib.pccd_robot_set_allowed(r, ffi.from_buffer("size_t[]", arr), len(allowed_set)))
     last[0] = allowed_set
+
+
+def _validated(robot, allowed):
+    """The allowed link pairs as a set of frozensets; InputError naming a bad one."""
+    allowed_set = set()
+    for k, pair in enumerate(allowed):
+        pair = tuple(pair)
+        if len(pair) != 2 or any(x not in robot.tree for x in pair):
+            raise InputError(f"allowed[{k}]: {pair!r} is not a pair of link names")
+        allowed_set.add(frozenset(pair))
+    return allowed_set
 
 
 _ROPT = {}
