@@ -1,26 +1,38 @@
 // The floating-point rounding of one call: opened once per call, carried to the workers.
 //
 // Every C entry point runs under one Round_to_nearest (lib/api/guard.h): the thread
-// computes in round-to-nearest whatever mode the caller left, and records that in a
-// thread-local flag. Thread_pool hands the caller's mode and flag to its workers before
-// each loop (Adopted_rounding), so every item of a call sees the same roundings and the
-// certified filters take the same decisions and report the same stages on any thread.
+// computes in round-to-nearest whatever mode the caller left, and the caller's mode comes
+// back at the end. Thread_pool hands the caller's mode to its workers before each loop, so
+// every item of a call sees the same roundings and the certified filters take the same
+// decisions and report the same stages on any thread.
 //
-// What reads the flag: arith/interval.h. Its intervals are certified in ANY rounding mode
-// (each IEEE operation errs by less than one ulp, and the bounds step one ulp outward);
-// in round-to-nearest only, it also certifies exact point results with error-free
-// transformations (TwoSum, the FMA residual). Code that runs outside a C call (the C++
-// unit tests) gets the conservative default, not-nearest, unless it opens a scope.
+// Who asks: arith/interval.h. Its intervals are certified in ANY rounding mode (each IEEE
+// operation errs by less than one ulp, and the bounds step one ulp outward); when the
+// mode is round-to-nearest it also certifies exact point results with error-free
+// transformations (TwoSum, the FMA residual). nearest_mode() reads the mode the double
+// operations really use, so code outside a C call (the C++ unit tests, in any mode) is
+// certified too. It is one register read on x86-64 (MXCSR), no thread-local flag: a
+// thread_local in a shared library costs a __tls_get_addr call per access, about 7% of
+// the linear fast path when this scope kept one (callgrind, issue 25).
 #pragma once
+#include <cfenv>
+#if defined(__x86_64__) && defined(__SSE2__)
+#include <immintrin.h>
+#endif
 
 namespace pccd::util {
 
-inline thread_local bool tl_nearest = false;
-// Whether this thread computes in round-to-nearest (set only by the scopes below).
-inline bool nearest_mode() { return tl_nearest; }
+// Whether this thread's double operations round to nearest.
+inline bool nearest_mode() {
+#if defined(__x86_64__) && defined(__SSE2__)
+  return (_mm_getcsr() & 0x6000u) == 0;  // MXCSR.RC, bits 13-14: 00 = to nearest
+#else
+  return std::fegetround() == FE_TONEAREST;
+#endif
+}
 
-// While alive, the thread computes in round-to-nearest and knows it; the caller's mode
-// and flag come back at the end. Nested scopes are harmless.
+// While alive, the thread computes in round-to-nearest; the caller's mode comes back at
+// the end. Nested scopes are harmless.
 class Round_to_nearest {
  public:
   Round_to_nearest();
@@ -29,22 +41,7 @@ class Round_to_nearest {
   Round_to_nearest &operator=(const Round_to_nearest &) = delete;
 
  private:
-  int saved_mode_;
-  bool saved_flag_;
-};
-
-// While alive, a pool worker computes in the mode and with the flag of the thread that
-// started the loop (mode from fegetround there, flag from nearest_mode()).
-class Adopted_rounding {
- public:
-  Adopted_rounding(int mode, bool nearest);
-  ~Adopted_rounding();
-  Adopted_rounding(const Adopted_rounding &) = delete;
-  Adopted_rounding &operator=(const Adopted_rounding &) = delete;
-
- private:
-  int saved_mode_;
-  bool saved_flag_;
+  int saved_;
 };
 
 }  // namespace pccd::util

@@ -2,8 +2,6 @@
 
 #include <cfenv>
 
-#include "util/rounding.h"
-
 namespace pccd::util {
 
 unsigned usable_threads(unsigned requested) {
@@ -61,8 +59,8 @@ void Thread_pool::work() {
       ++busy_;
     }
     {
-      // The caller's rounding and work limits (round_, nearest_, budget_ set under mu_).
-      const Adopted_rounding rounding(round_, nearest_);
+      // The caller's rounding mode and work limits (round_, budget_ set under mu_).
+      if (std::fegetround() != round_) std::fesetround(round_);
       const Budget_scope scope(budget_);
       run_items();
     }
@@ -83,7 +81,6 @@ void Thread_pool::parallel_for(size_t n, const std::function<void(size_t)> &fn) 
     fn_ = &fn;
     n_ = n;
     round_ = std::fegetround();
-    nearest_ = nearest_mode();
     budget_ = current_budget();
     next_ = finished_ = 0;
     error_ = nullptr;
