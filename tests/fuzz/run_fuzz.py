@@ -67,13 +67,14 @@ def run(name, cmd, seconds, build, extra):
                                 f"-artifact_prefix={crashes}/{name}-"] + extra
     args += [str(corpus), str(seeds)]
     start = time.monotonic()
-    r = subprocess.run(args, capture_output=True, text=True, env=dict(os.environ))
+    log = build / f"{name}.log"  # written as libFuzzer goes: a long run can be watched
+    with open(log, "w") as out:
+        r = subprocess.run(args, stdout=out, stderr=subprocess.STDOUT, env=dict(os.environ))
     took = max(1, round(time.monotonic() - start))  # a crash ends the run early
-    log = build / f"{name}.log"
-    log.write_text(r.stderr)
-    m = re.search(r"stat::number_of_executed_units:\s*(\d+)", r.stderr)
+    text = log.read_text(errors="replace")
+    m = re.search(r"stat::number_of_executed_units:\s*(\d+)", text)
     if m is None:  # killed before the final stats: count the last status line
-        lines = re.findall(r"^#(\d+)\s", r.stderr, re.M)
+        lines = re.findall(r"^#(\d+)\s", text, re.M)
         execs = int(lines[-1]) if lines else 0
     else:
         execs = int(m.group(1))
