@@ -130,7 +130,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
   auto body = [&](size_t k) -> const Moving_body & {
     if (k >= nr) return obst[k - nr];
     if (!robot_mb[k]) {
-      if (!built) motions = r.chain.segment_motions(q0, q1, &rn, &needed);
+      if (!built)
+        motions = r.chain.segment_motions(q0, q1, &rn, &needed, ro.check_link ? &ro.check_link : nullptr);
       built = true;
       const size_t L = r.bodies[k].link;
       if (!link_data[L]) link_data[L] = narrow::prepare_motion(motions[L], true, &rn[L]);
