@@ -13,7 +13,7 @@ from typing import List, Optional, Tuple, Union
 from .. import KINDS, InputError
 from .._numbers import exact_fraction, ratio_text, show  # number texts: no public twin yet
 from .._solve import npoints
-from ._reading import tick
+from ._reading import read_bytes, tick
 
 QUERY_FORMAT = "polyccd-query/1"
 SCENE_FORMAT = "polyccd/1"
@@ -68,11 +68,7 @@ def loads(text):
 
 def load(path):
     """Reads and parses a JSON file; InputError on unreadable or invalid content."""
-    try:
-        with open(path, "rb") as f:
-            data = f.read()
-    except OSError as e:
-        raise InputError(f"cannot read the file: {e.strerror}") from None
+    data = read_bytes(path)  # within the reading limit on its size (_reading.py)
     try:
         text = data.decode("utf-8-sig")
     except UnicodeDecodeError as e:
