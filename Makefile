@@ -210,8 +210,12 @@ wheel: all
 	PATH="$(abspath $(VENV))/bin:$$PATH" $(VENV)/bin/auditwheel show $(BUILD)/dist/polyccd-*manylinux*.whl
 	@echo "wheel: $$(ls $(abspath $(BUILD))/dist/polyccd-*manylinux*.whl)"
 
+# The main job: polyccd demo, then OMPL planning the Panda with exact edge checks
+# (examples/ompl_panda.py, a few seconds; its packages come with tests/requirements.txt).
 demo: all
 	$(VENV)/bin/polyccd demo
+	@echo
+	$(VPY) examples/ompl_panda.py --seed 3
 
 # lib/libpolyccd.so: where builds before the move to build/ left the library.
 clean:

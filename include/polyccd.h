@@ -968,7 +968,7 @@ PCCD_API int pccd_report_stats(const pccd_report *rep, pccd_scene_stats *stats);
 /* ------------------------------------------------------------------------------------
  * Steps of deforming meshes (a simulator's time step): every vertex moves on its own
  * straight path from its position at t = 0 to its position at t = 1 (doubles at their
- * exact values). A step holds one or more meshes (triangles, edges, isolated points);
+ * exact values), or on a polynomial path (pccd_step_set_paths_d). A step holds one or more meshes (triangles, edges, isolated points);
  * pccd_step_solve checks every primitive pair exactly over t in [0, 1]:
  *   VERTEX_FACE    every vertex used by a face, edge or point against every face not
  *                  holding it,
@@ -1005,6 +1005,18 @@ PCCD_API int pccd_step_add_mesh_d(pccd_step *s, const double *v_t0, const double
  * nv its vertex count). Errors as pccd_step_add_mesh_d, and "mesh", "nv" out of range. */
 PCCD_API int pccd_step_set_positions_d(pccd_step *s, size_t mesh, const double *v_t0,
                                        const double *v_t1, size_t nv);
+
+/* Gives mesh `mesh` polynomial paths instead of straight ones: its vertex i is at
+ *   x(t) = sum_k coeffs[(k * nv + i) * 3 + axis] t^k,   k = 0 .. ncoeffs - 1
+ * (an array of shape (ncoeffs, nv, 3), ascending powers of t as pccd_query_set_coord_d;
+ * doubles at their exact values). Pairs with such a vertex are solved by the general
+ * exact solver (as pccd_query_solve), their swept boxes from the paths' Bernstein
+ * coefficients. pccd_step_set_positions_d makes the paths straight again.
+ * PCCD_EINVAL, naming the place: "mesh", "nv" as pccd_step_set_positions_d, ncoeffs
+ * outside 1..8 ("ncoeffs"), coeffs NULL with nv > 0, a non-finite coefficient
+ * ("coeffs[2][4][1]"). On error the step is unchanged. */
+PCCD_API int pccd_step_set_paths_d(pccd_step *s, size_t mesh, const double *coeffs, size_t ncoeffs,
+                                   size_t nv);
 
 /* Whether the mesh pair (i, j) is checked: check = 1 (default) or 0; i == j is mesh i's
  * self-collision. PCCD_EINVAL: i or j not a mesh ("j: 4 out of range (3 meshes)"),

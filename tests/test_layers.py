@@ -139,3 +139,42 @@ def test_the_python_core_imports_no_application():
 def test_the_import_check_catches_an_application_import(text):
     assert apps_imports(PACKAGE / "_scene.py", text)
     assert not apps_imports(PACKAGE / "_scene.py", "from ._body import Mesh\nimport numpy\n")
+
+
+# ------------------------------------------------ the applications use the public API only
+
+def private_imports(path, text):
+    """Modules of the core's private side an application file imports: any polyccd.X
+    (outside polyccd.apps) whose name starts with "_" ("from .. import _numbers" and
+    "from .._numbers import show" both count)."""
+    out = []
+    for m in imported_modules(path, text):
+        parts = m.split(".")
+        if parts[0] == "polyccd" and len(parts) > 1 and parts[1] != "apps" \
+                and any(q.startswith("_") and q != "__version__" for q in parts[1:]):
+            out.append(m)
+    return out
+
+
+def app_files():
+    return [p for p in sorted((PACKAGE / "apps").rglob("*.py"))]
+
+
+def test_the_applications_use_only_the_public_api():
+    assert len(app_files()) > 10
+    bad = [f"{p.relative_to(PACKAGE)} imports {m}" for p in app_files()
+           for m in private_imports(p, p.read_text())]
+    assert bad == []
+
+
+@pytest.mark.parametrize("text", [
+    "from .._numbers import show\n",
+    "from .. import _solve\n",
+    "def f():\n    import polyccd._pccd\n",
+    "from polyccd._limits import Limits\n",
+])
+def test_the_private_import_check_catches_one(text):
+    app = PACKAGE / "apps" / "_csv.py"
+    assert private_imports(app, text)
+    assert not private_imports(app, "from .. import Limits, __version__\nfrom ..texts import show\n"
+                                    "from ._json import load\nimport numpy\n")

@@ -15,7 +15,8 @@ from polyccd import robot as _robot
 PUBLIC = [polyccd.solve, polyccd.solve_linear, polyccd.collides_linear, polyccd.solve_linear_many,
           polyccd.Motion, polyccd.Mesh, polyccd.Spheres, polyccd.Index, polyccd.Limits,
           polyccd.Cancel, polyccd.check_step, polyccd.collision_free_stepsize,
-          polyccd.check, polyccd.Body, polyccd.Chain, polyccd.robot.Robot, polyccd.robot.load_urdf]
+          polyccd.check, polyccd.Body, polyccd.Chain, polyccd.robot.Robot, polyccd.robot.load_urdf,
+          polyccd.usable_threads, polyccd.kind_points]
 
 
 def callables():

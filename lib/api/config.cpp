@@ -74,7 +74,7 @@ const pred::Solve_options &solve_options(const pccd_config *cfg) {
   o.want_time = want_time;
   o.want_exact = want_exact;
   if (md) {
-    o.delta = arith::parse_rational(md, "config.min_distance");
+    o.set_delta(arith::parse_rational(md, "config.min_distance"));
     if (sgn(o.delta) < 0)
       throw Input_error(std::string("config.min_distance: \"") + md + "\" must be >= 0");
   }

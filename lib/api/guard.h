@@ -16,6 +16,7 @@
 #include "arith/errors.h"
 #include "arith/interval.h"
 #include "polyccd.h"
+#include "util/rounding.h"
 #include "util/work_budget.h"
 
 namespace pccd::api {
@@ -44,7 +45,7 @@ inline std::string place(const std::string &name, std::initializer_list<size_t> 
 
 template <class F>
 int guard(const char *fn, F &&body) noexcept {
-  const arith::Round_to_nearest nearest;  // same roundings, same stages, in any caller mode
+  const util::Round_to_nearest nearest;  // the call's one rounding scope (util/rounding.h)
   try {
     return body();
   } catch (const arith::Input_error &e) {

@@ -254,7 +254,8 @@ PCCD_API int pccd_motion_set_linear_translation_d(pccd_motion *m, const double p
                                                   const double p1[3]) {
   return guard(__func__, [&] {
     require(m, "m");
-    pccd::api::edit(m).set_translation(pccd::motion::linear_path(vec_d(p0, "p0"), vec_d(p1, "p1")));
+    const Vec3_q a = vec_d(p0, "p0"), b = vec_d(p1, "p1");  // in argument order
+    pccd::api::edit(m).set_translation(pccd::motion::linear_path(a, b));
     return PCCD_OK;
   });
 }
@@ -263,7 +264,8 @@ PCCD_API int pccd_motion_set_linear_translation_s(pccd_motion *m, const char *co
                                                   const char *const p1[3]) {
   return guard(__func__, [&] {
     require(m, "m");
-    pccd::api::edit(m).set_translation(pccd::motion::linear_path(vec_s(p0, "p0"), vec_s(p1, "p1")));
+    const Vec3_q a = vec_s(p0, "p0"), b = vec_s(p1, "p1");  // in argument order
+    pccd::api::edit(m).set_translation(pccd::motion::linear_path(a, b));
     return PCCD_OK;
   });
 }
@@ -293,8 +295,9 @@ PCCD_API int pccd_motion_set_hermite_translation_d(pccd_motion *m, const double 
                                                    const double v1[3]) {
   return guard(__func__, [&] {
     require(m, "m");
-    pccd::api::edit(m).set_translation(pccd::motion::hermite_path(vec_d(p0, "p0"), vec_d(v0, "v0"),
-                                                    vec_d(p1, "p1"), vec_d(v1, "v1")));
+    // Converted in argument order, so an error names the first bad argument.
+    const Vec3_q a = vec_d(p0, "p0"), va = vec_d(v0, "v0"), b = vec_d(p1, "p1"), vb = vec_d(v1, "v1");
+    pccd::api::edit(m).set_translation(pccd::motion::hermite_path(a, va, b, vb));
     return PCCD_OK;
   });
 }
@@ -305,8 +308,9 @@ PCCD_API int pccd_motion_set_hermite_translation_s(pccd_motion *m, const char *c
                                                    const char *const v1[3]) {
   return guard(__func__, [&] {
     require(m, "m");
-    pccd::api::edit(m).set_translation(pccd::motion::hermite_path(vec_s(p0, "p0"), vec_s(v0, "v0"),
-                                                    vec_s(p1, "p1"), vec_s(v1, "v1")));
+    // Converted in argument order, so an error names the first bad argument.
+    const Vec3_q a = vec_s(p0, "p0"), va = vec_s(v0, "v0"), b = vec_s(p1, "p1"), vb = vec_s(v1, "v1");
+    pccd::api::edit(m).set_translation(pccd::motion::hermite_path(a, va, b, vb));
     return PCCD_OK;
   });
 }
@@ -316,8 +320,10 @@ PCCD_API int pccd_motion_set_axis_rotation_s(pccd_motion *m, const char *const a
                                              const char *tau1) {
   return guard(__func__, [&] {
     require(m, "m");
-    pccd::api::edit(m) = pccd::motion::axis_rotation(vec_s(axis, "axis"), vec_s(center, "center"),
-                                       number_s(tau0, "tau0"), number_s(tau1, "tau1"));
+    // Converted in argument order, so an error names the first bad argument.
+    const Vec3_q u = vec_s(axis, "axis"), c = vec_s(center, "center");
+    const Rational a = number_s(tau0, "tau0"), b = number_s(tau1, "tau1");
+    pccd::api::edit(m) = pccd::motion::axis_rotation(u, c, a, b);
     return PCCD_OK;
   });
 }
@@ -327,9 +333,11 @@ PCCD_API int pccd_motion_set_screw_s(pccd_motion *m, const char *const axis[3],
                                      const char *tau1, const char *advance) {
   return guard(__func__, [&] {
     require(m, "m");
-    pccd::api::edit(m) = pccd::motion::screw(vec_s(axis, "axis"), vec_s(center, "center"),
-                               number_s(tau0, "tau0"), number_s(tau1, "tau1"),
-                               number_s(advance, "advance"));
+    // Converted in argument order, so an error names the first bad argument.
+    const Vec3_q u = vec_s(axis, "axis"), c = vec_s(center, "center");
+    const Rational a = number_s(tau0, "tau0"), b = number_s(tau1, "tau1");
+    const Rational h = number_s(advance, "advance");
+    pccd::api::edit(m) = pccd::motion::screw(u, c, a, b, h);
     return PCCD_OK;
   });
 }

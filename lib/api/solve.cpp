@@ -37,7 +37,6 @@ Biggest_number biggest_in(const pccd_query &q) {
 
 pred::Contact_result solve_query(const pccd_query &q, const pred::Solve_options &opt) {
   check_radii(q);
-  const arith::Nearest_scope nearest;  // before any interval arithmetic
   pred::Query_data<Interval> iq;
   iq.kind = q.kind;
   for (const auto &p : q.points) iq.p.push_back(motion::convert_traj<Interval>(p));

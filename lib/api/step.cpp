@@ -99,6 +99,15 @@ PCCD_API int pccd_step_set_positions_d(pccd_step *s, size_t mesh, const double *
   });
 }
 
+PCCD_API int pccd_step_set_paths_d(pccd_step *s, size_t mesh, const double *coeffs, size_t ncoeffs,
+                                   size_t nv) {
+  return guard(__func__, [&] {
+    require(s, "s");
+    pccd::step::set_paths(s->set, mesh, coeffs, ncoeffs, nv);
+    return PCCD_OK;
+  });
+}
+
 PCCD_API int pccd_step_set_pair_check(pccd_step *s, size_t i, size_t j, int check) {
   return guard(__func__, [&] {
     require(s, "s");

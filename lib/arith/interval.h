@@ -10,7 +10,7 @@
 // FP environment is never touched. NaN (inf - inf) makes every sign query uncertain.
 //
 // Exact points stay exact: when the thread's rounding mode is round-to-nearest
-// (checked once per solve by Nearest_scope, default: not assumed), a sum or product
+// (util/rounding.h: set once per C call, default: not assumed), a sum or product
 // of two point intervals is checked with an error-free transformation (TwoSum, exact
 // for round-to-nearest without overflow [Knuth, TAOCP 4.2.2]; the FMA residual
 // a*b - p, exact when no underflow occurs [Boldo-Muller 2011], guarded by |p| >= 2^-960).
@@ -23,6 +23,7 @@
 #include <cstring>
 
 #include "arith/errors.h"
+#include "util/rounding.h"
 
 namespace pccd::arith {
 
@@ -66,37 +67,9 @@ inline bool exact_midpoint(double lo, double hi, double &m) {
   return lo < m && m < hi;
 }
 
-// Whether this thread runs in round-to-nearest (set by Nearest_scope).
-inline thread_local bool tl_nearest = false;
-inline bool nearest_mode() { return tl_nearest; }
-
-// While alive, records whether the current rounding mode is round-to-nearest.
-// Does not change the mode.
-class Nearest_scope {
- public:
-  Nearest_scope();
-  ~Nearest_scope();
-  Nearest_scope(const Nearest_scope &) = delete;
-  Nearest_scope &operator=(const Nearest_scope &) = delete;
-
- private:
-  bool saved_;
-};
-
-// While alive, the thread computes in round-to-nearest; the caller's mode comes back
-// at the end. Every C entry point runs under one (lib/api/guard.h), so the certified
-// filters see the same roundings, take the same decisions and report the same stages
-// whatever mode the caller left (the answers themselves never depended on it).
-class Round_to_nearest {
- public:
-  Round_to_nearest();
-  ~Round_to_nearest();
-  Round_to_nearest(const Round_to_nearest &) = delete;
-  Round_to_nearest &operator=(const Round_to_nearest &) = delete;
-
- private:
-  int saved_;
-};
+// Whether this thread computes in round-to-nearest: one scope per C call
+// (util/rounding.h), carried to the pool's workers.
+using util::nearest_mode;
 
 // The point sum s = fl(a + b) with its exact rounding error (round-to-nearest only).
 inline Interval point_sum(double a, double b) {

@@ -214,7 +214,6 @@ bool Pair_ctx::triangles_meet_at_zero(uint32_t a, uint32_t b) const {
     }
     return x;
   };
-  const arith::Nearest_scope nearest;
   try {
     return pred::triangles_meet(corners(Interval(0.0), 0, a), corners(Interval(0.0), 1, b));
   } catch (const arith::Uncertain &) {

@@ -3,6 +3,7 @@
 #include "poly/earliest.h"
 #include "poly/integer.h"
 #include "poly/rational_root.h"
+#include "pred/delta_filter.h"
 #include "pred/filters.h"
 #include "pred/static_contact.h"
 #include "util/work_budget.h"
@@ -239,7 +240,16 @@ Contact_result solve(const Query_data<Interval> &iq,
                      const Solve_options &opt) {
   if (sgn(opt.delta) < 0) throw arith::Internal_error("solve: a negative minimum distance");
   if (!opt.min_distance()) return solve_at(iq, exact_points, opt);
-  const Query_data<Interval> dq = with_delta(iq, arith::enclose(opt.delta));
+  // A plain linear query: first the separating-direction filter (delta_filter.h), which
+  // pccd_solve_linear_d and the batch run on the same enclosures before building iq.
+  Linear_points lp;
+  if (linear_points_of(iq, lp) && delta_separated(iq.kind, lp, opt.delta_box)) {
+    util::work_step();  // one query, as in solve_at
+    Contact_result out;
+    out.stage = STAGE_BOUNDS;
+    return out;
+  }
+  const Query_data<Interval> dq = with_delta(iq, opt.delta_box);
   return solve_at(dq, [&] { return with_delta(exact_points(), opt.delta); }, opt);
 }
 
@@ -249,7 +259,6 @@ Contact_result solve_at(const Query_data<Interval> &iq,
                         const std::function<Query_data<Rational>()> &exact_points,
                         const Solve_options &opt) {
   Contact_result out;
-  const arith::Nearest_scope nearest;  // lets intervals certify exact operations
   util::work_step();  // one query (util/work_budget.h)
   if (bounds_separate(iq)) {
     out.stage = STAGE_BOUNDS;

@@ -8,6 +8,7 @@
 #include <functional>
 #include <vector>
 
+#include "arith/convert.h"
 #include "pred/query_systems.h"
 
 namespace pccd::pred {
@@ -29,8 +30,16 @@ struct Solve_options {
   // Minimum separation delta >= 0 (pccd_config.min_distance): a contact is a time when
   // the closed primitives are within distance delta (0: they touch). solve() applies
   // it to the query: ball radii grow by delta, point kinds get the systems of
-  // pred/delta_systems.h.
+  // pred/delta_systems.h. Set it with set_delta (below), never alone: the filters
+  // read delta_box, which must enclose it.
   arith::Rational delta = 0;
+  // delta enclosed in doubles, for the filters (delta_filter.h): set with delta, only
+  // through set_delta.
+  arith::Interval delta_box = 0.0;
+  void set_delta(const arith::Rational &d) {
+    delta = d;
+    delta_box = arith::enclose(d);
+  }
   // The one test of "a minimum distance is set" (config.min_distance > 0).
   bool min_distance() const { return sgn(delta) > 0; }
 };

@@ -2,6 +2,7 @@
 
 #include "arith/convert.h"
 #include "arith/interval.h"
+#include "pred/delta_filter.h"
 
 namespace pccd::pred {
 
@@ -13,7 +14,6 @@ namespace {
 // The staged solver on n points with finite coordinates.
 Contact_result solve_staged(int kind, size_t n, const double *p0, const double *p1,
                             const Solve_options &opt) {
-  const arith::Nearest_scope nearest;  // before any interval arithmetic
   // The interval stages see the doubles as exact points; the exact trajectories are
   // built only if those stages cannot decide.
   Query_data<Interval> iq;
@@ -61,6 +61,15 @@ void solve_linear(int kind, size_t n, const double *p0, const double *p1, const 
       case Linear_verdict::unknown: break;
     }
     if (crossing_hit(kind, p0, p1, f, opt, out)) return;
+  } else {
+    // The staged solver's first test with a minimum distance (delta_filter.h), on the
+    // same enclosures, before its interval query is built.
+    Linear_points lp;
+    linear_points_from(n, p0, p1, lp);
+    if (delta_separated(kind, lp, opt.delta_box)) {
+      out.stage = STAGE_BOUNDS;
+      return;
+    }
   }
   out = solve_staged(kind, n, p0, p1, opt);
 }

@@ -1,8 +1,10 @@
 // One query of points moving linearly, given as doubles (pccd_solve_linear_d and every
 // entry of pccd_solve_linear_batch_d): the static filter (linear_filter.h) and its
 // crossing half (linear_crossing.h), then the hit certificate (linear_crossing.h), then
-// the staged solver (solve.h) only when neither decides. With a minimum distance the
-// fast paths are skipped (they assume delta = 0). The answer is the staged solver's.
+// the staged solver (solve.h) only when neither decides. With a minimum distance those
+// fast paths are skipped (they assume delta = 0); the staged solver's first test, the
+// separating-direction filter (delta_filter.h), runs on the doubles before its interval
+// query is built. The answer and stage are the staged solver's.
 #pragma once
 #include <cstddef>
 

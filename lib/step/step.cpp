@@ -9,6 +9,7 @@
 #include "pred/features.h"
 #include "pred/solve_linear.h"
 #include "scene/combine.h"
+#include "step/paths.h"
 #include "step/separate.h"
 #include "step/tree.h"
 #include "util/thread_pool.h"
@@ -66,6 +67,10 @@ class Driver {
         vb_[v].lo[a] = lo;
         vb_[v].hi[a] = hi;
       }
+    paths_ = s.has_paths();
+    if (paths_)
+      for (size_t v = 0; v < nv; ++v)
+        if (on_path(s, static_cast<uint32_t>(v))) vb_[v] = path_box(s, static_cast<uint32_t>(v), u);
     std::vector<Box> fb(s.faces.size()), pb(s.points.size());
     eb_.resize(s.edges.size());
     for (size_t f = 0; f < fb.size(); ++f) {
@@ -99,17 +104,21 @@ class Driver {
     // chunk's own, so which pairs drop out depends on the chunk alone, not on threads.
     pred::Solve_options local = solve_;
     auto candidate = [&](int kind, uint32_t a, uint32_t b, const uint32_t *pts, int n) {
-      double p0[12], p1[12];
-      for (int i = 0; i < n; ++i) {
-        std::memcpy(p0 + 3 * i, &s_.x0[3 * size_t(pts[i])], 3 * sizeof(double));
-        std::memcpy(p1 + 3 * i, &s_.x1[3 * size_t(pts[i])], 3 * sizeof(double));
-      }
       ++out.candidates;
-      if (separated(kind, p0, p1, reach_)) {  // separate.h: certified, never a contact
-        ++out.by_stage[pred::STAGE_BOUNDS];
-        return;
+      if (paths_ && any_path(pts, n)) {
+        solve_paths(s_, kind, pts, n, local, r);  // paths.h: the general solver
+      } else {
+        double p0[12], p1[12];
+        for (int i = 0; i < n; ++i) {
+          std::memcpy(p0 + 3 * i, &s_.x0[3 * size_t(pts[i])], 3 * sizeof(double));
+          std::memcpy(p1 + 3 * i, &s_.x1[3 * size_t(pts[i])], 3 * sizeof(double));
+        }
+        if (separated(kind, p0, p1, reach_)) {  // separate.h: certified, never a contact
+          ++out.by_stage[pred::STAGE_BOUNDS];
+          return;
+        }
+        pred::solve_linear(kind, static_cast<size_t>(n), p0, p1, local, r);
       }
-      pred::solve_linear(kind, static_cast<size_t>(n), p0, p1, local, r);
       ++out.by_stage[r.stage >= 0 && r.stage < 5 ? r.stage : 0];
       if (r.collides) {
         if (opt_.mode == FIRST && r.hi < local.until) local.until = r.hi;
@@ -176,6 +185,10 @@ class Driver {
       case pred::VERTEX_EDGE: pts[0] = h.a; pts[1] = s.edges[h.b][0]; pts[2] = s.edges[h.b][1]; n = 3; break;
       default: pts[0] = h.a; pts[1] = h.b; n = 2; break;
     }
+    if (paths_ && any_path(pts, n)) {
+      solve_paths(s, h.kind, pts, n, o, h.r);
+      return;
+    }
     double p0[12], p1[12];
     for (int i = 0; i < n; ++i)
       for (int a = 0; a < 3; ++a) {
@@ -186,12 +199,18 @@ class Driver {
   }
 
  private:
+  bool any_path(const uint32_t *pts, int n) const {
+    for (int i = 0; i < n; ++i)
+      if (on_path(s_, pts[i])) return true;
+    return false;
+  }
   Box grown(const Box &b) const { return reach_ > 0 ? enclose::grow(b, reach_) : b; }
 
   const Step_set &s_;
   const Step_options &opt_;
   pred::Solve_options solve_;
   double reach_ = 0;
+  bool paths_ = false;  // some mesh has polynomial paths (paths.h)
   std::vector<Box> vb_, eb_;
   std::unique_ptr<Box_tree> used_, faces_, edges_, points_;
   size_t nu_ = 0, ne_ = 0, np_ = 0, total_ = 0;

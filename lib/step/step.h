@@ -3,7 +3,8 @@
 // the library's linear solver (pred/solve_linear.h, as pccd_solve_linear_d).
 //
 // Broad phase. Each vertex's straight path lies in the box of its two end positions
-// (doubles, exact). The boxes are taken in a frame translating with a common velocity
+// (doubles, exact); a polynomial path (paths.h) in the hull of its Bernstein
+// coefficients, and its pairs are solved by the general solver (pred::solve). The boxes are taken in a frame translating with a common velocity
 // u (the mean displacement, rounded to doubles): x(t) - u t. Contact depends only on
 // the distances between points at the same time, which such a frame keeps, so any u
 // is valid, and a mesh falling or sliding as a whole gets boxes of its deformation

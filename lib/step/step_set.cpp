@@ -111,6 +111,8 @@ size_t add_mesh(Step_set &s, const double *x0, const double *x1, size_t nv,
   for (uint32_t v = 0; v < nv; ++v)
     if (use[v]) s.used.push_back(v + r.v0);
   s.meshes.push_back(r);
+  s.ncoef.push_back(0);
+  s.coef.emplace_back();
   // Grow the pair matrix: the new mesh is checked against every mesh and itself.
   const size_t n = m + 1;
   std::vector<uint8_t> skip(n * n, 0);
@@ -120,7 +122,10 @@ size_t add_mesh(Step_set &s, const double *x0, const double *x1, size_t nv,
   return m;
 }
 
-void set_positions(Step_set &s, size_t m, const double *x0, const double *x1, size_t nv) {
+namespace {
+
+// Mesh m of the set, with nv its vertex count (Input_error otherwise).
+const Mesh_range &mesh_of(const Step_set &s, size_t m, size_t nv) {
   if (m >= s.meshes.size())
     throw Input_error("mesh: " + std::to_string(m) + " out of range (" + std::to_string(s.meshes.size()) +
                       " meshes)");
@@ -128,9 +133,40 @@ void set_positions(Step_set &s, size_t m, const double *x0, const double *x1, si
   if (nv != r.nv)
     throw Input_error("nv: " + std::to_string(nv) + " vertices given, mesh " + std::to_string(m) + " has " +
                       std::to_string(r.nv));
+  return r;
+}
+
+}  // namespace
+
+void set_positions(Step_set &s, size_t m, const double *x0, const double *x1, size_t nv) {
+  const Mesh_range &r = mesh_of(s, m, nv);
   check_positions(x0, x1, nv);
   std::copy(x0, x0 + 3 * nv, s.x0.begin() + 3 * size_t(r.v0));
   std::copy(x1, x1 + 3 * nv, s.x1.begin() + 3 * size_t(r.v0));
+  s.ncoef[m] = 0;
+  s.coef[m].clear();
+}
+
+void set_paths(Step_set &s, size_t m, const double *coef, size_t ncoef, size_t nv) {
+  const Mesh_range &r = mesh_of(s, m, nv);
+  if (ncoef < 1 || ncoef > kMax_path_coefficients)
+    throw Input_error("ncoeffs: " + std::to_string(ncoef) + " is outside 1.." +
+                      std::to_string(kMax_path_coefficients) + " (degree 0 to " +
+                      std::to_string(kMax_path_coefficients - 1) + ")");
+  if (nv && !coef) throw Input_error("coeffs: is NULL");
+  for (size_t i = 0; i < 3 * nv * ncoef; ++i)
+    if (!std::isfinite(coef[i]))
+      arith::rational_from_double(coef[i], at("coeffs", i / (3 * nv)) + "[" + std::to_string(i / 3 % nv) + "][" +
+                                               std::to_string(i % 3) + "]");
+  for (size_t i = 0; i < nv; ++i)
+    for (size_t a = 0; a < 3; ++a) {
+      double end = 0;  // x(1), rounded: the broad phase's frame velocity only
+      for (size_t k = 0; k < ncoef; ++k) end += coef[(k * nv + i) * 3 + a];
+      s.x0[3 * (r.v0 + i) + a] = coef[i * 3 + a];
+      s.x1[3 * (r.v0 + i) + a] = std::isfinite(end) ? end : coef[i * 3 + a];
+    }
+  s.coef[m].assign(coef, coef + 3 * nv * ncoef);
+  s.ncoef[m] = static_cast<uint32_t>(ncoef);
 }
 
 void set_pair_check(Step_set &s, size_t i, size_t j, bool check) {

@@ -40,6 +40,17 @@ struct Step_set {
   std::vector<uint32_t> used;                  // vertices of some face, edge or point
   std::vector<Mesh_range> meshes;
   std::vector<uint8_t> skip;                   // skip[i * n + j]: pair (i, j) unchecked
+  // Polynomial paths (set_paths): mesh m's vertex i (its own index) at t is
+  // sum_k coef[m][(k * nv + i) * 3 + a] t^k, ncoef[m] coefficients (power basis, doubles
+  // at their exact values); ncoef[m] == 0: straight paths x0 -> x1. For a mesh with
+  // paths, x0 holds x(0) and x1 x(1) rounded to doubles (the broad phase's frame only).
+  std::vector<uint32_t> ncoef;
+  std::vector<std::vector<double>> coef;
+  bool has_paths() const {
+    for (uint32_t n : ncoef)
+      if (n) return true;
+    return false;
+  }
 
   bool checked(uint32_t i, uint32_t j) const { return !skip[size_t(i) * meshes.size() + j]; }
 };
@@ -58,6 +69,13 @@ size_t add_mesh(Step_set &s, const double *x0, const double *x1, size_t nv,
 
 // Replaces the positions of mesh m (nv must be its vertex count), checked as add_mesh.
 void set_positions(Step_set &s, size_t m, const double *x0, const double *x1, size_t nv);
+
+// Gives mesh m polynomial paths: coef holds ncoef coefficients of its nv vertices
+// (layout of Step_set::coef, (ncoef, nv, 3)), 1 <= ncoef <= kMax_path_coefficients.
+// Input_error naming the place ("coeffs[2][4][1]: NaN ...", "ncoeffs", "nv", "mesh");
+// the set is unchanged on error. set_positions makes the paths straight again.
+constexpr size_t kMax_path_coefficients = 8;
+void set_paths(Step_set &s, size_t m, const double *coef, size_t ncoef, size_t nv);
 
 // Sets whether the mesh pair (i, j) is checked (i == j: self-collision of mesh i).
 void set_pair_check(Step_set &s, size_t i, size_t j, bool check);

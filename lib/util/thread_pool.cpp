@@ -2,6 +2,8 @@
 
 #include <cfenv>
 
+#include "util/rounding.h"
+
 namespace pccd::util {
 
 unsigned usable_threads(unsigned requested) {
@@ -58,9 +60,10 @@ void Thread_pool::work() {
       seen = generation_;
       ++busy_;
     }
-    if (std::fegetround() != round_) std::fesetround(round_);  // round_ set under mu_
     {
-      const Budget_scope scope(budget_);  // the caller's work limits (budget_ set under mu_)
+      // The caller's rounding and work limits (round_, nearest_, budget_ set under mu_).
+      const Adopted_rounding rounding(round_, nearest_);
+      const Budget_scope scope(budget_);
       run_items();
     }
     std::lock_guard<std::mutex> lock(mu_);
@@ -80,6 +83,7 @@ void Thread_pool::parallel_for(size_t n, const std::function<void(size_t)> &fn) 
     fn_ = &fn;
     n_ = n;
     round_ = std::fegetround();
+    nearest_ = nearest_mode();
     budget_ = current_budget();
     next_ = finished_ = 0;
     error_ = nullptr;

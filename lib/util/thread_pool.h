@@ -30,7 +30,7 @@ class Thread_pool {
 
   // Runs fn(i) for i in [0, n), in parallel; returns when all are done. The first
   // exception thrown by any fn is rethrown here (the others are dropped). Every fn(i)
-  // runs in the caller's rounding mode and under the caller's work budget
+  // runs in the caller's rounding (mode and flag, rounding.h) and under the caller's work budget
   // (work_budget.h; the workers take both on before each loop), so results never
   // depend on which thread ran an item.
   void parallel_for(size_t n, const std::function<void(size_t)> &fn);
@@ -43,7 +43,8 @@ class Thread_pool {
   void run_items();
 
   std::vector<std::thread> workers_;
-  int round_ = 0;  // the caller's rounding mode (fegetround) for the current loop
+  int round_ = 0;         // the caller's rounding mode (fegetround) for the current loop
+  bool nearest_ = false;  // and its rounding flag (util/rounding.h)
   Work_budget *budget_ = nullptr;  // the caller's budget for the current loop
   std::mutex mu_;
   std::condition_variable start_, done_;

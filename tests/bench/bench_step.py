@@ -22,6 +22,12 @@ first contact time (polyccd), each step size, candidate pairs (polyccd: pairs wh
 swept boxes met and were solved; ipctk: Candidates.build with the same inflation), and
 TI's false positives: ipctk reports a contact (step size < 1, or not collision free)
 where the exact answer has none.
+
+Then a rigid MuJoCo scene (tests/bench/tunnel_scene.py; --no-tunnel skips it): a fast
+spinning box shot through a thin plate, which MuJoCo's discrete contacts let tunnel;
+each step's poses become exact polyccd motions (Motion.between) checked by
+polyccd.check: MuJoCo's contact count, the step polyccd reports, its first time and
+pair, and polyccd's time per step (the minimum over --repeat runs of all steps).
 """
 import argparse
 import json
@@ -123,6 +129,24 @@ def table(rows, threads):
     return "\n".join(lines)
 
 
+def tunnel(repeat):
+    """The rigid tunnelling scene's table (tunnel_scene.py)."""
+    import tunnel_scene
+    poses, contacts = tunnel_scene.simulate()
+    ms, steps = best_time(lambda: tunnel_scene.polyccd_steps(poses), repeat)
+    hits = [(k, r) for k, r in steps if r.collides]
+    lines = ["| scene | steps | MuJoCo contacts | polyccd steps with a contact | first: step, t*, pair "
+             "| polyccd ms per step |", "|---|---|---|---|---|---|"]
+    first = "-"
+    if hits:
+        k, r = hits[0]
+        c = r.pairs[0].contacts[0]
+        first = f"{k}, {float(r.first_contact.lo):.9f}, bullet {c.a[0]} {c.a[1]} / plate {c.b[0]} {c.b[1]}"
+    lines.append(f"| bullet through a 1 cm plate, 30 m/s, 5 ms steps | {len(steps)} | {sum(contacts)} | "
+                 f"{[k for k, _ in hits]} | {first} | {ms / len(steps):.3f} |")
+    return "\n".join(lines)
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--sizes", default="32,64,224@64",
@@ -132,6 +156,7 @@ def main(argv=None):
     ap.add_argument("--threads", default="1,2")
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--json", help="write the rows here")
+    ap.add_argument("--no-tunnel", action="store_true", help="skip the rigid MuJoCo tunnelling scene")
     a = ap.parse_args(argv)
     threads = [int(x) for x in a.threads.split(",")]
     import ipctk
@@ -156,6 +181,9 @@ def main(argv=None):
                 print(table([row], threads).splitlines()[-1], flush=True)
     print()
     print(table(rows, threads))
+    if not a.no_tunnel:
+        print()
+        print(tunnel(a.repeat))
     if a.json:
         Path(a.json).write_text(json.dumps(rows, indent=1))
 

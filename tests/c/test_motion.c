@@ -184,6 +184,14 @@ static void error_paths(void)
   FAILS(pccd_motion_set_axis_rotation_s(m, zero3, zero3, "0", "1"), PCCD_EINVAL, "axis: the direction is the zero vector");
   FAILS(pccd_motion_set_axis_rotation_s(m, e1, zero3, "0", "x"), PCCD_EINVAL, "tau1: \"x\"");
   FAILS(pccd_motion_set_screw_s(m, e1, zero3, "0", "1", NULL), PCCD_EINVAL, "advance: is NULL");
+  /* Several bad arguments: the first one is named (conversions run in argument order). */
+  FAILS(pccd_motion_set_linear_translation_s(m, bad3, bad3), PCCD_EINVAL, "_s: p0[1]: ");
+  FAILS(pccd_motion_set_hermite_translation_s(m, bad3, zero3, zero3, NULL), PCCD_EINVAL, "_s: p0[1]: ");
+  FAILS(pccd_motion_set_hermite_translation_s(m, zero3, bad3, bad3, bad3), PCCD_EINVAL, "_s: v0[1]: ");
+  FAILS(pccd_motion_set_axis_rotation_s(m, bad3, bad3, "x", "x"), PCCD_EINVAL, "_s: axis[1]: ");
+  FAILS(pccd_motion_set_axis_rotation_s(m, e1, zero3, "x", "x"), PCCD_EINVAL, "_s: tau0: ");
+  FAILS(pccd_motion_set_screw_s(m, e1, bad3, "x", "x", "x"), PCCD_EINVAL, "_s: center[1]: ");
+  FAILS(pccd_motion_set_screw_s(m, e1, zero3, "0", "x", "x"), PCCD_EINVAL, "_s: tau1: ");
   FAILS(pccd_motion_compose_pose_s(m, 2, one_q, zero3), PCCD_EINVAL, "side: 2 is not");
   FAILS(pccd_motion_compose_pose_s(m, PCCD_POSE_WORLD, zero_q, zero3), PCCD_EINVAL, "quat: the zero quaternion");
   FAILS(pccd_motion_compose_pose_s(m, PCCD_POSE_BODY, one_q, bad3), PCCD_EINVAL, "pccd_motion_compose_pose_s: offset[1]: ");

@@ -1,7 +1,8 @@
 /*
  * test_step.c -- whole steps of deforming meshes through the C API (pccd_step_*): a
  * vertex falling through a face at t = 1/2 (its exact time, step size, contact arrays,
- * all three modes), a pair check that removes it, and the error paths with their places.
+ * all three modes), the same particle on a parabola (pccd_step_set_paths_d: z = 1 - 4 t^2,
+ * also t = 1/2), a pair check that removes it, and the error paths with their places.
  * The exhaustive comparison with brute force is tests/test_step.py.
  *
  * Plain C99 (built with -std=c99 -Wall -Wextra -Werror). Every handle is freed.
@@ -55,6 +56,31 @@ static void cases(void)
     CHECK(lo == 0.5 && hi == 0.5 && exact == 1);
     OK(pccd_step_report_time(rep, 2, buf, sizeof buf, NULL));
     CHECK(strcmp(buf, "1/2") == 0);
+    OK(pccd_step_report_stepsize(rep, &step));
+    CHECK(step == 0.5);
+  }
+  /* Polynomial paths: particle 3 on z = 1 - 4 t^2 meets the face at t = 1/2. */
+  {
+    double coef[3 * 12] = {0};
+    memcpy(coef, kV0, sizeof kV0);
+    coef[2 * 12 + 3 * 3 + 2] = -4;
+    g_case = "step paths";
+    opt.mode = PCCD_STEP_FIRST;
+    opt.threads = 1;
+    OK(pccd_step_set_paths_d(s, 0, coef, 3, 4));
+    OK(pccd_step_solve(s, NULL, &opt, rep));
+    OK(pccd_step_report_stepsize(rep, &step));
+    OK(pccd_step_report_time(rep, 2, buf, sizeof buf, NULL));
+    CHECK(step == 0.5 && strcmp(buf, "1/2") == 0);
+    FAILS(pccd_step_set_paths_d(s, 0, coef, 9, 4), PCCD_EINVAL, "ncoeffs: 9 is outside 1..8");
+    FAILS(pccd_step_set_paths_d(s, 0, coef, 0, 4), PCCD_EINVAL, "ncoeffs: 0");
+    FAILS(pccd_step_set_paths_d(s, 1, coef, 3, 4), PCCD_EINVAL, "mesh: 1 out of range (1 meshes)");
+    FAILS(pccd_step_set_paths_d(s, 0, NULL, 3, 4), PCCD_EINVAL, "coeffs: is NULL");
+    coef[1 * 12 + 2 * 3 + 1] = coef[1 * 12 + 2 * 3 + 1] / 0.0 * 0.0;  /* NaN */
+    FAILS(pccd_step_set_paths_d(s, 0, coef, 3, 4), PCCD_EINVAL, "coeffs[1][2][1]");
+    /* Straight again: the first answer. */
+    OK(pccd_step_set_positions_d(s, 0, kV0, kV1, 4));
+    OK(pccd_step_solve(s, NULL, &opt, rep));
     OK(pccd_step_report_stepsize(rep, &step));
     CHECK(step == 0.5);
   }

@@ -34,7 +34,7 @@ static poly::Poly<Rational> parse_poly(const std::string &s) {
 
 int main() {
   std::string line;
-  arith::Nearest_scope nearest;
+  util::Round_to_nearest nearest;  // as a C call runs
   while (std::getline(std::cin, line)) {
     if (line.empty()) continue;
     auto parts = split(line, '|');

@@ -30,19 +30,19 @@ _check_version()
 
 from ._errors import Error, InputError, InternalError, LimitError  # noqa: E402
 from ._results import KINDS, Answers, ContactTime, Feature, Result, answers  # noqa: E402
-from ._solve import collides_linear, solve, solve_linear  # noqa: E402
+from ._solve import collides_linear, kind_points, solve, solve_linear  # noqa: E402
 from ._batch import LinearBatch, solve_linear_many  # noqa: E402
 from ._motion import Motion  # noqa: E402
 from ._body import Mesh, Spheres  # noqa: E402
 from ._scene import BROAD_PHASES, Body, Contact, PairResult, SceneResult  # noqa: E402
 from ._scene import check_scene as check  # noqa: E402
 from ._index import Index  # noqa: E402
-from ._limits import Cancel, Limits  # noqa: E402
+from ._limits import Cancel, Limits, usable_threads  # noqa: E402
 from ._chain import Chain  # noqa: E402
 from ._contact import ContactGeometry  # noqa: E402
 from ._step import StepContacts, StepResult, check_step, collision_free_stepsize  # noqa: E402
 
-__all__ = ["__version__", "KINDS", "BROAD_PHASES", "solve", "solve_linear", "collides_linear",
+__all__ = ["__version__", "KINDS", "BROAD_PHASES", "kind_points", "usable_threads", "solve", "solve_linear", "collides_linear",
            "solve_linear_many",
            "LinearBatch", "Result", "Answers", "answers",
            "ContactTime", "Feature", "Motion", "Chain", "Mesh", "Spheres", "Body", "check",

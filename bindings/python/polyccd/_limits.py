@@ -133,16 +133,26 @@ _unlimited = threading.local()
 _MAX_THREADS = getattr(lib, "PCCD_MAX_THREADS", 1024)
 
 
-def thread_count(threads):
+def thread_count(threads, place="opt.threads"):
     """opt.threads (a C unsigned) of a Python int: a conversion. Which counts are valid
     is the C library's rule (1..PCCD_MAX_THREADS, "opt.threads: 0 is outside 1..1024");
     the ints an unsigned cannot hold (negative, >= 2^32) never reach C, so they are
     refused here in the same words."""
     if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
-        raise InputError(f"opt.threads: expected an integer, got {show(threads)}")
+        raise InputError(f"{place}: expected an integer, got {show(threads)}")
     if not 0 <= threads <= 0xFFFFFFFF:
-        raise InputError(f"opt.threads: {int(threads)} is outside 1..{_MAX_THREADS}")
+        raise InputError(f"{place}: {int(threads)} is outside 1..{_MAX_THREADS}")
     return int(threads)
+
+
+def usable_threads(requested: int) -> int:
+    """How many worker threads a call asking for `requested` starts on this machine:
+    min(requested, the hardware's thread count), at least 1 (pccd_threads_usable; no
+    answer depends on the count). InputError when requested is outside
+    1..PCCD_MAX_THREADS (1024), in the C library's words."""
+    out = ffi.new("unsigned *")
+    check(lib.pccd_threads_usable(thread_count(requested, "requested"), out))
+    return int(out[0])
 
 
 def warn_threads(threads, place="threads"):

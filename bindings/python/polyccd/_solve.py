@@ -42,6 +42,14 @@ def npoints(kind):
     return _NPOINTS[kind]
 
 
+def kind_points(kind: str) -> int:
+    """Number of points of a query of this kind: 4 for "vertex-face" and "edge-edge",
+    3 for "vertex-edge", 2 for "vertex-vertex" and "sphere-sphere" (pccd_kind_points).
+    InputError for a name not in polyccd.KINDS."""
+    kind_code(kind)  # InputError naming the kinds
+    return _NPOINTS[kind]
+
+
 def kind_code(kind):
     """The pccd_kind of a kind name, or InputError (a conversion: which kinds a call
     takes is the C library's rule, e.g. the linear calls refuse sphere-sphere)."""

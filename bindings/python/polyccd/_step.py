@@ -1,6 +1,7 @@
 """Whole simulator steps of deforming meshes (pccd_step_*): check_step and
 collision_free_stepsize. Vertices move on straight paths from V0 (t = 0) to V1 (t = 1),
-float64 arrays taken at their exact values; every answer comes from the C library."""
+or on polynomial paths (paths=: power-basis coefficients), float64 arrays taken at their
+exact values; every answer comes from the C library."""
 import threading
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -194,14 +195,23 @@ def _edges(step, nmeshes):
     return tuple(out)
 
 
+def _paths(paths, V0, V1):
+    """float64 (k, n, 3) coefficients of paths= (C: coeffs), with V0 and V1 None."""
+    if V0 is not None or V1 is not None:
+        raise InputError("paths: give V0 and V1 as None with paths (the paths replace them)")
+    return _float64_array(paths, "coeffs", "(k, n, 3)", lambda s: len(s) == 3 and s[2] == 3 and s[0] >= 1)
+
+
 def _solve(V0, V1, faces, edges, points, obstacles, min_distance, mode, threads, limits,
-           time_tolerance="1e-12"):
-    if threads is None:
-        threads = 1
-    if not isinstance(threads, int) or isinstance(threads, bool) or not 1 <= threads <= 1024:
-        raise InputError(f"opt.threads: {threads!r} is outside 1..1024")
+           time_tolerance="1e-12", paths=None):
+    threads = _limits.thread_count(1 if threads is None else threads)  # C checks the range
     _limits.warn_threads(threads)
+    c = None if paths is None else _paths(paths, V0, V1)
+    if c is not None:
+        V0 = V1 = c[0]  # the topology's mesh; its paths are set below
     step, nmeshes = _build(V0, V1, faces, edges, points, obstacles)
+    if c is not None:
+        check(lib.pccd_step_set_paths_d(step, 0, ffi.from_buffer("double[]", c), c.shape[0], c.shape[1]))
     cfg, _keep = _config(time_tolerance, True, True, limits,
                          None if not min_distance else min_distance)
     opt = ffi.new("pccd_step_options *")
@@ -216,7 +226,7 @@ def check_step(V0: Points, V1: Points, faces: Indices, edges: Optional[Indices] 
                points: Optional[Sequence[int]] = None, obstacles: Sequence[tuple] = (),
                min_distance: Number = 0, first_contact: bool = True,
                threads: Optional[int] = None, limits: Optional[_limits.Limits] = None,
-               all_contacts: bool = False) -> StepResult:
+               all_contacts: bool = False, paths: Optional[np.ndarray] = None) -> StepResult:
     """Checks one simulator step exactly: vertex i moves on a straight path from V0[i]
     (t = 0) to V1[i] (t = 1), float64 (n, 3) arrays at their exact values; faces (m, 3)
     and edges (k, 2) are vertex indices (edges=None: the sides of the faces), points
@@ -227,11 +237,14 @@ def check_step(V0: Points, V1: Points, faces: Indices, edges: Optional[Indices] 
     within that distance as touching. first_contact=False only decides whether
     anything touches (cheaper: it stops at the first contacts found); all_contacts=True
     reports every touching pair with its own first time. threads (default 1) never
-    changes an answer. Errors name V0, V1 as v_t0, v_t1 (the C arguments), e.g.
-    "obstacles[0].v_t1[4][2]: NaN is not a finite number". Returns a StepResult."""
+    changes an answer. paths (with V0 = V1 = None): polynomial paths instead, float64
+    coefficients of shape (k, n, 3), vertex i at sum_j paths[j, i] t^j (1 <= k <= 8),
+    solved by the general exact solver. Errors name V0, V1, paths as v_t0, v_t1, coeffs
+    (the C arguments), e.g. "obstacles[0].v_t1[4][2]: NaN is not a finite number".
+    Returns a StepResult."""
     mode = 2 if all_contacts else (0 if first_contact else 1)
     step, nmeshes, rep = _solve(V0, V1, faces, edges, points, obstacles, min_distance, mode,
-                                threads, limits)
+                                threads, limits, paths=paths)
     hit = ffi.new("int *")
     check(lib.pccd_step_report_collides(rep, hit))
     stats = ffi.new("pccd_step_stats *")
@@ -250,15 +263,17 @@ def check_step(V0: Points, V1: Points, faces: Indices, edges: Optional[Indices] 
 def collision_free_stepsize(V0: Points, V1: Points, faces: Indices, edges: Optional[Indices] = None,
                             *, points: Optional[Sequence[int]] = None, obstacles: Sequence[tuple] = (),
                             min_distance: Number = 0, threads: Optional[int] = None,
-                            limits: Optional[_limits.Limits] = None) -> float:
+                            limits: Optional[_limits.Limits] = None,
+                            paths: Optional[np.ndarray] = None) -> float:
     """The largest double s <= t*, the exact first contact time of the step V0 -> V1
     (check_step), 1.0 when nothing touches: moving every vertex to V0 + s (V1 - V0) is
     free of contact at every time before s. Unlike ipctk's compute_collision_free_stepsize,
     whose value is a conservative fraction of Tight Inclusion's time (with its
     tolerance, it may stop well short of the contact, or report a contact that is a near
     miss), this is the exact time rounded down to a double; a caller that wants a gap
-    scales it (e.g. 0.8 s), or asks for a min_distance."""
-    _, _, rep = _solve(V0, V1, faces, edges, points, obstacles, min_distance, 0, threads, limits)
+    scales it (e.g. 0.8 s), or asks for a min_distance. paths: as check_step."""
+    _, _, rep = _solve(V0, V1, faces, edges, points, obstacles, min_distance, 0, threads, limits,
+                       paths=paths)
     s = ffi.new("double *")
     check(lib.pccd_step_report_stepsize(rep, s))
     return s[0]

@@ -4,10 +4,9 @@ import glob
 from fractions import Fraction
 from pathlib import Path
 
-from .. import Error, InputError
+from .. import Error, InputError, solve
 from .. import check as check_scene
-from .._numbers import exact_fraction, ratio_text  # number texts: no public twin yet
-from .._solve import solve_query                    # a query from lists: no public twin
+from ..texts import exact_fraction, ratio_text
 from ._json import SceneNotSupported, load, query_case
 from ._scene_file import scene_from_doc
 
@@ -33,9 +32,9 @@ def files_under(paths, pattern):
 
 def solve_case(case, limits=None):
     """The Result of a validated QueryCase (its time tolerance applies)."""
-    return solve_query(case.kind, case.points, case.radii,
-                       case.time_tolerance or DEFAULT_TOLERANCE, True, True, limits,
-                       case.min_distance)
+    return solve(case.kind, case.points, case.radii,
+                 time_tolerance=case.time_tolerance or DEFAULT_TOLERANCE, limits=limits,
+                 min_distance=case.min_distance)
 
 
 def _text(x):

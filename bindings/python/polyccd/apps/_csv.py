@@ -15,8 +15,7 @@ from typing import Dict, List
 import numpy as np
 
 from .. import InputError, LimitError
-from .._numbers import int_from_text, ratio_text, show
-from .._pccd import lib
+from ..texts import MAX_NUMBER_CHARS, int_from_text, ratio_text, show
 
 CSV_KINDS = ("vertex-face", "edge-edge")
 POINTS = 4  # both kinds: v, f0, f1, f2 or a0, a1, b0, b1
@@ -64,9 +63,9 @@ def _integer(text, line, column):
     if not _INTEGER.fullmatch(text):
         raise InputError(f"line {line}, column {column}: expected an integer (ASCII digits), "
                          f"got {show(text)}")
-    if len(text) > lib.PCCD_MAX_NUMBER_CHARS:
+    if len(text) > MAX_NUMBER_CHARS:
         raise LimitError(f"line {line}, column {column}: an integer of {len(text)} characters is "
-                         f"longer than the limit {lib.PCCD_MAX_NUMBER_CHARS}")
+                         f"longer than the limit {MAX_NUMBER_CHARS}")
     return int_from_text(text)
 
 

@@ -4,7 +4,7 @@ import os
 from fractions import Fraction
 from pathlib import Path
 
-from .._numbers import ratio_text
+from ..texts import ratio_text
 from .. import solve
 
 # A static triangle in the plane z = 0 (used by the vertex-face cases).

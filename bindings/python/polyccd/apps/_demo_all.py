@@ -3,7 +3,7 @@ arm, the simulator step, the degenerate primitive cases and the shared benchmark
 in that order. Without the `demo` extra (trimesh, gemmi, matplotlib) the real scenes and
 the robot are skipped with a message naming the extra; the rest runs on numpy alone."""
 from .. import __version__
-from .._extras import need
+from ..extras import need
 from ._demo import query_dir, run_cases
 
 OK, FAILED = 0, 1  # the command line's exit codes (cli.py)

@@ -5,7 +5,7 @@ import time
 from pathlib import Path
 
 from ._demo_scenes import ligand_scene, mechanical_scene
-from .._numbers import ratio_text
+from ..texts import ratio_text
 from ._render import _float_pose, render_scene
 
 

@@ -9,7 +9,7 @@ red points, touching triangles and balls red faces.
 """
 import numpy as np
 
-from .._extras import need
+from ..extras import need
 
 from ._draw_geometry import BODY_COLORS, HIGHLIGHT, _arrays, _contacts, _edges_of, _float_pose, _parts
 

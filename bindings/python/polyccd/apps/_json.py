@@ -11,8 +11,8 @@ from fractions import Fraction
 from typing import List, Optional, Tuple, Union
 
 from .. import KINDS, InputError
-from .._numbers import exact_fraction, ratio_text, show  # number texts: no public twin yet
-from .._solve import npoints
+from ..texts import exact_fraction, ratio_text, show
+from .. import kind_points
 from ._reading import read_bytes, tick
 
 QUERY_FORMAT = "polyccd-query/1"
@@ -219,7 +219,7 @@ def query_case(doc):
     if kind not in KINDS:
         got = "missing" if "kind" not in top else describe(kind)
         raise InputError(f"kind: expected one of {', '.join(KINDS)}, got {got}")
-    n = npoints(kind)
+    n = kind_points(kind)
     if "points" not in top:
         raise InputError(f"points: missing ({kind} queries have {n} point trajectories)")
     trajs = _list_at(top["points"], "points", f"{n} point trajectories ({kind})", n)

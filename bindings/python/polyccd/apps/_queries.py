@@ -6,8 +6,7 @@ from typing import List, Tuple
 import numpy as np
 
 from ._csv import ROWS, kind_of, read_csv
-from .. import collides_linear
-from .._solve import solve_query
+from .. import collides_linear, solve
 
 
 @dataclass
@@ -43,7 +42,8 @@ def decide_all(qs):
     start = time.perf_counter()
     for i in range(len(answers)):
         if i in inexact:
-            answers[i] = solve_query(kind, inexact[i], None, None, False, False).collides
+            answers[i] = solve(kind, inexact[i], time_tolerance=None, want_time=False,
+                               want_exact=False).collides
         else:
             answers[i] = collides_linear(kind, t0[i], t1[i])
     return answers, time.perf_counter() - start

@@ -15,8 +15,7 @@ import threading
 import time
 from contextlib import contextmanager
 
-from .._errors import InputError, LimitError
-from .._limits import Limits
+from .. import InputError, LimitError, Limits
 
 DEFAULT_MAX_FILE_MB = 32
 max_file_bytes = DEFAULT_MAX_FILE_MB << 20  # the command line's --max-file-mb (0: none)

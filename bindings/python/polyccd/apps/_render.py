@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import InputError
-from .._extras import need
+from ..extras import need
 from ._files import replace_file
 from ._draw_geometry import (BODY_COLORS, HIGHLIGHT, _arrays, _clip_segments, _clip_to_box,
                              _contacts, _decimate, _edges_of, _float_pose, _parts, _shade, _time)

@@ -9,7 +9,7 @@ from typing import Optional
 import numpy as np
 
 from .. import Body, InputError, Mesh, Motion, Spheres
-from .._numbers import int_from_text, show
+from ..texts import int_from_text, show
 from ._json import (EXPECT_KEYS, SCENE_FORMAT, _expect_at, _list_at, _object_at, _string_at,
                     describe, known_keys, load, min_distance_option, number_at,
                     options_and_labels)

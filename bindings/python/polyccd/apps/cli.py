@@ -335,13 +335,14 @@ def _limits(args):
 
 
 def _threads(text):
+    """A thread count; the range is the library's rule (polyccd.usable_threads)."""
+    if not (text.isascii() and text.isdigit()):
+        raise argparse.ArgumentTypeError(f"expected an integer, got {text!r}")
     try:
-        n = int(text)
-    except ValueError:
-        n = 0
-    if not 1 <= n <= 1024:
-        raise argparse.ArgumentTypeError(f"expected an integer from 1 to 1024, got {text!r}")
-    return n
+        polyccd.usable_threads(int(text))
+    except InputError as e:
+        raise argparse.ArgumentTypeError(str(e).replace("requested: ", "", 1)) from None
+    return int(text)
 
 
 def _workers(text):
@@ -374,7 +375,8 @@ def parser():
     c = sub.add_parser("check", help="solve one scene or query file and print the JSON result "
                        "(several files: one JSON line per file, with \"file\")")
     c.add_argument("file", nargs="+", metavar="FILE.json")
-    c.add_argument("--threads", type=int, default=1, help="worker threads for scenes (default 1)")
+    c.add_argument("--threads", type=_threads, default=1,
+                   help="worker threads for scenes, 1 to 1024 (default 1)")
     c.add_argument("--decide", action="store_true",
                    help="scene files: decide mode (does anything touch on [0, 1]?), stopping "
                    "at the first pair found in contact; its first_contact is then an "
@@ -413,7 +415,8 @@ def parser():
                        "and a Panda arm past a thin plate with PNGs, illustrative primitive "
                        "answers, the benchmark summary")
     c.add_argument("--out", default="build/demo", help="folder of the PNGs (default build/demo)")
-    c.add_argument("--threads", type=int, default=2, help="worker threads (default 2)")
+    c.add_argument("--threads", type=_threads, default=2, help="worker threads, 1 to 1024 "
+                   "(default 2)")
     c.set_defaults(run=cmd_demo)
     return p
 
