@@ -582,6 +582,14 @@ PCCD_API int pccd_chain_set_value_place(pccd_chain *c, size_t k, const char *pla
  * On error every motions[k] is NULL. */
 PCCD_API int pccd_chain_segment_motions(const pccd_chain *c, const double *q0, const double *q1,
                                         size_t n, pccd_motion **motions);
+/* pccd_chain_segment_motions within the limits of cfg: the compositions (exact products
+ * whose numbers grow with the depth of the chain) end with PCCD_ELIMIT at max_seconds,
+ * max_work or cancel, and every link's motion is held to max_number_bits as soon as it
+ * is built ("motions[3].rotation[0][2]: a number of 17000 bits ..."), before its
+ * children are composed. On error every motions[k] is NULL. cfg NULL: no limits, as
+ * pccd_chain_segment_motions. */
+PCCD_API int pccd_chain_segment_motions_cfg(const pccd_chain *c, const double *q0, const double *q1,
+                                            size_t n, const pccd_config *cfg, pccd_motion **motions);
 
 /* The joint values at the rational time t in [0, 1] of the same segment, in doubles
  * (outputs, never decisions): a revolute joint's angle theta(t) = q0[k] + twice the angle
@@ -941,7 +949,9 @@ PCCD_API int pccd_robot_options_init(pccd_robot_options *opt);
  * PCCD_EINVAL: a rejected segment ("q1[3]: ..."), an obstacle motion whose quaternion
  * vanishes ("obstacles[1].motion: ..."), fewer than two bodies ("obstacles: nothing to
  * check ..."), bad options. PCCD_ELIMIT as pccd_scene_solve (input numbers: the bodies
- * as "bodies[k]", obstacles as "obstacles[k]"). On any error rep holds no answer. */
+ * as "bodies[k]", obstacles as "obstacles[k]", and the link motions, built only for the
+ * pairs the filter cannot clear, as "links[k].motion.rotation[0][2]" when built; the
+ * work limits hold inside their compositions). On any error rep holds no answer. */
 PCCD_API int pccd_robot_check(const pccd_robot *r, const double *q0, const double *q1, size_t n,
                               const pccd_body *const *obstacles, const pccd_motion *const *motions,
                               size_t n_obstacles, const pccd_config *cfg,

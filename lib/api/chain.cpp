@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "api/chain_handle.h"
+#include "api/config.h"
 #include "api/guard.h"
 #include "api/motion_handle.h"
 #include "motion/chain.h"
@@ -25,6 +26,41 @@ void check_segment(const pccd_chain *c, const double *q0, const double *q1, size
     require(q0, "q0");
     require(q1, "q1");
   }
+}
+
+// pccd_chain_segment_motions (cfg NULL: no limits) and pccd_chain_segment_motions_cfg:
+// the compositions run under the call's work limits, and every link's motion is held
+// to max_number_bits as soon as it is built ("motions[3].rotation[0][2]: ...").
+int segment_motions(const char *fn, const pccd_chain *c, const double *q0, const double *q1,
+                    size_t n, const pccd_config *cfg, pccd_motion **motions) {
+  return guard(fn, [&] {
+    check_segment(c, q0, q1, n);
+    if (n > 0) require(motions, "motions");
+    for (size_t k = 0; k < n; ++k) motions[k] = nullptr;
+    // the config's rules (struct_size, ...) as for any call; only its limits are used
+    const pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;
+    const pccd::motion::Link_check held = [&](size_t k, const pccd::motion::Rigid_motion &m) {
+      limits.check(pccd::api::biggest_in(m), place("motions", {k}) + ".");
+    };
+    const pccd::api::Call_budget budget(limits.work);
+    std::vector<pccd::motion::Mat3_poly> rn;
+    std::vector<pccd::motion::Rigid_motion> m =
+        c->c.segment_motions(q0, q1, &rn, nullptr, cfg && limits.max_number_bits ? &held : nullptr);
+    std::vector<pccd_motion *> made;
+    try {
+      // Valid by construction (Chain::segment_motions): their data skips the vanishing
+      // test, and takes the rotation numerator the composition computed.
+      for (size_t k = 0; k < m.size(); ++k) {
+        made.push_back(new pccd_motion(std::move(m[k]), true));
+        made.back()->rn = std::make_shared<const pccd::motion::Mat3_poly>(std::move(rn[k]));
+      }
+    } catch (...) {
+      for (pccd_motion *p : made) delete p;
+      throw;
+    }
+    for (size_t k = 0; k < n; ++k) motions[k] = made[k];
+    return PCCD_OK;
+  });
 }
 
 }  // namespace
@@ -68,27 +104,12 @@ PCCD_API int pccd_chain_set_value_place(pccd_chain *c, size_t k, const char *pla
 
 PCCD_API int pccd_chain_segment_motions(const pccd_chain *c, const double *q0, const double *q1,
                                         size_t n, pccd_motion **motions) {
-  return guard(__func__, [&] {
-    check_segment(c, q0, q1, n);
-    if (n > 0) require(motions, "motions");
-    for (size_t k = 0; k < n; ++k) motions[k] = nullptr;
-    std::vector<pccd::motion::Mat3_poly> rn;
-    std::vector<pccd::motion::Rigid_motion> m = c->c.segment_motions(q0, q1, &rn);
-    std::vector<pccd_motion *> made;
-    try {
-      // Valid by construction (Chain::segment_motions): their data skips the vanishing
-      // test, and takes the rotation numerator the composition computed.
-      for (size_t k = 0; k < m.size(); ++k) {
-        made.push_back(new pccd_motion(std::move(m[k]), true));
-        made.back()->rn = std::make_shared<const pccd::motion::Mat3_poly>(std::move(rn[k]));
-      }
-    } catch (...) {
-      for (pccd_motion *p : made) delete p;
-      throw;
-    }
-    for (size_t k = 0; k < n; ++k) motions[k] = made[k];
-    return PCCD_OK;
-  });
+  return segment_motions(__func__, c, q0, q1, n, nullptr, motions);
+}
+
+PCCD_API int pccd_chain_segment_motions_cfg(const pccd_chain *c, const double *q0, const double *q1,
+                                            size_t n, const pccd_config *cfg, pccd_motion **motions) {
+  return segment_motions(__func__, c, q0, q1, n, cfg, motions);
 }
 
 PCCD_API int pccd_chain_joint_values_s(const pccd_chain *c, const double *q0, const double *q1,

@@ -122,6 +122,10 @@ PCCD_API int pccd_robot_check(const pccd_robot *r, const double *q0, const doubl
       limits.check(pccd::api::biggest_of(obstacles[k], m), where + ".");
       obst.push_back(pccd::api::scene_body(obstacles[k], m));
     }
+    if (limits.max_number_bits)  // the link motions, built on demand (scene/robot.h)
+      ro.check_link = [&](size_t k, const pccd::motion::Rigid_motion &m) {
+        limits.check(pccd::api::biggest_in(m), pccd::api::place("links", {k}) + ".motion.");
+      };
     const pccd::api::Call_budget budget(limits.work);
     rep->r = pccd::scene::check_robot(r->m, q0, q1, obst, call.scene_options(), ro);
     rep->solved = true;

@@ -168,7 +168,8 @@ Rigid_motion Chain::joint_motion(size_t k, double q0, double q1) const {
 
 std::vector<Rigid_motion> Chain::segment_motions(const double *q0, const double *q1,
                                                 std::vector<Mat3_poly> *rn,
-                                                const std::vector<bool> *needed) const {
+                                                const std::vector<bool> *needed,
+                                                const Link_check *check) const {
   std::vector<Rigid_motion> out;
   out.reserve(links_.size());
   std::vector<Mat3_poly> local;
@@ -192,6 +193,7 @@ std::vector<Rigid_motion> Chain::segment_motions(const double *q0, const double 
     // so the composition needs no vanishing check. Links come after their parents.
     const long p = links_[k].parent;
     out.push_back(p < 0 ? std::move(j) : compose_valid(out[p], j, &R[p]));
+    if (check) (*check)(k, out.back());
     R.push_back(rotation_numerator(out.back().r));
   }
   return out;

@@ -32,6 +32,7 @@
 //  - joint values at a time t (outputs, never decisions): revolute theta0 plus twice
 //    the angle from (c0, s0 |a|) to (c(t), s(t) |a|), prismatic e(t) |a|, in doubles.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,11 @@ struct Joint_doubles {
 };
 Joint_doubles joint_doubles(const Chain_link &L, double q0, double q1);
 
+// Called with (k, link k's world motion) as soon as segment_motions has built it: a
+// caller's limit on the motions' numbers (api: config.max_number_bits) stops the
+// segment at the first link beyond it, before its children are composed.
+using Link_check = std::function<void(size_t, const Rigid_motion &)>;
+
 class Chain {
  public:
   // Appends a link; returns its index. Input_error naming "parent", "joint",
@@ -80,9 +86,12 @@ class Chain {
   // needed: when given (one flag per link), only the needed links' motions and their
   // ancestors' are built; the others are left as the identity (a robot check builds
   // the motions of the links its filter cannot clear: scene/robot.h).
+  // check: when given, called on every link built (Link_check). The products are
+  // counted by cost (poly.h), so the calling thread's work limits hold inside.
   std::vector<Rigid_motion> segment_motions(const double *q0, const double *q1,
                                             std::vector<Mat3_poly> *rn = nullptr,
-                                            const std::vector<bool> *needed = nullptr) const;
+                                            const std::vector<bool> *needed = nullptr,
+                                            const Link_check *check = nullptr) const;
   // Input_error as segment_motions for a segment it would reject, without building.
   void check_segment(const double *q0, const double *q1) const;
   // The joint values at time t in [0, 1] of the same segment (as above; fixed: 0).

@@ -128,6 +128,11 @@ Poly<NT> operator*(const Poly<NT> &a, const Poly<NT> &b) {
 // at every step; in integers one reduction at the end gives the same number.
 template <>
 Rational Poly<Rational>::eval(const Rational &t) const;
+// The values at t of ps[0..count) over one common denominator, NOT reduced:
+// ps[k](t) = (*num)[k] / *den exactly (den > 0; an empty polynomial gives 0). Counted
+// by cost like eval (rational_product.cpp); the caller reduces once what it computes.
+void eval_common(const Poly<Rational> *const *ps, size_t count, const Rational &t,
+                 std::vector<arith::Integer> *num, arith::Integer *den);
 
 // Exact products in integers (rational_product.cpp): the generic loop above reduces a
 // fraction at every product and sum, and those gcds dominated the motion layer's work.

@@ -9,6 +9,7 @@
 //
 // Both count their work by cost (util::work_cost: a row of the convolution, a Horner
 // step, a reduction), so a limit is checked between any two of them whatever the sizes.
+#include "poly/lowest_terms.h"
 #include "poly/poly.h"
 
 namespace pccd::poly {
@@ -54,10 +55,7 @@ Poly<Rational> operator*(const Poly<Rational> &a, const Poly<Rational> &b) {
   std::vector<Rational> out(r.size());
   for (size_t k = 0; k < r.size(); ++k) {
     out[k] = Rational(r[k], l);
-    if (l != 1) {
-      util::work_cost([&] { return limbs(r[k]) * limbs(l); });  // the gcd
-      out[k].canonicalize();
-    }
+    if (l != 1) lowest_terms(out[k]);  // the gcd, counted and within the time limit
   }
   return Poly<Rational>(std::move(out));
 }
@@ -79,10 +77,49 @@ Rational Poly<Rational>::eval(const Rational &t) const {
     v *= p;
     v += C[i] * qpow;
   }
-  Rational out(v, L * qpow);
-  util::work_cost([&] { return limbs(v) * (limbs(L) + limbs(qpow)); });
-  out.canonicalize();
-  return out;
+  util::work_cost([&] { return limbs(L) * limbs(qpow); });
+  return lowest_terms(v, L * qpow);  // the gcd, counted and within the time limit
+}
+
+void eval_common(const Poly<Rational> *const *ps, size_t count, const Rational &t,
+                 std::vector<arith::Integer> *num, arith::Integer *den) {
+  // L the lcm of every denominator, n the largest degree, t = p / q: each value is
+  // (sum C_i p^i q^(n-i)) / (L q^n) with C_i = c_i L, the sum by Horner's rule in p
+  // over the powers of q.
+  arith::Integer L = 1;
+  size_t n = 0;
+  for (size_t k = 0; k < count; ++k) {
+    for (const Rational &x : ps[k]->c) {
+      util::work_cost([&] { return limbs(L) * limbs(x); });
+      mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t());
+    }
+    if (!ps[k]->c.empty()) n = std::max(n, ps[k]->c.size() - 1);
+  }
+  const arith::Integer &p = t.get_num(), &q = t.get_den();
+  std::vector<arith::Integer> qpow(n + 1);
+  qpow[0] = 1;
+  for (size_t i = 1; i <= n; ++i) {
+    util::work_cost([&] { return limbs(qpow[i - 1]) * limbs(q); });
+    qpow[i] = qpow[i - 1] * q;
+  }
+  num->assign(count, arith::Integer(0));
+  for (size_t k = 0; k < count; ++k) {
+    const std::vector<Rational> &c = ps[k]->c;
+    if (c.empty()) continue;
+    const size_t d = c.size() - 1;
+    arith::Integer &v = (*num)[k], C;
+    for (size_t i = d + 1; i-- > 0;) {
+      util::work_cost([&] { return limbs(v) * limbs(p) + (limbs(L) + limbs(c[i])) * limbs(qpow[d - i]); });
+      mpz_divexact(C.get_mpz_t(), L.get_mpz_t(), c[i].get_den_mpz_t());
+      C *= c[i].get_num();
+      v *= p;
+      v += C * qpow[d - i];
+    }
+    util::work_cost([&] { return limbs(v) * limbs(qpow[n - d]); });
+    v *= qpow[n - d];
+  }
+  util::work_cost([&] { return limbs(L) * limbs(qpow[n]); });
+  *den = L * qpow[n];
 }
 
 }  // namespace pccd::poly

@@ -188,7 +188,8 @@ void map_back(Scene_report &rep, const Window &w) {
 // The exact solve of the pairs left (scene.h, solve_planned), the exact motions of their
 // links built on the first demand (over the window when it is on: obstacles stationary).
 Scene_report solve_exact(const Robot_model &r, const double *q0, const double *q1, const std::vector<Moving_body> &obst,
-                         std::vector<Pair_plan> plans, const Scene_options &opt, const Window &win = {}) {
+                         std::vector<Pair_plan> plans, const Scene_options &opt, const Robot_options &ro,
+                         const Window &win = {}) {
   const size_t nr = r.bodies.size();
   std::vector<bool> needed(r.chain.size(), false);
   for (Pair_plan &p : plans) {
@@ -205,7 +206,8 @@ Scene_report solve_exact(const Robot_model &r, const double *q0, const double *q
     if (k >= nr) return obst[k - nr];
     if (!robot_mb[k]) {
       if (!built) {
-        motions = r.chain.segment_motions(q0, q1, win.on ? nullptr : &rn, &needed);
+        motions = r.chain.segment_motions(q0, q1, win.on ? nullptr : &rn, &needed,
+                                          ro.check_link ? &ro.check_link : nullptr);
         if (win.on) {
           const Rational a(win.lo), b(win.hi);
           for (size_t L = 0; L < motions.size(); ++L) {
@@ -359,12 +361,12 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       win.on = still && win.lo < win.hi && !(opt.solve.until < Rational(horizon));
       Scene_options bounded = opt;
       if (Rational(horizon) < bounded.solve.until) bounded.solve.until = Rational(horizon);
-      return solve_exact(r, q0, q1, obst, left, bounded, win);
+      return solve_exact(r, q0, q1, obst, left, bounded, ro, win);
     }
     plans = std::move(kept);
   }
 
-  return solve_exact(r, q0, q1, obst, plans, opt);
+  return solve_exact(r, q0, q1, obst, plans, opt, ro);
 }
 
 }  // namespace pccd::scene

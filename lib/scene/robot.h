@@ -44,6 +44,9 @@ struct Robot_model {
 struct Robot_options {
   bool self_collision = true;
   bool filter = true;  // false: every pair goes to the exact solve (for tests)
+  // Called on every link motion built (motion::Link_check; empty: none): the api holds
+  // them to config.max_number_bits.
+  motion::Link_check check_link;
 };
 
 // Input_error: "q0[k]" / "q1[k]" as motion::Chain::segment_motions, "obstacles[k].motion"

@@ -1,6 +1,7 @@
 #include "util/work_budget.h"
 
 #include <cstdio>
+#include <limits>
 
 namespace pccd::util {
 
@@ -22,7 +23,19 @@ Work_budget::Work_budget(const Work_limits &l) : limits_(l), start_(std::chrono:
   }
 }
 
-void Work_budget::stop(std::uint64_t done) {
+double Work_budget::seconds_left() const {
+  if (limits_.max_seconds <= 0) return std::numeric_limits<double>::infinity();
+  return std::chrono::duration<double>(deadline_ - std::chrono::steady_clock::now()).count();
+}
+
+void Work_budget::stop_ahead(const std::string &what) {
+  int none = -1;
+  which_.compare_exchange_strong(none, Limit_reached::SECONDS);
+  spent_.store(true, std::memory_order_relaxed);
+  stop(steps_.load(), which_.load() == Limit_reached::SECONDS ? what : "");
+}
+
+void Work_budget::stop(std::uint64_t done, const std::string &ahead) {
   // The first limit reached names the stop; later steps (other threads) repeat it.
   int w = which_.load(std::memory_order_relaxed);
   if (w < 0) {
@@ -50,14 +63,14 @@ void Work_budget::stop(std::uint64_t done) {
                     static_cast<unsigned long long>(limits_.max_steps));
       break;
     case Limit_reached::SECONDS:
-      std::snprintf(head, sizeof head, "config.max_seconds: the time limit of %g s was reached",
-                    limits_.max_seconds);
+      std::snprintf(head, sizeof head, "config.max_seconds: the time limit of %g s %s",
+                    limits_.max_seconds, ahead.empty() ? "was reached" : "would be passed by ");
       break;
     default:
       std::snprintf(head, sizeof head, "config.cancel: the call was cancelled");
   }
   throw Limit_reached(static_cast<Limit_reached::Which>(w),
-                      std::string(head) + " (" + progress + "); no answer");
+                      std::string(head) + ahead + " (" + progress + "); no answer");
 }
 
 }  // namespace pccd::util

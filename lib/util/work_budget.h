@@ -70,11 +70,16 @@ class Work_budget {
       stop(done);
   }
   std::uint64_t steps() const { return steps_.load(std::memory_order_relaxed); }
+  // Seconds left before max_seconds ends the call (infinity without a time limit).
+  double seconds_left() const;
+  // Ends the call as max_seconds does, before a step that cannot be interrupted and
+  // would end past the deadline (`what` says which and its predicted time).
+  [[noreturn]] void stop_ahead(const std::string &what);
   // Progress the message reports: primitive pairs (or queries) solved so far.
   void count_solved(std::uint64_t n = 1) { solved_.fetch_add(n, std::memory_order_relaxed); }
 
  private:
-  [[noreturn]] void stop(std::uint64_t done);
+  [[noreturn]] void stop(std::uint64_t done, const std::string &ahead = "");
   Work_limits limits_;
   std::chrono::steady_clock::time_point start_, deadline_;
   std::atomic<std::uint64_t> steps_{0}, solved_{0};

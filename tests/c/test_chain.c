@@ -48,6 +48,26 @@ static void cases(void)
   CHECK(v[0] == 0.5 && v[1] == 0 && v[2] == 0);
   for (k = 0; k < 3; ++k) pccd_motion_free(m[k]);
 
+  g_case = "limits";
+  {
+    pccd_config cfg;
+    OK(pccd_config_init(&cfg));
+    cfg.max_work = 1000000;
+    OK(pccd_chain_segment_motions_cfg(c, q0, q1, 3, &cfg, m)); /* within them: the same */
+    CHECK(position_is(m[1], "1", "0", "0", "1/3", "2 0 1/3"));
+    for (k = 0; k < 3; ++k) pccd_motion_free(m[k]);
+    OK(pccd_chain_segment_motions_cfg(c, q0, q1, 3, NULL, m));
+    CHECK(position_is(m[2], "0", "0", "0", "1", "1 1 1"));
+    for (k = 0; k < 3; ++k) pccd_motion_free(m[k]);
+    cfg.max_number_bits = 1; /* every number has 2 bits or more */
+    FAILS(pccd_chain_segment_motions_cfg(c, q0, q1, 3, &cfg, m), PCCD_ELIMIT,
+          "pccd_chain_segment_motions_cfg: motions[0].");
+    CHECK(m[0] == NULL && m[1] == NULL && m[2] == NULL);
+    cfg.struct_size = 3;
+    FAILS(pccd_chain_segment_motions_cfg(c, q0, q1, 3, &cfg, m), PCCD_EINVAL,
+          "pccd_chain_segment_motions_cfg: config");
+  }
+
   g_case = "errors";
   FAILS(pccd_chain_new(NULL), PCCD_EINVAL, "pccd_chain_new: out: is NULL");
   FAILS(pccd_chain_add_link(NULL, -1, 0, NULL, zero, zero, NULL), PCCD_EINVAL, "c: is NULL");

@@ -14,8 +14,10 @@ from typing import TYPE_CHECKING, List, Optional, Sequence
 from ._types import Number
 
 if TYPE_CHECKING:
+    from ._limits import Limits
     from ._motion import Motion
 from . import _handles as handles
+from . import _limits
 from ._errors import InputError, check
 from ._motion import RECIPE_BUILDERS, Motion, _number
 from ._numbers import show
@@ -84,14 +86,18 @@ class Chain:
         n = len(self._links)
         return _doubles(q0, "q0", n), _doubles(q1, "q1", n)
 
-    def motions(self, q0: Sequence[float], q1: Sequence[float]) -> List[Motion]:
+    def motions(self, q0: Sequence[float], q1: Sequence[float], *,
+                limits: Optional[Limits] = None) -> List[Motion]:
         """The world Motion of every link over the segment q0 -> q1 (q[k]: link k's joint
-        value, ignored for fixed joints)."""
+        value, ignored for fixed joints). limits: a polyccd.Limits over the compositions
+        and the links' numbers (None: no limits, Ctrl-C still ends the call)."""
         a0, a1 = self._segment(q0, q1)
         n = len(self._links)
         out = ffi.new("pccd_motion *[]", max(n, 1))
-        check(lib.pccd_chain_segment_motions(self._handle, ffi.from_buffer("double[]", a0),
-                                             ffi.from_buffer("double[]", a1), n, out))
+        cfg = _limits.config(limits)
+        check(_limits.run(cfg, lib.pccd_chain_segment_motions_cfg, self._handle,
+                          ffi.from_buffer("double[]", a0), ffi.from_buffer("double[]", a1), n,
+                          cfg, out))
         links, t0, t1 = tuple(self._links), tuple(map(float, a0)), tuple(map(float, a1))
         return [Motion._wrap(ffi.gc(out[k], lib.pccd_motion_free), ("chain", (links, t0, t1, k)))
                 for k in range(n)]

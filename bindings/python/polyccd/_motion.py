@@ -13,6 +13,7 @@ itself cannot travel, e.g. to a Dask worker).
 from __future__ import annotations
 
 from fractions import Fraction
+from time import monotonic as _clock
 from typing import TYPE_CHECKING, Optional, Sequence, Tuple, Union
 
 from ._types import Coefficients, Number, Pose, Quaternion, Vector
@@ -246,10 +247,13 @@ class Motion:
         needed = ffi.new("size_t *")
         cap = 4096 + 4 * len(ffi.string(time))  # most answers fit: the work is done once
         buf = ffi.new("char[]", cap)
+        start = _clock()
         rc = _limits.run(cfg, lib.pccd_motion_position_cfg_s, self._handle, point, time, cfg,
                          buf, cap, needed)
         if rc == lib.PCCD_ERANGE:
             buf = ffi.new("char[]", needed[0])
+            if cfg.max_seconds > 0:  # the second call has what the first one left
+                cfg.max_seconds = max(cfg.max_seconds - (_clock() - start), 1e-3)
             rc = _limits.run(cfg, lib.pccd_motion_position_cfg_s, self._handle, point, time, cfg,
                              buf, needed[0], needed)
         check(rc)

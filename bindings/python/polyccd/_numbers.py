@@ -65,9 +65,24 @@ def ratio_text(p, q):
 
 
 def fraction_from_text(s):
-    """Fraction of the C library's output "p/q" or "p"."""
+    """Fraction of the C library's output "p/q" or "p". The C texts are in lowest terms
+    with a positive denominator, so a long one is taken as it is: Fraction() would
+    divide by the gcd again, and Python's gcd of numbers of millions of digits takes
+    minutes (Motion.position at a time of 63,000 bits answers 6 million digits)."""
     num, _, den = s.partition("/")
-    return Fraction(int_from_text(num), int_from_text(den) if den else 1)
+    if len(s) <= _SAFE_DIGITS:
+        return Fraction(int(num), int(den) if den else 1)
+    return _coprime(int_from_text(num), int_from_text(den) if den else 1)
+
+
+def _coprime(n, d):
+    """The Fraction n / d of coprime n and d > 0, without a gcd."""
+    made = getattr(Fraction, "_from_coprime_ints", None)  # Python 3.12 and later
+    if made is not None:
+        return made(n, d)
+    f = object.__new__(Fraction)
+    f._numerator, f._denominator = n, d
+    return f
 
 
 def number_text(value, place):

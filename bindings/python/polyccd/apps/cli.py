@@ -22,6 +22,7 @@ from ._csv import CSV_KINDS
 from ._json import result_json, time_json
 from ._queries import mismatch_lines, run_file
 from ._progress import bar, echo
+from . import _reading
 from ._reading import read_within
 from ._scene_file import load_scene
 
@@ -320,6 +321,9 @@ def _limit_flags(c):
     c.add_argument("--max-number-bits", type=_positive(int), metavar="B",
                    help=f"largest input number in bits (default {Limits().max_number_bits}); "
                    "raise it for inputs with longer numbers")
+    c.add_argument("--max-file-mb", type=_positive(int), metavar="MB",
+                   default=_reading.DEFAULT_MAX_FILE_MB, help="largest file read, in MiB "
+                   f"(default {_reading.DEFAULT_MAX_FILE_MB}; reading takes ~48x it in memory)")
 
 
 def _limits(args):
@@ -419,6 +423,7 @@ def parser():
 
 def main(argv=None):
     args = parser().parse_args(argv)
+    _reading.max_file_bytes = getattr(args, "max_file_mb", _reading.DEFAULT_MAX_FILE_MB) << 20
     try:
         return args.run(args)
     except Error as e:  # InternalError: a bug, reported without a traceback
