@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "util/work_budget.h"
+
 namespace pccd::bvh {
 
 namespace {
@@ -87,6 +89,8 @@ class Builder {
 
   // Node k over elems[b, e); returns its bounds (recursion depth ~ log2 n: balanced).
   Bounds build(uint32_t k, uint32_t b, uint32_t e) {
+    // One work step per node and per 4,096 elements it scans (util/work_budget.h).
+    util::work_step(1 + (e - b) / 4096);
     uint32_t *el = h_.elems.data();
     if (e - b <= kLeaf_size) {
       Bounds u = box_[el[b]];

@@ -6,6 +6,7 @@
 #include "arith/convert.h"
 #include "range/ivec.h"
 #include "range/scaled_bernstein.h"
+#include "util/work_budget.h"
 
 namespace pccd::range {
 
@@ -109,7 +110,10 @@ std::vector<std::array<Interval, kDimVertex>> lift_vertices(const Body_data &b,
                                                            const std::vector<uint32_t> &ids) {
   std::vector<std::array<Interval, kDimVertex>> out;
   out.reserve(ids.size());
-  for (uint32_t v : ids) out.push_back(enclose_point(b.mesh->vertices()[v]));
+  for (uint32_t v : ids) {
+    if (out.size() % 256 == 0) util::work_step();  // per 256 points (util/work_budget.h)
+    out.push_back(enclose_point(b.mesh->vertices()[v]));
+  }
   return out;
 }
 
@@ -118,6 +122,7 @@ std::vector<std::array<Interval, kDimTriangle>> lift_triangles(const Body_data &
   std::vector<std::array<Interval, kDimTriangle>> out;
   out.reserve(b.mesh->triangles().size());
   for (const auto &t : b.mesh->triangles()) {
+    if (out.size() % 256 == 0) util::work_step();  // per 256 triangles
     const std::array<I3, 3> c = {enclose_point(V[t[0]]), enclose_point(V[t[1]]), enclose_point(V[t[2]])};
     const I3 n = cross(sub(c[1], c[0]), sub(c[2], c[0]));
     std::array<Interval, kDimTriangle> s;
@@ -134,6 +139,7 @@ std::vector<std::array<Interval, kDimEdge>> lift_edges(const Body_data &b) {
   std::vector<std::array<Interval, kDimEdge>> out;
   out.reserve(b.mesh->edges().size());
   for (const auto &e : b.mesh->edges()) {
+    if (out.size() % 256 == 0) util::work_step();  // per 256 edges
     const std::array<I3, 2> c = {enclose_point(V[e[0]]), enclose_point(V[e[1]])};
     std::array<Interval, kDimEdge> s;
     put_plucker(c[0], c[1], &s[0]);
@@ -149,6 +155,7 @@ std::vector<std::array<Interval, kDimBall>> lift_balls(const Body_data &b) {
   std::vector<std::array<Interval, kDimBall>> out;
   out.reserve(C.size());
   for (size_t i = 0; i < C.size(); ++i) {
+    if (i % 256 == 0) util::work_step();  // per 256 balls
     const I3 c = enclose_point(C[i]);
     const Interval r = arith::enclose(R[i]);
     out.push_back({c[0], c[1], c[2], dot(c, c) - r * r, r});
@@ -161,6 +168,7 @@ std::vector<std::array<Interval, kDimSides>> lift_triangle_sides(const Body_data
   std::vector<std::array<Interval, kDimSides>> out;
   out.reserve(b.mesh->triangles().size());
   for (const auto &t : b.mesh->triangles()) {
+    if (out.size() % 256 == 0) util::work_step();  // per 256 triangles
     const std::array<I3, 3> c = {enclose_point(V[t[0]]), enclose_point(V[t[1]]), enclose_point(V[t[2]])};
     std::array<Interval, kDimSides> s;
     for (int i = 0; i < 3; ++i) put_plucker(c[i], c[(i + 1) % 3], &s[6 * i]);

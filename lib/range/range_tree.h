@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "range/halfspaces.h"
+#include "util/work_budget.h"
 
 namespace pccd::range {
 
@@ -120,6 +121,9 @@ class Range_tree {
 
   // Builds the node of order_[begin, end) at nodes_[at] (appended when at is null).
   void build(uint32_t begin, uint32_t end, uint32_t *at) {
+    // One work step per node and per 4,096 items it scans (util/work_budget.h): an index
+    // over a million triangles builds its trees for seconds, and its limits must hold.
+    util::work_step(1 + (end - begin) / 4096);
     const uint32_t me = at ? *at : static_cast<uint32_t>(nodes_.size());
     if (!at) nodes_.push_back(Node());
     Node nd;
