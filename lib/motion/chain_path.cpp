@@ -110,12 +110,6 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
   }
 }
 
-void Chain_path::enclose(double a, double b, std::vector<Pose_bounds> &out) const {
-  const Interval T(a, b);
-  out.resize(ends_.size());
-  for (size_t k = 0; k < ends_.size(); ++k) ball_of_link(k, T, out, -1);
-}
-
 void Chain_path::enclose_link(double a, double b, size_t k, long base, std::vector<Pose_bounds> &out,
                               std::vector<char> &have) const {
   make_lazily(c_, k, base, out, have, [&](size_t j) { ball_of_link(j, Interval(a, b), out, base); });
@@ -203,12 +197,6 @@ void Chain_path::ball_of_link(size_t k, const Interval &T, std::vector<Pose_boun
     ej = 1;  // a rotation has norm 1
   }
   compose(Rpo, epo, Jm, ej, P.Rm, P.eps);
-}
-
-void Chain_path::derivatives(double a, double b, std::vector<Path_derivs> &out) const {
-  const Interval T(a, b);
-  out.resize(ends_.size());
-  for (size_t k = 0; k < ends_.size(); ++k) derivs_of_link(k, T, out, -1);
 }
 
 void Chain_path::derivatives_link(double a, double b, size_t k, long base, std::vector<Path_derivs> &out,

@@ -76,13 +76,10 @@ class Chain_path {
  public:
   // Input_error as Chain::segment_motions for a segment it rejects ("q1[k]: ...").
   Chain_path(const Chain &c, const double *q0, const double *q1);
-  // The bounds of every link over [a, b], 0 <= a <= b <= 1 (doubles), into out (resized).
-  void enclose(double a, double b, std::vector<Pose_bounds> &out) const;
-  // The derivative bounds of every link over [a, b] (above), into out (resized).
-  void derivatives(double a, double b, std::vector<Path_derivs> &out) const;
-  // The same for link k and its ancestors below base alone, those not yet marked in have
-  // (one flag per link; out and have are resized on first use, then kept by the caller
-  // per piece), relative to link base: base an ancestor of k, or -1 (the world frame).
+  // The pose bounds (enclose_link) and derivative bounds (derivatives_link) over [a, b],
+  // 0 <= a <= b <= 1 (doubles), of link k and its ancestors below base alone, those not
+  // yet marked in have (one flag per link; out and have are resized on first use, then
+  // kept by the caller per piece), relative to link base: base an ancestor of k, or -1 (the world frame).
   // Relative to base, the poses are those of the chain below base with base's pose
   // taken as the identity: the motion of the ancestors that move both links of a
   // self-collision pair alike drops out (scene/robot.h).
