@@ -26,6 +26,7 @@ every worker. Needs dask.distributed (`pip install polyccd[dask]`); `import poly
 never imports this module.
 """
 import dataclasses
+import functools
 import hashlib
 import os
 import pickle
@@ -33,6 +34,7 @@ import threading
 from contextlib import contextmanager
 
 from .. import Body, Index, InputError, InternalError
+from ._chunks import Sizer, timed_chunk
 from ._progress import bar
 
 try:
@@ -113,57 +115,70 @@ def _client(client):
     return client
 
 
-def _chunk_size(n, client, chunk_size):
-    if chunk_size is not None:
-        if isinstance(chunk_size, bool) or not isinstance(chunk_size, int) or chunk_size < 1:
-            raise InputError(f"chunk_size: expected an integer >= 1, got {chunk_size!r}")
-        return chunk_size
-    workers = max(1, len(client.scheduler_info().get("workers", {})))
-    return max(1, -(-n // (8 * workers)))  # about 8 chunks per worker: balance, few tasks
+def _fixed_size(chunk_size):
+    """chunk_size as given (an integer >= 1), or None: sized by measured cost."""
+    if chunk_size is not None and (isinstance(chunk_size, bool) or not isinstance(chunk_size, int)
+                                   or chunk_size < 1):
+        raise InputError(f"chunk_size: expected an integer >= 1, got {chunk_size!r}")
+    return chunk_size
 
 
 def map_chunks(fn, items, *shared, client=None, chunk_size=None, progress=None,
                desc="polyccd", unit="it"):
     """Yields fn(chunk, *shared) item by item, in the order of items: items are cut into
-    chunks (lists), fn returns one answer per item of its chunk. shared: objects every
-    task needs, scattered once to every worker (fn gets them as they were). fn must be
-    importable by the workers (a module-level function)."""
+    chunks (lists), fn returns one answer per item of its chunk. chunk_size: items per
+    chunk, or None: sized by the cost per item measured on the workers (_chunks.Sizer:
+    small probes first, then chunks of about 0.1 s of work). shared: objects every task
+    needs, scattered once to every worker (fn gets them as they were); a Future is
+    passed as it is. fn must be importable by the workers (a module-level function)."""
     client = _client(client)
     items = list(items)
-    size = _chunk_size(len(items), client, chunk_size)
-    chunks = [items[k:k + size] for k in range(0, len(items), size)]
+    workers = len(client.scheduler_info().get("workers", {}))
+    sizer = Sizer(len(items), workers, _fixed_size(chunk_size))
     # One future per object (a list or dict given to scatter would be split up); a
     # future given in shared (index_map's body, kept across calls) is passed as it is.
     scattered = [s if isinstance(s, _distributed.Future)
                  else client.scatter([s], broadcast=True, hash=False)[0] for s in shared]
-    futures = client.map(fn, chunks, *[[s] * len(chunks) for s in scattered], pure=False)
-    where = {f.key: k for k, f in enumerate(futures)}
+    task = functools.partial(timed_chunk, fn)
+    bounds, live = [], {}  # chunk k's (start, end); future key -> (k, future)
+    running = _distributed.as_completed(loop=client.loop, with_results=True)
+
+    def submit(count):
+        new = []
+        while len(new) < count and (b := sizer.take()) is not None:
+            new.append(b)
+        if new:  # one client.map: one message for the whole wave
+            futures = client.map(task, [items[a:b] for a, b in new],
+                                 *[[s] * len(new) for s in scattered], pure=False)
+            for f, b in zip(futures, new):
+                live[f.key] = (len(bounds), f)
+                bounds.append(b)
+                running.add(f)
+
     done, next_chunk = {}, 0
     progress_bar = bar(len(items), desc, unit, progress)
     try:
-        for future, answers in _completed(futures):
-            k = where[future.key]
-            if len(answers) != len(chunks[k]):
-                raise InputError(f"{fn.__name__}: {len(answers)} answers for a chunk of "
-                                 f"{len(chunks[k])}")
-            done[k] = answers
-            progress_bar.update(len(answers))
+        submit(sizer.in_flight())
+        for batch in running.batches():  # what finished since the last: one round trip
+            for future, (answers, seconds) in batch:
+                k, _ = live.pop(future.key)
+                a, b = bounds[k]
+                if len(answers) != b - a:
+                    raise InputError(f"{fn.__name__}: {len(answers)} answers for a chunk of "
+                                     f"{b - a}")
+                sizer.record(b - a, seconds)
+                done[k] = answers
+                progress_bar.update(len(answers))
+            submit(len(batch))  # as many as finished: the workers keep their queue
             while next_chunk in done:
                 yield from done.pop(next_chunk)
                 next_chunk += 1
     finally:  # stopped early (an error, a consumer that stops): drop the rest
         progress_bar.close()
-        pending = [f for f in futures if not f.done()]
+        pending = [f for _, f in live.values() if not f.done()]
         if pending and client.status == "running":
             client.cancel(pending)
-        del futures, scattered  # released by the scheduler when no future refers to them
-
-
-def _completed(futures):
-    """(future, result) as tasks finish, results gathered a batch at a time (all the
-    tasks finished since the last batch: one round trip, not one per task)."""
-    for batch in _distributed.as_completed(futures, with_results=True).batches():
-        yield from batch
+        del live, running, scattered  # released by the scheduler when no future refers to them
 
 
 # ------------------------------------------------------------------- on-line index ---
