@@ -16,8 +16,9 @@ docs/python.md) and are rebuilt on arrival. A body shared by every task (the Ind
 stored body) is scattered to every worker once per client, kept for later calls
 (client.scatter(broadcast=True), _broadcast_body), and each worker process builds its
 Index from it once, lazily on its first task, then keeps it for every later call with
-a body of the same exact inputs (_cached_index, by _body_token). Files (CSV query sets, scene and query files, corpus cases)
-travel as paths: the workers must see the same files (a shared file system).
+a body of the same exact inputs (_cached_index, by _body_token). Files (CSV query
+sets, scene and query files, corpus cases) travel as paths: the workers must see the
+same files (a shared file system).
 
 A worker that dies mid-run loses nothing: the results not yet received are computed
 again by the scheduler on the remaining or restarted workers (every worker of an
@@ -268,9 +269,9 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
     client = _client(client)
     token = _body_token(body)
     shared = _broadcast_body(client, token, body)
-    answers = map_chunks(_index_chunk, list(enumerate(queries)), shared, token, options, client=client,
-                         chunk_size=chunk_size, progress=progress, desc="index queries",
-                         unit="query")
+    answers = map_chunks(_index_chunk, list(enumerate(queries)), shared, token, options,
+                         client=client, chunk_size=chunk_size, progress=progress,
+                         desc="index queries", unit="query")
     for q, r in zip(queries, answers):
         if not isinstance(r, Exception):
             object.__setattr__(r, "bodies", (body, q))
