@@ -14,6 +14,7 @@ import pytest
 import polyccd
 import test_batch as batch
 
+# threads=3 warns on a 2-core machine that 2 are used; the answers are what is tested.
 pytestmark = pytest.mark.filterwarnings("ignore:threads=3:RuntimeWarning")
 THREADS = (1, 2, 3)
 
