@@ -191,6 +191,8 @@ bench: all $(BUILD)/bench_linear $(BUILD)/bench_min_distance
 	$(VPY) tests/bench/bench_online.py
 	$(VPY) tests/bench/bench_distributed.py
 	$(VPY) tests/bench/bench_robot.py
+	$(VPY) tests/bench/bench_threads.py
+	$(VPY) tests/bench/bench_ipc_loop.py
 
 # `make docs`: the reference in build/docs/html (docs/: the Markdown pages, the Python
 # API from the package's docstrings, the C API from include/polyccd.h's comments);

@@ -262,3 +262,38 @@ def test_the_embedded_cluster_listens_on_loopback_without_a_dashboard(client):
     assert served(client) == 404
     with pd.cluster(workers=1, dashboard=True) as c:
         assert served(c) == 200
+
+
+def test_a_body_is_sent_and_indexed_once_across_calls(client):
+    """Issue 35: index_map names the stored body by its exact inputs, so a later call
+    with it (as a Body, an Index, or an equal body made anew) neither scatters it again
+    nor builds its Index again on any worker; a different body gets its own."""
+    def plate(z, name):
+        return Body(Mesh([[-4, -4, z], [4, -4, z], [-4, 4, z], [4, 4, z]],
+                         [[0, 1, 3], [0, 3, 2]]), name=name)
+    body, queries = plate("1/3", "plate-35"), query_bodies(200, hit_every=3)
+    serial = Index(body).query_many(queries)
+    before = builds(client)
+    assert list(pd.index_map(body, queries, client=client, chunk_size=10)) == serial
+    first = builds(client)
+    sent = dict(pd._SCATTERED)
+    assert list(pd.index_map(Index(body), queries[::-1], client=client,
+                             chunk_size=10)) == serial[::-1]
+    assert list(pd.index_map(plate("1/3", "plate-35"), queries, client=client,
+                             chunk_size=10)) == serial
+    assert builds(client) == first and sum(first.values()) > sum(before.values())
+    assert pd._SCATTERED == sent  # the same futures: nothing scattered again
+    other = plate("-1/3", "plate-35")  # same name, other numbers: its own Index
+    assert list(pd.index_map(other, queries, client=client)) == \
+        Index(other).query_many(queries) != serial
+
+
+def test_the_embedded_cluster_runs_without_the_dashboard_diagnostics(client):
+    """Issue 35: the settings that cut the cost of a task (EMBEDDED_CONFIG) reach the
+    scheduler and every worker of the embedded cluster."""
+    import dask
+    got = client.run(lambda: (dask.config.get("distributed.worker.profile.enabled"),
+                              dask.config.get("distributed.admin.system-monitor.gil.enabled")))
+    assert set(got.values()) == {(False, False)}
+    assert client.run_on_scheduler(lambda dask_scheduler: dask_scheduler.WORKER_SATURATION) \
+        == float("inf")

@@ -61,8 +61,9 @@ def solve_linear_many(kind: str, t0: np.ndarray, t1: np.ndarray, *,
     opt = ffi.new("pccd_batch_options *")
     check(lib.pccd_batch_options_init(opt))
     opt.threads = threads
-    collides = np.zeros(n, dtype=np.uint8)
-    exact = np.zeros(n, dtype=np.uint8)
+    # C writes 0 or 1 into these bytes: valid numpy bools, filled in place (no copy).
+    collides = np.zeros(n, dtype=bool)
+    exact = np.zeros(n, dtype=bool)
     stage = np.zeros(n, dtype=np.intc)
     lo = np.empty(n, dtype=np.float64)
     hi = np.empty(n, dtype=np.float64)
@@ -75,4 +76,4 @@ def solve_linear_many(kind: str, t0: np.ndarray, t1: np.ndarray, *,
     out.hi = ffi.from_buffer("double[]", hi)
     check(_limits.run(cfg, lib.pccd_solve_linear_batch_d, code, n, ffi.from_buffer("double[]", a0),
                       ffi.from_buffer("double[]", a1), cfg, opt, out))
-    return LinearBatch(collides.astype(bool), lo, hi, exact.astype(bool), _STAGE_NAMES[stage])
+    return LinearBatch(collides, lo, hi, exact, _STAGE_NAMES[stage])

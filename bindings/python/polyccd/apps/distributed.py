@@ -13,10 +13,12 @@ call's answer: the workers run the same library calls on the same exact inputs.
 Shipping: the C handles cannot be pickled, so bodies, motions and Index objects travel
 as their exact inputs (Mesh / Spheres / Motion / Body pickle that way, see
 docs/python.md) and are rebuilt on arrival. A body shared by every task (the Index's
-stored body) is scattered to every worker once (client.scatter(broadcast=True)) and
-each worker process builds its Index from it once, lazily on its first task, then
-keeps it (_cached_index). Files (CSV query sets, scene and query files, corpus cases)
-travel as paths: the workers must see the same files (a shared file system).
+stored body) is scattered to every worker once per client, kept for later calls
+(client.scatter(broadcast=True), _broadcast_body), and each worker process builds its
+Index from it once, lazily on its first task, then keeps it for every later call with
+a body of the same exact inputs (_cached_index, by _body_token). Files (CSV query
+sets, scene and query files, corpus cases) travel as paths: the workers must see the
+same files (a shared file system).
 
 A worker that dies mid-run loses nothing: the results not yet received are computed
 again by the scheduler on the remaining or restarted workers (every worker of an
@@ -25,15 +27,19 @@ every worker. Needs dask.distributed (`pip install polyccd[dask]`); `import poly
 never imports this module.
 """
 import dataclasses
+import functools
+import hashlib
 import os
+import pickle
 import threading
-import uuid
 from contextlib import contextmanager
 
 from .. import Body, Index, InputError, InternalError
+from ._chunks import Sizer, timed_chunk
 from ._progress import bar
 
 try:
+    import dask.config as _dask_config
     import distributed as _distributed
 except ImportError as _e:  # pragma: no cover - depends on the install
     raise ImportError("polyccd.apps.distributed needs dask.distributed: pip install "
@@ -43,6 +49,20 @@ __all__ = ["cluster", "map_chunks", "index_map", "check_map", "corpus_map", "que
 
 
 LOOPBACK = "127.0.0.1"  # the embedded cluster's only interface (cluster())
+
+# Dask settings of the embedded cluster, which cut the fixed cost of a task (issue 35;
+# tests/bench/bench_distributed.py, docs/distributed.md): CPU time of all the cluster's
+# processes per one-item task doing nothing, 1 worker, 300 tasks, 2-core machine at
+# load 9: 3.2-3.8 ms with dask's defaults, 1.2-2.4 ms with these.
+#  - worker-saturation inf: the scheduler sends every ready task to the workers at once
+#    instead of queuing it until a worker's thread is free (one round trip per task);
+#    the tasks of a map are even chunks, and work stealing still moves queued ones.
+#  - no statistical profiler (a thread sampling every task's stack every 10 ms) and no
+#    GIL-contention sampling (every 1 ms, with gilknocker) on the workers: data for the
+#    dashboard, which the embedded cluster does not show unless asked.
+EMBEDDED_CONFIG = {"distributed.scheduler.worker-saturation": float("inf"),
+                   "distributed.worker.profile.enabled": False,
+                   "distributed.admin.system-monitor.gil.enabled": False}
 
 
 @contextmanager
@@ -55,7 +75,8 @@ def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1, 
     os.cpu_count()), each with a nanny and threads_per_worker threads. Its scheduler,
     workers and nannies listen on 127.0.0.1 only (dask's dashboard and endpoints take
     no authentication: issue 23 found the dashboard on 0.0.0.0), and it has no
-    dashboard unless dashboard=True (then on 127.0.0.1, a free port)."""
+    dashboard unless dashboard=True (then on 127.0.0.1, a free port). Without a
+    dashboard it runs with EMBEDDED_CONFIG (a lower cost per task)."""
     if client is not None:
         yield client
         return
@@ -69,15 +90,19 @@ def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1, 
             yield c
         return
     n = workers or os.cpu_count() or 1
-    with _distributed.LocalCluster(n_workers=n, threads_per_worker=threads_per_worker,
-                                   processes=True, host=LOOPBACK,
-                                   # the scheduler's HTTP server (health, and the
-                                   # dashboard when asked) on loopback, a free port
-                                   dashboard_address=f"{LOOPBACK}:0",
-                                   scheduler_kwargs={"dashboard": bool(dashboard)},
-                                   worker_dashboard_address=None,
-                                   silence_logs=40) as local, \
-            _distributed.Client(local) as c:
+    # The scheduler reads its settings when it is made; each nanny hands its worker
+    # (the first, and one restarted after a crash) the config it was given.
+    quiet = {} if dashboard else EMBEDDED_CONFIG
+    with _dask_config.set(quiet):
+        local = _distributed.LocalCluster(n_workers=n, threads_per_worker=threads_per_worker,
+                                          processes=True, host=LOOPBACK,
+                                          # the scheduler's HTTP server (health, and the
+                                          # dashboard when asked) on loopback, a free port
+                                          dashboard_address=f"{LOOPBACK}:0",
+                                          scheduler_kwargs={"dashboard": bool(dashboard)},
+                                          worker_dashboard_address=None,
+                                          silence_logs=40, config=quiet)
+    with local, _distributed.Client(local) as c:
         yield c
 
 
@@ -91,55 +116,70 @@ def _client(client):
     return client
 
 
-def _chunk_size(n, client, chunk_size):
-    if chunk_size is not None:
-        if isinstance(chunk_size, bool) or not isinstance(chunk_size, int) or chunk_size < 1:
-            raise InputError(f"chunk_size: expected an integer >= 1, got {chunk_size!r}")
-        return chunk_size
-    workers = max(1, len(client.scheduler_info().get("workers", {})))
-    return max(1, -(-n // (8 * workers)))  # about 8 chunks per worker: balance, few tasks
+def _fixed_size(chunk_size):
+    """chunk_size as given (an integer >= 1), or None: sized by measured cost."""
+    if chunk_size is not None and (isinstance(chunk_size, bool) or not isinstance(chunk_size, int)
+                                   or chunk_size < 1):
+        raise InputError(f"chunk_size: expected an integer >= 1, got {chunk_size!r}")
+    return chunk_size
 
 
 def map_chunks(fn, items, *shared, client=None, chunk_size=None, progress=None,
                desc="polyccd", unit="it"):
     """Yields fn(chunk, *shared) item by item, in the order of items: items are cut into
-    chunks (lists), fn returns one answer per item of its chunk. shared: objects every
-    task needs, scattered once to every worker (fn gets them as they were). fn must be
-    importable by the workers (a module-level function)."""
+    chunks (lists), fn returns one answer per item of its chunk. chunk_size: items per
+    chunk, or None: sized by the cost per item measured on the workers (_chunks.Sizer:
+    small probes first, then chunks of about 0.1 s of work). shared: objects every task
+    needs, scattered once to every worker (fn gets them as they were); a Future is
+    passed as it is. fn must be importable by the workers (a module-level function)."""
     client = _client(client)
     items = list(items)
-    size = _chunk_size(len(items), client, chunk_size)
-    chunks = [items[k:k + size] for k in range(0, len(items), size)]
-    # One future per object (a list or dict given to scatter would be split up).
-    scattered = [client.scatter([s], broadcast=True, hash=False)[0] for s in shared]
-    futures = client.map(fn, chunks, *[[s] * len(chunks) for s in scattered], pure=False)
-    where = {f.key: k for k, f in enumerate(futures)}
+    workers = len(client.scheduler_info().get("workers", {}))
+    sizer = Sizer(len(items), workers, _fixed_size(chunk_size))
+    # One future per object (a list or dict given to scatter would be split up); a
+    # future given in shared (index_map's body, kept across calls) is passed as it is.
+    scattered = [s if isinstance(s, _distributed.Future)
+                 else client.scatter([s], broadcast=True, hash=False)[0] for s in shared]
+    task = functools.partial(timed_chunk, fn)
+    bounds, live = [], {}  # chunk k's (start, end); future key -> (k, future)
+    running = _distributed.as_completed(loop=client.loop, with_results=True)
+
+    def submit(count):
+        new = []
+        while len(new) < count and (b := sizer.take()) is not None:
+            new.append(b)
+        if new:  # one client.map: one message for the whole wave
+            futures = client.map(task, [items[a:b] for a, b in new],
+                                 *[[s] * len(new) for s in scattered], pure=False)
+            for f, b in zip(futures, new):
+                live[f.key] = (len(bounds), f)
+                bounds.append(b)
+                running.add(f)
+
     done, next_chunk = {}, 0
     progress_bar = bar(len(items), desc, unit, progress)
     try:
-        for future, answers in _completed(futures):
-            k = where[future.key]
-            if len(answers) != len(chunks[k]):
-                raise InputError(f"{fn.__name__}: {len(answers)} answers for a chunk of "
-                                 f"{len(chunks[k])}")
-            done[k] = answers
-            progress_bar.update(len(answers))
+        submit(sizer.in_flight())
+        for batch in running.batches():  # what finished since the last: one round trip
+            for future, (answers, seconds) in batch:
+                k, _ = live.pop(future.key)
+                a, b = bounds[k]
+                if len(answers) != b - a:
+                    raise InputError(f"{fn.__name__}: {len(answers)} answers for a chunk of "
+                                     f"{b - a}")
+                sizer.record(b - a, seconds)
+                done[k] = answers
+                progress_bar.update(len(answers))
+            submit(len(batch))  # as many as finished: the workers keep their queue
             while next_chunk in done:
                 yield from done.pop(next_chunk)
                 next_chunk += 1
     finally:  # stopped early (an error, a consumer that stops): drop the rest
         progress_bar.close()
-        pending = [f for f in futures if not f.done()]
+        pending = [f for _, f in live.values() if not f.done()]
         if pending and client.status == "running":
             client.cancel(pending)
-        del futures, scattered  # released by the scheduler when no future refers to them
-
-
-def _completed(futures):
-    """(future, result) as tasks finish, results gathered a batch at a time (all the
-    tasks finished since the last batch: one round trip, not one per task)."""
-    for batch in _distributed.as_completed(futures, with_results=True).batches():
-        yield from batch
+        del live, running, scattered  # released by the scheduler when no future refers to them
 
 
 # ------------------------------------------------------------------- on-line index ---
@@ -147,6 +187,31 @@ def _completed(futures):
 _INDEXES = {}  # per worker process: token -> Index (a few, the latest)
 _INDEX_LOCK = threading.Lock()
 _BUILDS = [0]  # Index objects built in this process (tests read it on the workers)
+_SCATTERED = {}  # the caller's side: (client id, token) -> broadcast body (a few, the latest)
+_SCATTER_LOCK = threading.Lock()
+
+
+def _body_token(body):
+    """The name of a body's exact inputs: the SHA-256 of its pickle (shape, motion and
+    name as their exact inputs, docs/python.md). Equal inputs give the same token in
+    every call, so the workers' Index of the body (_cached_index) and its broadcast
+    copy (_broadcast_body) serve every later index_map of it; different inputs never
+    share one."""
+    return hashlib.sha256(pickle.dumps(body, protocol=5)).hexdigest()
+
+
+def _broadcast_body(client, token, body):
+    """The future of body scattered to every worker of client, made on the first
+    index_map of this body and kept for the next ones (while its data is held: a
+    future whose copies were all lost is made again)."""
+    key = (client.id, token)
+    with _SCATTER_LOCK:
+        future = _SCATTERED.get(key)
+        if future is None or future.status != "finished":
+            while len(_SCATTERED) >= 4:
+                _SCATTERED.pop(next(iter(_SCATTERED)))
+            future = _SCATTERED[key] = client.scatter([body], broadcast=True, hash=False)[0]
+        return future
 
 
 def _kept_going(place, fn, *args):
@@ -190,7 +255,9 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
     """Yields index.query(q, **options) for every query Body, in order, computed on the
     cluster (identical SceneResults, with their bodies attached again here).
 
-    index: a polyccd.Index or the Body to index (each worker builds its own Index once).
+    index: a polyccd.Index or the Body to index (each worker builds its own Index once,
+    and keeps it for later calls with a body of the same exact inputs: the body is sent
+    to the workers once per client, not once per call).
     queries: Body objects, or (shape, motion) / (shape, motion, name) tuples (the
     "(body, motion) pairs" of a batch). options: the keywords of Index.query. A query
     that fails yields its InputError (returned, not raised) naming it "queries[k]: ..."
@@ -199,10 +266,12 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
     if not isinstance(body, Body):
         raise InputError(f"index: expected a polyccd.Index or polyccd.Body, got {type(index).__name__}")
     queries = [q if isinstance(q, Body) else Body(*q) for q in queries]
-    token = uuid.uuid4().hex
-    answers = map_chunks(_index_chunk, list(enumerate(queries)), body, token, options, client=client,
-                         chunk_size=chunk_size, progress=progress, desc="index queries",
-                         unit="query")
+    client = _client(client)
+    token = _body_token(body)
+    shared = _broadcast_body(client, token, body)
+    answers = map_chunks(_index_chunk, list(enumerate(queries)), shared, token, options,
+                         client=client, chunk_size=chunk_size, progress=progress,
+                         desc="index queries", unit="query")
     for q, r in zip(queries, answers):
         if not isinstance(r, Exception):
             object.__setattr__(r, "bodies", (body, q))
