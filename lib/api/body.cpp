@@ -52,10 +52,10 @@ std::vector<pccd::motion::Triangle> triangles_of(const unsigned int *tris, size_
 
 // The size checks run before any allocation (nv * 3 cannot overflow below the limit).
 int new_mesh(pccd_body **out, std::vector<Point3_q> vertices,
-             std::vector<pccd::motion::Triangle> triangles) {
+             std::vector<pccd::motion::Triangle> triangles, bool solid = false) {
   auto body = std::make_unique<pccd_body>();
   body->mesh = std::make_shared<const pccd::motion::Mesh_body>(std::move(vertices),
-                                                         std::move(triangles));
+                                                         std::move(triangles), solid);
   body->data = pccd::narrow::make_body_data(body->mesh, nullptr);
   body->biggest = pccd::api::biggest_in(*body->mesh);
   pccd::bvh::hierarchy(*body->data);  // built with the body, shared by every check
@@ -136,6 +136,21 @@ PCCD_API int pccd_body_new_spheres_s(pccd_body **out, const char *const *centers
     for (size_t i = 0; i < n; ++i) r[i] = number_s(radii[i], place("radii", {i}));
     return new_spheres(out, std::move(c), std::move(r));
   });
+}
+
+PCCD_API int pccd_body_new_solid(pccd_body **out, const pccd_body *mesh) {
+  return guard(__func__, [&] {
+    require(out, "out");
+    *out = nullptr;
+    require(mesh, "mesh");
+    if (!mesh->mesh) throw Input_error("mesh: a sphere body is not a mesh (its balls are solid already)");
+    return new_mesh(out, mesh->mesh->vertices(), mesh->mesh->triangles(), true);
+  });
+}
+
+PCCD_API int pccd_body_solid(const pccd_body *b, int *solid) {
+  return pccd::api::getter(__func__, b, "b", solid, "solid",
+                           [&] { return !b->mesh || b->mesh->solid() ? 1 : 0; });
 }
 
 PCCD_API void pccd_body_free(pccd_body *b) { delete b; }

@@ -299,6 +299,11 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     auto base_of = [&](const Pair_plan &p) {
       return p.j < nr ? path.common_ancestor(r.bodies[p.i].link, r.bodies[p.j].link) : -1L;
     };
+    auto solid = [](const Body_data *d) { return d->mesh && d->mesh->solid(); };
+    auto solid_pair = [&](const Pair_plan &p) {
+      return solid(r.bodies[p.i].body.get()) ||
+             solid(p.j < nr ? r.bodies[p.j].body.get() : obst[p.j - nr].data.get());
+    };
     std::vector<Pair_plan> kept;
     Witness found;
     size_t found_i = 0, found_j = 0;
@@ -322,6 +327,10 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         lim.until = decide ? p.lower : horizon;
         if (decide) lim.max_tests = kAfter_tests;
       }
+      // A solid (narrow/containment.h) may hold the other body with no surface near:
+      // the filter bounds surface contacts only, so the pair goes to the exact solve
+      // (its containment test at t = 0) with no bound.
+      if (solid_pair(p)) p.lower = 0;
       if (p.lower <= horizon) kept.push_back(p);
     }
     std::stable_sort(kept.begin(), kept.end(),
