@@ -128,7 +128,8 @@ class Motion:
     def fixed(cls, pose: Pose) -> Motion:
         """A body standing still at pose for all t: a 4x4 pose matrix or a (position,
         quaternion w x y z) pair, exactly as Motion.between(pose, pose)."""
-        return cls.between(pose, pose)
+        form = _pose_form(pose, "pose")
+        return cls._between([form, form])
 
     @classmethod
     def linear(cls, p0: Vector, p1: Vector) -> Motion:
@@ -158,6 +159,10 @@ class Motion:
         if forms[0][0] != forms[1][0]:
             raise InputError("pose0, pose1: give both as 4x4 matrices or both as "
                              "(position, quaternion) pairs")
+        return cls._between(forms)
+
+    @classmethod
+    def _between(cls, forms):
         if forms[0][0] == "matrix":
             m0, m1 = forms[0][1], forms[1][1]
             return cls._built(("between", (m0.tolist(), m1.tolist())),
