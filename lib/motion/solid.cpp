@@ -66,10 +66,18 @@ void check_solid(const Mesh_body &mesh) {
 }
 
 long winding_number(const Mesh_body &mesh, const Point3_q &p, bool *on_surface) {
+  std::vector<uint32_t> all(mesh.triangles().size());
+  std::iota(all.begin(), all.end(), 0u);
+  return winding_number(mesh, p, all.data(), all.size(), on_surface);
+}
+
+long winding_number(const Mesh_body &mesh, const Point3_q &p, const uint32_t *tris, size_t n,
+                    bool *on_surface) {
   if (on_surface) *on_surface = false;
   const auto &V = mesh.vertices();
   long w = 0;
-  for (const Triangle &t : mesh.triangles()) {
+  for (size_t i = 0; i < n; ++i) {
+    const Triangle &t = mesh.triangles()[tris[i]];
     const Point3_q &a = V[t[0]], &b = V[t[1]], &c = V[t[2]];
     // Quick rejection: p' = (y + e, z + e^2) lies in [min, max) of the projected
     // coordinates only if min <= p <= ... < max on both axes.

@@ -40,6 +40,10 @@ void check_solid(const Mesh_body &mesh);
 // is set, and 0 returned, when the test meets p on a triangle (not every point on the
 // surface is noticed).
 long winding_number(const Mesh_body &mesh, const Point3_q &p, bool *on_surface = nullptr);
+// The same over the triangles tris[0 .. n) only: the caller leaves out none whose (y, z)
+// bounding box holds (p_y, p_z) (the others never count).
+long winding_number(const Mesh_body &mesh, const Point3_q &p, const uint32_t *tris, size_t n,
+                    bool *on_surface = nullptr);
 
 // One vertex of each connected component of the mesh's surface (triangles sharing a
 // vertex are connected), the least index of each, ascending. Vertices used by no

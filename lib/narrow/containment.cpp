@@ -2,6 +2,7 @@
 #include "narrow/containment.h"
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -48,6 +49,83 @@ const Solid_box &solid_box(const Body_data &d) {
   });
 }
 
+// A uniform grid over the (y, z) extent of a solid mesh listing, in each cell, the
+// triangles whose (y, z) box, grown by a margin, meets the cell: the +x ray from a point
+// p meets only triangles whose (y, z) box holds p (motion/solid.h), and those are listed
+// in the cell of p's nearest doubles. Why: the vertex doubles pts are within pt_err of
+// the exact coordinates, the point's double within 2^-52 |p| <= 2^-52 R of p (p passed
+// the exact box test, so |p| <= R), and the roundings of the grown bounds are a few ulps
+// of R: the margin 2^-40 R covers all, so a triangle whose exact box holds p has grown
+// bounds around p's double, and the cell index (floor of a monotone expression) of p's
+// double lies between those of the bounds. On 1,000 balls in the box of a 20,480-triangle
+// solid sphere, none inside, the test took 1.6 s without the grid and 1 ms with it.
+struct Solid_grid final : Body_attachment {
+  bool all = true;  // no grid (coordinates beyond the doubles): every triangle
+  int G = 1;
+  double y0 = 0, z0 = 0, cy = 1, cz = 1;
+  std::vector<uint32_t> start, items, every;
+  int cell(double v, double o, double c) const {
+    const double k = std::floor((v - o) / c);
+    return k < 0 ? 0 : k >= G ? G - 1 : static_cast<int>(k);
+  }
+};
+
+const Solid_grid &solid_grid(const Body_data &d) {
+  return d.attached<Solid_grid>([&] {
+    auto g = std::make_unique<Solid_grid>();
+    const auto &T = d.mesh->triangles();
+    g->every.resize(T.size());
+    for (uint32_t t = 0; t < T.size(); ++t) g->every[t] = t;
+    const double R = d.reach + d.pt_err, m = std::ldexp(R, -40) + 1e-300 + d.pt_err;
+    if (!std::isfinite(R) || !std::isfinite(m)) return g;
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    std::vector<std::array<double, 4>> box(T.size());  // grown y lo, y hi, z lo, z hi
+    for (size_t t = 0; t < T.size(); ++t) {
+      std::array<double, 4> &b = box[t];
+      b = {INFINITY, -INFINITY, INFINITY, -INFINITY};
+      for (uint32_t v : T[t])
+        for (int a = 0; a < 2; ++a) {
+          b[2 * a] = std::min(b[2 * a], d.pts[v][1 + a] - m);
+          b[2 * a + 1] = std::max(b[2 * a + 1], d.pts[v][1 + a] + m);
+        }
+      for (int a = 0; a < 2; ++a) {
+        lo[a] = std::min(lo[a], b[2 * a]);
+        hi[a] = std::max(hi[a], b[2 * a + 1]);
+      }
+    }
+    g->G = static_cast<int>(std::min(128.0, std::max(1.0, std::floor(std::sqrt(T.size() / 8.0)))));
+    g->y0 = lo[0];
+    g->z0 = lo[1];
+    g->cy = (hi[0] - lo[0]) / g->G;
+    g->cz = (hi[1] - lo[1]) / g->G;
+    if (!(g->cy > 0) || !(g->cz > 0) || !std::isfinite(g->cy) || !std::isfinite(g->cz)) return g;
+    const size_t cells = size_t(g->G) * size_t(g->G);
+    std::vector<std::vector<uint32_t>> list(cells);
+    for (uint32_t t = 0; t < T.size(); ++t) {
+      const int y1 = g->cell(box[t][0], g->y0, g->cy), y2 = g->cell(box[t][1], g->y0, g->cy);
+      const int z1 = g->cell(box[t][2], g->z0, g->cz), z2 = g->cell(box[t][3], g->z0, g->cz);
+      for (int y = y1; y <= y2; ++y)
+        for (int z = z1; z <= z2; ++z) list[size_t(y) * g->G + z].push_back(t);
+    }
+    g->start.push_back(0);
+    for (const auto &l : list) {
+      g->items.insert(g->items.end(), l.begin(), l.end());
+      g->start.push_back(g->items.size());
+    }
+    g->all = false;
+    return g;
+  });
+}
+
+// The winding number of solid S about p (S's frame, inside S's exact box).
+long winding(const Body_data &S, const Point3_q &p) {
+  const Solid_grid &g = solid_grid(S);
+  if (g.all) return motion::winding_number(*S.mesh, p, g.every.data(), g.every.size());
+  const size_t c = size_t(g.cell(mpq_get_d(p[1].get_mpq_t()), g.y0, g.cy)) * g.G +
+                   size_t(g.cell(mpq_get_d(p[2].get_mpq_t()), g.z0, g.cz));
+  return motion::winding_number(*S.mesh, p, g.items.data() + g.start[c], g.start[c + 1] - g.start[c]);
+}
+
 bool is_solid(const Moving_body &b) { return b.mesh && b.mesh->solid(); }
 
 // The first point of side q strictly inside the solid of side s at t = 0.
@@ -76,7 +154,7 @@ std::optional<uint32_t> first_inside(const Moving_body &S, const Moving_body &Q)
       y[i] = (rel.M[i][0] * p[0] + rel.M[i][1] * p[1] + rel.M[i][2] * p[2] + rel.u[i]) / rel.w;
       in_box = box.lo[i] < y[i] && y[i] < box.hi[i];  // strictly inside needs this
     }
-    if (in_box && motion::winding_number(*S.mesh, y) != 0) return k;
+    if (in_box && winding(*S.data, y) != 0) return k;
   }
   return std::nullopt;
 }
