@@ -52,10 +52,10 @@ std::vector<pccd::motion::Triangle> triangles_of(const unsigned int *tris, size_
 
 // The size checks run before any allocation (nv * 3 cannot overflow below the limit).
 int new_mesh(pccd_body **out, std::vector<Point3_q> vertices,
-             std::vector<pccd::motion::Triangle> triangles, bool solid = false) {
+             std::vector<pccd::motion::Triangle> triangles) {
   auto body = std::make_unique<pccd_body>();
   body->mesh = std::make_shared<const pccd::motion::Mesh_body>(std::move(vertices),
-                                                         std::move(triangles), solid);
+                                                         std::move(triangles));
   body->data = pccd::narrow::make_body_data(body->mesh, nullptr);
   body->biggest = pccd::api::biggest_in(*body->mesh);
   pccd::bvh::hierarchy(*body->data);  // built with the body, shared by every check
@@ -144,7 +144,14 @@ PCCD_API int pccd_body_new_solid(pccd_body **out, const pccd_body *mesh) {
     *out = nullptr;
     require(mesh, "mesh");
     if (!mesh->mesh) throw Input_error("mesh: a sphere body is not a mesh (its balls are solid already)");
-    return new_mesh(out, mesh->mesh->vertices(), mesh->mesh->triangles(), true);
+    // The same vertices and triangles: the body data and hierarchy are shared.
+    auto body = std::make_unique<pccd_body>();
+    body->mesh = std::make_shared<const pccd::motion::Mesh_body>(mesh->mesh->vertices(),
+                                                                 mesh->mesh->triangles(), true);
+    body->data = pccd::narrow::same_geometry(*mesh->data, body->mesh);
+    body->biggest = mesh->biggest;
+    *out = body.release();
+    return PCCD_OK;
   });
 }
 
