@@ -188,3 +188,24 @@ def test_point_in_solid_of_a_larger_mesh_against_the_oracle():
         assert not want or got.first_contact.exact == 0
         inside += want
     assert 10 <= inside <= 50, inside
+
+
+def test_robot_self_pair_with_a_link_inside_another(tmp_path):
+    """A small box on a fixed joint inside the upper link's box: a self pair in contact at
+    t = 0 when that pair is checked (allowed=() checks even adjacent links; all_contacts,
+    as base and upper touch at t = 0 too), none when it is allowed (the default: adjacent
+    links are not checked)."""
+    pytest.importorskip("yourdfpy")
+    from polyccd.robot import load_urdf
+    inner = ARM.replace("</robot>", """  <link name="inner"><collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>
+  <joint name="fix" type="fixed"><parent link="upper"/><child link="inner"/><origin xyz="0.5 0 0"/></joint>
+</robot>""")
+    path = tmp_path / "arm.urdf"
+    path.write_text(inner)
+    robot = load_urdf(str(path))
+    for use_filter in (True, False):
+        res = robot.check([0], [0.1], allowed=(), filter=use_filter, all_contacts=True)
+        assert res.collides and res.first_contact.exact == 0
+        names = {p.names for p in res.scene.pairs if any("solid" in (c.a[0], c.b[0]) for c in p.contacts)}
+        assert any("inner" in n[0] + n[1] for n in names), names
+        assert not robot.check([0], [0.1], filter=use_filter).collides
