@@ -118,3 +118,12 @@ def test_solid_case_as_surfaces_is_the_surface_answer(path):
     surface = oracle_solid.solve(read(path)).surface
     res = polyccd.check(surfaces(bodies))
     agrees(res, {ij: p.first for ij, p in surface.pairs.items()}, surface.first, "surface")
+
+
+def test_corpus_files_are_what_the_generator_writes():
+    """The files hold the generator's cases and expectations (its hand answers checked
+    against the oracle), so a case edited by hand fails here."""
+    import make_solid_corpus as gen
+    assert sorted(name for name, _, _ in gen.CASES) == IDS
+    for name, bodies, want in gen.CASES:
+        assert (CORPUS / (name + ".json")).read_text() == gen.build(name, bodies, want), name

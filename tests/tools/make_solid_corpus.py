@@ -65,6 +65,26 @@ def prism(poly, z0, z1, fan_from=0):
     return v, t
 
 
+def ring(outer, inner, z0, z1):
+    """A square ring (a torus of genus 1): the prism over the square of half side outer
+    minus the square of half side inner, outward triangles; checked closed and
+    consistently oriented here (every directed edge once, its reverse once)."""
+    corners = [(1, 1), (-1, 1), (-1, -1), (1, -1)]            # counter-clockwise
+    v = [[F(a) * outer, F(b) * outer, F(z)] for z in (z0, z1) for a, b in corners]
+    v += [[F(a) * inner, F(b) * inner, F(z)] for z in (z0, z1) for a, b in corners]
+    o = lambda i, top: (i % 4) + 4 * top                        # noqa: E731
+    n = lambda i, top: 8 + (i % 4) + 4 * top                    # noqa: E731
+    t = []
+    for i in range(4):
+        t += [[o(i, 1), o(i + 1, 1), n(i + 1, 1)], [o(i, 1), n(i + 1, 1), n(i, 1)]]   # top, +z
+        t += [[o(i, 0), n(i + 1, 0), o(i + 1, 0)], [o(i, 0), n(i, 0), n(i + 1, 0)]]   # bottom
+        t += [[o(i, 0), o(i + 1, 0), o(i + 1, 1)], [o(i, 0), o(i + 1, 1), o(i, 1)]]   # outer wall
+        t += [[n(i, 0), n(i + 1, 1), n(i + 1, 0)], [n(i, 0), n(i, 1), n(i + 1, 1)]]   # inner wall
+    directed = [(tri[k], tri[(k + 1) % 3]) for tri in t for k in range(3)]
+    assert len(set(directed)) == len(directed) and all((b, a) in set(directed) for a, b in directed)
+    return v, t
+
+
 OCTAHEDRON = ([[2, 0, 0], [-2, 0, 0], [0, 2, 0], [0, -2, 0], [0, 0, 2], [0, 0, -2]],
               [[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4], [2, 0, 5], [1, 2, 5], [3, 1, 5], [0, 3, 5]])
 TETRA = lambda a, b, c, d: ([a, b, c, d], [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])  # noqa: E731
@@ -129,6 +149,11 @@ case("l-shape-box-in-arm", [mesh("L", L_SHAPE, solid=True), mesh("small", box("1
 HOLLOW = union(box(2), box(1, inward=True))
 case("hollow-box-in-cavity", [mesh("shell", HOLLOW, solid=True), mesh("small", box("1/4"), lin([0, 0, 0], ["1/2", 0, 0]))], None)
 case("hollow-box-in-wall", [mesh("shell", HOLLOW, solid=True), mesh("small", box("1/4", ["3/2", 0, 0]), lin([0, 0, 0], [0, "1/4", 0]))], F(0))
+# A torus-like solid (square ring: [-2, 2]^2 minus (-1, 1)^2, z in [0, 1]): a box in the
+# hole, inside the hull but outside the solid: none; a box in the ring: 0.
+RING = ring(2, 1, 0, 1)
+case("ring-box-in-hole", [mesh("ring", RING, solid=True), mesh("small", box("1/4", [0, 0, "1/2"]), lin([0, 0, 0], ["1/4", "1/4", 0]))], None)
+case("ring-box-in-ring", [mesh("ring", RING, solid=True), mesh("small", box("1/4", ["3/2", 0, "1/2"]), lin([0, 0, 0], [0, 1, 0]))], F(0))
 # Degenerate rays: a ball at the box's centre (the +x ray meets the diagonal 3-5), at the
 # octahedron's centre (through its vertex (2, 0, 0)); a ball whose +x ray runs in the
 # plane of the face y = 2, outside: none.
