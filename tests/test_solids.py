@@ -209,3 +209,11 @@ def test_robot_self_pair_with_a_link_inside_another(tmp_path):
         names = {p.names for p in res.scene.pairs if any("solid" in (c.a[0], c.b[0]) for c in p.contacts)}
         assert any("inner" in n[0] + n[1] for n in names), names
         assert not robot.check([0], [0.1], filter=use_filter).collides
+
+
+def test_pictures_of_a_containment_mark_the_point_held(tmp_path):
+    pytest.importorskip("matplotlib")
+    from polyccd.apps import to_png
+    res = P.check([Body(Mesh.box([4, 4, 4], solid=True)), Body(Mesh.box([1, 1, 1]))])
+    assert list(res.feature_indices(0)["solid"]) == [0] and list(res.feature_indices(1)["vertex"]) == [0]
+    assert to_png(res, tmp_path / "solid.png").stat().st_size > 0

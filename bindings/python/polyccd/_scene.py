@@ -100,7 +100,7 @@ class SceneResult:
 
     def feature_indices(self, body, *, pairs="first"):
         """{kind: int64 array} of the features of one body (an index or a name) that
-        touch, sorted and unique, kind in "vertex", "edge", "triangle", "sphere" (only the
+        touch, sorted and unique, kind in "vertex", "edge", "triangle", "sphere", "solid" (only the
         kinds present). pairs="first": the contacts of the scene's first pairs;
         "all": of every pair in contact."""
         source = {"first": self.first, "all": self.pairs}.get(pairs)
