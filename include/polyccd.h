@@ -646,6 +646,26 @@ PCCD_API int pccd_body_new_spheres_d(pccd_body **out, const double *centers,
 PCCD_API int pccd_body_new_spheres_s(pccd_body **out, const char *const *centers,
                                      const char *const *radii, size_t n);
 
+/* Creates the solid of a mesh (docs/design.md, "Solids"): a new body with the vertices
+ * and triangles of `mesh` that stands for the solid they bound, not only the surface.
+ * Two bodies touch when their solids share a point (a surface mesh: its closed
+ * triangles; a sphere body: its balls); so a body strictly inside a solid touches it at
+ * t = 0, reported as a contact of PCCD_FEATURE_SOLID (index 0) with a vertex or ball of
+ * the other body. The mesh must be closed and consistently oriented: no triangle repeats
+ * a vertex index and every edge is a side of exactly two triangles, once in each
+ * direction (outward or inward normals alike; the solid is the closure of the points of
+ * nonzero winding number). PCCD_EINVAL: out or mesh NULL, a sphere body, or a mesh that
+ * is not closed or consistently oriented, naming the first such edge in edge order
+ * (pccd_body_edge) by its vertices and a triangle using it ("triangles: edge (3, 7) of
+ * triangle 5 is open: ..."; "... runs the same way (3 -> 7) in triangles 5 and 9: one
+ * of them is flipped ..."; "triangles[4]: (2, 2, 6) repeats a vertex index ...").
+ * *out is NULL on error; release with pccd_body_free. */
+PCCD_API int pccd_body_new_solid(pccd_body **out, const pccd_body *mesh);
+
+/* *solid = 1 for a solid mesh (pccd_body_new_solid) and for a sphere body (balls are
+ * solid), 0 for a surface mesh. PCCD_EINVAL when b or solid is NULL. */
+PCCD_API int pccd_body_solid(const pccd_body *b, int *solid);
+
 PCCD_API void pccd_body_free(pccd_body *b);
 
 /* *kind = PCCD_BODY_MESH or PCCD_BODY_SPHERES (a pccd_body_type). PCCD_EINVAL when b or kind is NULL. */
@@ -671,7 +691,8 @@ PCCD_API int pccd_body_edge_triangles(const pccd_body *b, size_t i, size_t *tris
  *
  * Meshes touch when their surfaces (closed triangles) share a point; sphere sets when
  * two balls of different bodies share a point; a sphere set and a mesh when a ball meets
- * a closed triangle. Every pair of bodies in contact is reported with its first contact
+ * a closed triangle. A solid mesh (pccd_body_new_solid) also touches a body that has a
+ * vertex or ball centre strictly inside it at t = 0: first contact exactly 0. Every pair of bodies in contact is reported with its first contact
  * time and the feature pairs touching first (or all of them, with all_contacts), and
  * the scene's first contact time over all pairs.
  * ---------------------------------------------------------------------------------- */
@@ -683,7 +704,9 @@ typedef enum pccd_feature {
   PCCD_FEATURE_VERTEX = 0,
   PCCD_FEATURE_EDGE = 1,
   PCCD_FEATURE_TRIANGLE = 2,
-  PCCD_FEATURE_SPHERE = 3
+  PCCD_FEATURE_SPHERE = 3,
+  PCCD_FEATURE_SOLID = 4  /* the solid of a solid mesh (index 0) holding the other body's
+                             vertex or ball at t = 0 (pccd_body_new_solid) */
 } pccd_feature;
 
 /* How candidate feature pairs are found. All give identical answers. */

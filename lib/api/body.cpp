@@ -138,6 +138,28 @@ PCCD_API int pccd_body_new_spheres_s(pccd_body **out, const char *const *centers
   });
 }
 
+PCCD_API int pccd_body_new_solid(pccd_body **out, const pccd_body *mesh) {
+  return guard(__func__, [&] {
+    require(out, "out");
+    *out = nullptr;
+    require(mesh, "mesh");
+    if (!mesh->mesh) throw Input_error("mesh: a sphere body is not a mesh (its balls are solid already)");
+    // The same vertices and triangles: the body data and hierarchy are shared.
+    auto body = std::make_unique<pccd_body>();
+    body->mesh = std::make_shared<const pccd::motion::Mesh_body>(mesh->mesh->vertices(),
+                                                                 mesh->mesh->triangles(), true);
+    body->data = pccd::narrow::same_geometry(*mesh->data, body->mesh);
+    body->biggest = mesh->biggest;
+    *out = body.release();
+    return PCCD_OK;
+  });
+}
+
+PCCD_API int pccd_body_solid(const pccd_body *b, int *solid) {
+  return pccd::api::getter(__func__, b, "b", solid, "solid",
+                           [&] { return !b->mesh || b->mesh->solid() ? 1 : 0; });
+}
+
 PCCD_API void pccd_body_free(pccd_body *b) { delete b; }
 
 PCCD_API int pccd_body_kind(const pccd_body *b, int *kind) {

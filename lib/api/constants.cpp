@@ -25,7 +25,8 @@ static_assert(int(pred::STAGE_NONE) == int(PCCD_STAGE_NONE) && int(pred::STAGE_B
               "pccd_stage");
 
 static_assert(int(narrow::F_VERTEX) == int(PCCD_FEATURE_VERTEX) && int(narrow::F_EDGE) == int(PCCD_FEATURE_EDGE) &&
-                  int(narrow::F_TRIANGLE) == int(PCCD_FEATURE_TRIANGLE) && int(narrow::F_SPHERE) == int(PCCD_FEATURE_SPHERE),
+                  int(narrow::F_TRIANGLE) == int(PCCD_FEATURE_TRIANGLE) && int(narrow::F_SPHERE) == int(PCCD_FEATURE_SPHERE) &&
+                  int(narrow::F_SOLID) == int(PCCD_FEATURE_SOLID),
               "pccd_feature");
 
 static_assert(int(scene::Broad_phase::boxes) == PCCD_BROAD_BOXES &&

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "arith/errors.h"
+#include "motion/solid.h"
 
 namespace pccd::motion {
 
@@ -15,8 +16,8 @@ void check_body_size(size_t count, const char *what) {
                              std::to_string(kMax_body_elements));
 }
 
-Mesh_body::Mesh_body(std::vector<Point3_q> vertices, std::vector<Triangle> triangles)
-    : vertices_(std::move(vertices)), triangles_(std::move(triangles)) {
+Mesh_body::Mesh_body(std::vector<Point3_q> vertices, std::vector<Triangle> triangles, bool solid)
+    : vertices_(std::move(vertices)), triangles_(std::move(triangles)), solid_(solid) {
   check_body_size(vertices_.size(), "vertices");
   check_body_size(triangles_.size(), "triangles");
   if (triangles_.empty()) throw arith::Input_error("triangles: a mesh needs at least one triangle");
@@ -59,6 +60,7 @@ Mesh_body::Mesh_body(std::vector<Point3_q> vertices, std::vector<Triangle> trian
     if (new_edge || s.tri != sides[i - 1].tri) edge_tris_.push_back(s.tri);
   }
   if (!edges_.empty()) edge_tri_start_.push_back(edge_tris_.size());
+  if (solid_) check_solid(*this);
 }
 
 Sphere_body::Sphere_body(std::vector<Point3_q> centers, std::vector<arith::Rational> radii)

@@ -18,6 +18,10 @@
 // Spheres contract: at least one ball; every radius > 0 (else Input_error
 // "radii[2]: -1/2 is not > 0"). Balls may overlap or coincide.
 //
+// Solid (motion/solid.h): a mesh made with solid = true must be closed and consistently
+// oriented (Input_error naming the first open or flipped edge); it then stands for the
+// solid it bounds, not only its surface.
+//
 // Size: at most kMax_body_elements vertices, triangles or balls (Limit_error).
 #pragma once
 #include <array>
@@ -42,11 +46,12 @@ void check_body_size(size_t count, const char *what);
 class Mesh_body {
  public:
   // Validates (see the contract above) and derives the edges. Input_error / Limit_error.
-  Mesh_body(std::vector<Point3_q> vertices, std::vector<Triangle> triangles);
+  Mesh_body(std::vector<Point3_q> vertices, std::vector<Triangle> triangles, bool solid = false);
 
   const std::vector<Point3_q> &vertices() const { return vertices_; }
   const std::vector<Triangle> &triangles() const { return triangles_; }
   const std::vector<Edge> &edges() const { return edges_; }
+  bool solid() const { return solid_; }
 
   // The triangles incident to edge e (e < edges().size()), ascending: a pointer to the
   // first and the count.
@@ -59,6 +64,7 @@ class Mesh_body {
   std::vector<Point3_q> vertices_;
   std::vector<Triangle> triangles_;
   std::vector<Edge> edges_;
+  bool solid_ = false;
   // Incident triangles of edge e: edge_tris_[edge_tri_start_[e] .. edge_tri_start_[e+1]).
   std::vector<size_t> edge_tri_start_;
   std::vector<uint32_t> edge_tris_;

@@ -293,9 +293,11 @@ const char *kind_plural(int kind) {
 
 // The body points of feature f (checked), as indices into the body's points.
 int feature_points(const Moving_body &b, const Feature_arg &f, std::array<size_t, 3> &idx) {
+  if (f.kind == F_SOLID)
+    throw Input_error(std::string(f.kind_name) + ": a solid (a containment at t = 0) has no contact point or normal");
   if (f.kind < F_VERTEX || f.kind > F_SPHERE)
     throw Input_error(std::string(f.kind_name) + ": " + std::to_string(f.kind) +
-                      " is not a pccd_feature (0 vertex, 1 edge, 2 triangle, 3 sphere)");
+                      " is not a pccd_feature (0 vertex, 1 edge, 2 triangle, 3 sphere, 4 solid)");
   if (b.is_mesh() == (f.kind == F_SPHERE))
     throw Input_error(std::string(f.kind_name) + ": " + kind_word(f.kind) + " is not a feature of a " +
                       (b.is_mesh() ? "mesh body (vertex, edge or triangle)" : "sphere body (sphere)"));

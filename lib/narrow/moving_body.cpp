@@ -69,6 +69,15 @@ Moving_body prepare_body(std::shared_ptr<const Body_data> data, const motion::Ri
   return prepare_body(std::move(data), prepare_motion(m));
 }
 
+std::shared_ptr<const Body_data> same_geometry(const Body_data &d, std::shared_ptr<const motion::Mesh_body> mesh) {
+  if (!d.mesh || !mesh || mesh->vertices().size() != d.mesh->vertices().size() ||
+      mesh->triangles() != d.mesh->triangles())
+    throw arith::Internal_error("same_geometry: not the same mesh");
+  auto out = std::make_shared<Body_data>(d);
+  out->mesh = std::move(mesh);
+  return out;
+}
+
 std::shared_ptr<const Body_data> make_body_data(std::shared_ptr<const motion::Mesh_body> mesh,
                                                 std::shared_ptr<const motion::Sphere_body> spheres) {
   auto data = std::make_shared<Body_data>();

@@ -67,15 +67,21 @@ struct Body_data {
   // (Attachments).
   template <class T, class Make>
   const T &attached(Make &&make) const {
-    return attachments_.attached<T>(std::forward<Make>(make));
+    return attachments_->attached<T>(std::forward<Make>(make));
   }
 
  private:
-  Attachments attachments_;
+  // Shared by the copies of same_geometry (every attachment is derived from the points
+  // and elements alone).
+  std::shared_ptr<Attachments> attachments_ = std::make_shared<Attachments>();
 };
 
 std::shared_ptr<const Body_data> make_body_data(std::shared_ptr<const motion::Mesh_body> mesh,
                                                 std::shared_ptr<const motion::Sphere_body> spheres);
+// The data of d for mesh, a Mesh_body with d's vertices and triangles (a solid made of
+// a surface: motion/solid.h): the same derived data and attachments (the hierarchy is
+// not built again).
+std::shared_ptr<const Body_data> same_geometry(const Body_data &d, std::shared_ptr<const motion::Mesh_body> mesh);
 
 // The motion-dependent part of a Moving_body, derived from a valid motion alone and
 // shared: a pccd_motion keeps the one of its current value (api/motion_handle.h), so a

@@ -248,6 +248,8 @@ std::vector<std::pair<Feature_ref, Feature_ref>> Pair_ctx::contacts(
     case EE: add({F_EDGE, p.a}, {F_EDGE, p.b}); break;
     case SS: add({F_SPHERE, p.a}, {F_SPHERE, p.b}); break;
     case TT: add({F_TRIANGLE, p.a}, {F_TRIANGLE, p.b}); break;
+    case IN_A: add({F_SOLID, 0}, {side(1).is_mesh() ? F_VERTEX : F_SPHERE, p.b}); break;
+    case IN_B: add({side(0).is_mesh() ? F_VERTEX : F_SPHERE, p.a}, {F_SOLID, 0}); break;
     case ST:
     case TS: {
       const int ts = p.type == ST ? 1 : 0;  // the mesh side

@@ -10,6 +10,8 @@
 //   EE  closed edge of A / closed edge of B            TT  triangles of A and B at t = 0
 //   SS  ball of A / ball of B                          ST  ball of A / closed triangle of B
 //   TS  closed triangle of A / ball of B
+//   IN_A  point b of B strictly inside solid A at t = 0 (a = 0; narrow/containment.h)
+//   IN_B  point a of A strictly inside solid B at t = 0 (b = 0)
 #pragma once
 #include <array>
 #include <cstdint>
@@ -23,7 +25,7 @@
 
 namespace pccd::narrow {
 
-enum Prim_type : uint8_t { VF = 0, FV = 1, EE = 2, SS = 3, ST = 4, TS = 5, TT = 6 };
+enum Prim_type : uint8_t { VF = 0, FV = 1, EE = 2, SS = 3, ST = 4, TS = 5, TT = 6, IN_A = 7, IN_B = 8 };
 
 // a and b index side A's and side B's elements of the types the Prim_type names
 // (vertex, edge, triangle or ball).
@@ -36,7 +38,8 @@ struct Prim_pair {
 };
 
 // Feature of one body in a reported contact (values of pccd_feature in polyccd.h).
-enum Feature_type : uint8_t { F_VERTEX = 0, F_EDGE = 1, F_TRIANGLE = 2, F_SPHERE = 3 };
+// F_SOLID: the whole solid of a solid mesh (index 0), holding the other body's point.
+enum Feature_type : uint8_t { F_VERTEX = 0, F_EDGE = 1, F_TRIANGLE = 2, F_SPHERE = 3, F_SOLID = 4 };
 struct Feature_ref {
   uint8_t type = 0;
   uint32_t index = 0;
@@ -55,7 +58,7 @@ class Pair_ctx {
   motion::Point_traj<Rational> traj_q(int s, uint32_t k) const;
   motion::Point_traj<Interval> traj_i(int s, uint32_t k) const;
 
-  // Solves one primitive pair (not TT).
+  // Solves one primitive pair (not TT, IN_A, IN_B).
   pred::Contact_result solve(const Prim_pair &p, const pred::Solve_options &opt) const;
   // TT: the closed triangles a (of A) and b (of B) share a point at t = 0 (exact).
   bool triangles_meet_at_zero(uint32_t a, uint32_t b) const;

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <optional>
 #include <unordered_map>
 
 #include "enclose/enclose.h"
+#include "narrow/containment.h"
 #include "range/linearize.h"
 
 namespace pccd::scene {
@@ -76,6 +78,23 @@ class Driver final : public narrow::Candidate_sink {
     if (ctx_.side(0).is_mesh() && ctx_.side(1).is_mesh() && !opt_.apart_at_zero) {
       whole(source->static_candidates(pool_));
       if (found_any_ && !opt_.all_contacts) return;
+    }
+    // Solids (narrow/containment.h): a point strictly inside the other's solid at t = 0
+    // is a contact at t = 0, first and exact. Two meshes are tested only when their
+    // surfaces are apart at t = 0 (the static pass); apart_at_zero speaks of surfaces
+    // only, so it does not skip this.
+    if (!found_any_ && narrow::has_solid(ctx_)) {
+      if (std::optional<Prim_pair> in = narrow::contained_at_zero(ctx_)) {
+        auto s = std::make_unique<Solved_pair>();
+        s->prim = *in;
+        s->result.collides = s->result.exact = true;
+        s->result.lo = s->result.hi = 0;
+        cleared_.emplace(in->key(), kDone);
+        found_any_ = have_best_ = true;
+        best_hi_ = opt_.solve.want_time ? Rational(0) : Rational(-1);
+        out_.solved.push_back(std::move(s));
+        if (!opt_.all_contacts) return;
+      }
     }
     source->run(*this, out_.stats, pool_);
   }

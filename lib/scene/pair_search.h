@@ -4,6 +4,9 @@
 // prunes by time:
 //  - Meshes: the static test at t = 0 first (TT pairs of the source's static
 //    candidates); a contact there is the first one.
+//  - Solids (narrow/containment.h): a point of one body strictly inside the other's
+//    solid at t = 0 (meshes: when the static pass found nothing) is a contact at t = 0
+//    (IN_A / IN_B), which ends the search unless all_contacts.
 //  - The source's candidates of a piece [a, b] get the start of the first of 8 equal
 //    sub-pieces on which the two features' boxes meet (a lower bound of their contacts
 //    in [a, b]; none: no contact in [a, b], so the pair is left for a later piece; with

@@ -299,6 +299,19 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     auto base_of = [&](const Pair_plan &p) {
       return p.j < nr ? path.common_ancestor(r.bodies[p.i].link, r.bodies[p.j].link) : -1L;
     };
+    auto solid = [](const Body_data *d) { return d->mesh && d->mesh->solid(); };
+    auto solid_pair = [&](const Pair_plan &p) {
+      return solid(r.bodies[p.i].body.get()) ||
+             solid(p.j < nr ? r.bodies[p.j].body.get() : obst[p.j - nr].data.get());
+    };
+    // The two bodies' body-frame boxes (Body_data::box_c, box_h: they hold the exact
+    // points) through the pose enclosures at t = 0.
+    auto boxes_meet_at_zero = [&](const Pair_plan &p) {
+      const long base = base_of(p);
+      const Filter_side a = side(p.i, base), b = side(p.j, base);
+      return enclose::boxes_meet(enclose::frame_box(a.instant(0, 0), a.data->box_c, a.data->box_h),
+                                 enclose::frame_box(b.instant(0, 0), b.data->box_c, b.data->box_h));
+    };
     std::vector<Pair_plan> kept;
     Witness found;
     size_t found_i = 0, found_j = 0;
@@ -322,6 +335,12 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         lim.until = decide ? p.lower : horizon;
         if (decide) lim.max_tests = kAfter_tests;
       }
+      // A solid (narrow/containment.h) may hold the other body with no surface near:
+      // the filter bounds surface contacts only, so a pair with a solid whose bodies'
+      // boxes meet at t = 0 goes to the exact solve (its containment test at t = 0)
+      // with no bound. Boxes apart at t = 0: neither holds a point of the other then,
+      // and by continuity none until the surfaces meet, which the bound covers.
+      if (p.lower > 0 && solid_pair(p) && boxes_meet_at_zero(p)) p.lower = 0;
       if (p.lower <= horizon) kept.push_back(p);
     }
     std::stable_sort(kept.begin(), kept.end(),

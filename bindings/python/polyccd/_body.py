@@ -22,7 +22,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from typing import Any, Sequence, Tuple
+from typing import Any, Optional, Sequence, Tuple
 
 from ._types import Indices, Number, Points, Vector
 from . import _handles as handles
@@ -143,16 +143,24 @@ _BOX_TRIANGLES = [[0, 2, 1], [1, 2, 3], [4, 5, 6], [5, 7, 6], [0, 1, 4], [1, 5, 
 
 class Mesh(_Body):
     """A triangle mesh: vertices (n, 3) and triangles (m, 3) of 0-based indices.
-    Degenerate triangles (repeated indices, collinear points) are accepted as given."""
+    Degenerate triangles (repeated indices, collinear points) are accepted as given.
+
+    solid=True: the mesh stands for the solid it bounds (pccd_body_new_solid): a body
+    with a vertex or ball centre strictly inside it at t = 0 touches it at t = 0, the
+    contact ("solid", 0) with ("vertex", i) or ("sphere", i). The mesh must be closed and
+    consistently oriented (every edge a side of exactly two triangles, in opposite
+    directions); else InputError naming the first open or flipped edge."""
 
     __slots__ = ()
 
-    def __init__(self, vertices: Points, triangles: Indices) -> None:
+    def __init__(self, vertices: Points, triangles: Indices, solid: bool = False) -> None:
         nv, doubles, texts = _points(vertices, "vertices")
         nt, tris = _indices(triangles)
-        self._build(nv, doubles, None if texts is None else tuple(texts), tris)
+        if not isinstance(solid, (bool, np.bool_)):
+            raise InputError(f"solid: expected True or False, got {show(solid)}")
+        self._build(nv, doubles, None if texts is None else tuple(texts), tris, bool(solid))
 
-    def _build(self, nv, doubles, texts, tris):
+    def _build(self, nv, doubles, texts, tris, solid=False):
         t = ffi.from_buffer("unsigned int[]", tris)
         if doubles is not None:
             handle = handles.new("body", ffi.from_buffer("double[]", doubles), nv, t,
@@ -160,34 +168,45 @@ class Mesh(_Body):
         else:
             array, _keep = _texts(texts)
             handle = handles.new("body", array, nv, t, len(tris) // 3, via="new_mesh_s")
+        if solid:
+            handle = handles.new("body", handle, via="new_solid")
         object.__setattr__(self, "_handle", handle)
-        object.__setattr__(self, "_inputs", (nv, doubles, texts, tris))
+        object.__setattr__(self, "_inputs", (nv, doubles, texts, tris, solid))
+
+    @property
+    def solid(self) -> bool:
+        """True when the mesh stands for the solid it bounds (Mesh(..., solid=True))."""
+        out = ffi.new("int *")
+        check(lib.pccd_body_solid(self._handle, out))
+        return bool(out[0])
 
     def __reduce__(self):
         """Pickles as the exact inputs; unpickling builds a new Mesh from them."""
         return _rebuild, (Mesh, self._inputs)
 
     @classmethod
-    def box(cls, extents: Vector) -> Mesh:
-        """The closed box [-a/2, a/2] x [-b/2, b/2] x [-c/2, c/2] of extents (a, b, c) > 0
+    def box(cls, extents: Vector, solid: bool = False) -> Mesh:
+        """The closed box [-a/2, a/2] x [-b/2, b/2] x [-c/2, c/2] of extents (a, b, c) > 0,
+        centred at the origin of its body frame (place it with a Motion or Body's pose),
         as 12 outward-facing triangles; halving a double is exact, so its corners are
-        exactly +-extents/2."""
+        exactly +-extents/2. solid: as for Mesh (the box is closed)."""
         e = [float(x) for x in _items(extents, "extents", "3 numbers")]
         if len(e) != 3 or not all(np.isfinite(x) and x > 0 for x in e):
             raise InputError(f"extents: expected 3 positive finite numbers, got {show(extents)}")
         h = [x / 2 for x in e]
         v = [[h[0] * (1 if i & 1 else -1), h[1] * (1 if i & 2 else -1), h[2] * (1 if i & 4 else -1)]
              for i in range(8)]
-        return cls(v, _BOX_TRIANGLES)
+        return cls(v, _BOX_TRIANGLES, solid=solid)
 
     @classmethod
-    def cylinder(cls, radius: float, height: float, sections: int = 16) -> Mesh:
+    def cylinder(cls, radius: float, height: float, sections: int = 16, solid: bool = False) -> Mesh:
         """A closed prism around the cylinder of this radius and height (axis z, centred at
         the origin): the regular `sections`-gon whose inscribed circle has radius at least
         `radius` (vertices at radius / cos(pi / sections), enlarged by 1e-12 relative, which
         covers the rounding of the doubles, about 1e-16 relative), so the prism contains
         the cylinder; its distance from the cylinder is at most radius (1 / cos(pi /
-        sections) - 1), 2 % for 16 sections. Collisions are those of the prism."""
+        sections) - 1), 2 % for 16 sections. Collisions are those of the prism. solid: as
+        for Mesh (the prism is closed)."""
         r, hgt = float(radius), float(height)
         if not (np.isfinite(r) and r > 0 and np.isfinite(hgt) and hgt > 0):
             raise InputError(f"radius, height: expected positive finite numbers, got "
@@ -205,15 +224,20 @@ class Mesh(_Body):
             t += [[i, j, sections + j], [i, sections + j, sections + i]]
         for i in range(1, sections - 1):
             t += [[0, i + 1, i], [sections, sections + i, sections + i + 1]]
-        return cls(v, t)
+        return cls(v, t, solid=solid)
 
     @classmethod
-    def from_trimesh(cls, mesh: Any) -> Mesh:
+    def from_trimesh(cls, mesh: Any, solid: Optional[bool] = None) -> Mesh:
         """The Mesh of a trimesh.Trimesh (or any object with .vertices (n, 3) and .faces
         (m, 3)): its float64 vertices taken at their exact binary values, its faces as
         the triangles, as they are (no processing, merging or reorientation). A
         trimesh.Scene is refused: pass scene.to_geometry() (trimesh applies the node
-        transforms in floating point, so that is its rounding, not polyccd's)."""
+        transforms in floating point, so that is its rounding, not polyccd's).
+
+        solid: None (default) makes it a solid exactly when its triangles are closed and
+        consistently oriented (decided by the library on the triangles as given, not by
+        trimesh's is_watertight, which merges vertices first); True requires it
+        (InputError naming the first open or flipped edge), False keeps the surface."""
         vertices = getattr(mesh, "vertices", None)
         faces = getattr(mesh, "faces", None)
         if vertices is None or faces is None:
@@ -221,13 +245,33 @@ class Mesh(_Body):
                     if hasattr(mesh, "geometry") else "")
             raise InputError(f"mesh: expected a trimesh.Trimesh (with .vertices and .faces), "
                              f"got {show(mesh)}{hint}")
-        return cls(np.asarray(vertices), np.asarray(faces))
+        if solid is not None and not isinstance(solid, (bool, np.bool_)):
+            raise InputError(f"solid: expected None, True or False, got {show(solid)}")
+        surface = cls(np.asarray(vertices), np.asarray(faces))
+        if solid is False:
+            return surface
+        return surface._as_solid(required=solid is True)
+
+    def _as_solid(self, required: bool) -> Mesh:
+        """This mesh as a solid; when it is not closed and consistently oriented: the
+        InputError (required) or the mesh itself."""
+        if self.solid:
+            return self
+        out = ffi.new("pccd_body **")
+        rc = lib.pccd_body_new_solid(out, self._handle)
+        if rc != lib.PCCD_OK and not required:
+            return self
+        check(rc)
+        body = Mesh.__new__(Mesh)
+        object.__setattr__(body, "_handle", ffi.gc(out[0], lib.pccd_body_free))
+        object.__setattr__(body, "_inputs", self._inputs[:4] + (True,))
+        return body
 
     @property
     def vertices(self):
         """The vertices as an (n, 3) float64 array (read-only): exactly the body's
         coordinates when exact_doubles, else their nearest doubles (for drawing)."""
-        nv, doubles, texts, _ = self._inputs
+        nv, doubles, texts = self._inputs[:3]
         return doubles.reshape(nv, 3) if doubles is not None else _float_of_texts(texts, (nv, 3))
 
     @property
@@ -238,7 +282,7 @@ class Mesh(_Body):
     def exact_vertices(self) -> np.ndarray:
         """The vertices as an (n, 3) object array of Fractions, exactly as the body uses
         them (a float given is its binary value, a decimal text its decimal value)."""
-        nv, doubles, texts, _ = self._inputs
+        nv, doubles, texts = self._inputs[:3]
         return _fractions(doubles, texts, (nv, 3))
 
     @property
@@ -284,7 +328,8 @@ class Mesh(_Body):
 
     def __repr__(self):
         nv, ne, nt = self._counts()
-        return f"<polyccd.Mesh: {nv} vertices, {ne} edges, {nt} triangles>"
+        solid = ", solid" if self._inputs[4] else ""
+        return f"<polyccd.Mesh: {nv} vertices, {ne} edges, {nt} triangles{solid}>"
 
 
 class Spheres(_Body):

@@ -14,7 +14,7 @@ from ._results import ContactTime
 if TYPE_CHECKING:
     from ._scene import Body
 
-FEATURES = ("vertex", "edge", "triangle", "sphere")
+FEATURES = ("vertex", "edge", "triangle", "sphere", "solid")
 NORMAL_STATES = {lib.PCCD_NORMAL_NONE: "none", lib.PCCD_NORMAL_ENCLOSED: "enclosed",
                  lib.PCCD_NORMAL_UNKNOWN: "unknown"}
 
@@ -64,7 +64,7 @@ def contact_geometry(body_a: "Body", feature_a: Tuple[str, int], body_b: "Body",
         except (TypeError, ValueError):
             raise InputError(f"{place}: expected a pair (kind, index), got {show(f)}") from None
         if kind not in FEATURES:
-            raise InputError(f'{place}[0]: expected "vertex", "edge", "triangle" or "sphere", '
+            raise InputError(f'{place}[0]: expected "vertex", "edge", "triangle", "sphere" or "solid", '
                              f"got {show(kind)}")
         if isinstance(index, bool) or not isinstance(index, (int, np.integer)) or index < 0:
             raise InputError(f"{place}[1]: expected an index >= 0, got {show(index)}")

@@ -12,6 +12,7 @@ itself cannot travel, e.g. to a Dask worker).
 """
 from __future__ import annotations
 
+import numbers
 from fractions import Fraction
 from time import monotonic as _clock
 from typing import TYPE_CHECKING, Optional, Sequence, Tuple, Union
@@ -115,9 +116,20 @@ class Motion:
         return cls._wrap(handle, recipe)
 
     @classmethod
-    def translation(cls, coeffs_xyz: Sequence[Coefficients]) -> Motion:
-        """A pure translation: [xs, ys, zs], ascending powers of t."""
-        return cls(translation=coeffs_xyz)
+    def translation(cls, coeffs_xyz: Sequence[Union[Coefficients, Number]]) -> Motion:
+        """A pure translation: [xs, ys, zs], each a coefficient list in ascending powers
+        of t, or a number for a constant (Motion.translation([0.5, 0, 0.4]) stands
+        still at that offset)."""
+        items = _items(coeffs_xyz, "coeffs_xyz", "3 coefficient lists [xs, ys, zs] or 3 numbers")
+        return cls(translation=[[c] if isinstance(c, (numbers.Number, str)) else c
+                                for c in items])
+
+    @classmethod
+    def fixed(cls, pose: Pose) -> Motion:
+        """A body standing still at pose for all t: a 4x4 pose matrix or a (position,
+        quaternion w x y z) pair, exactly as Motion.between(pose, pose)."""
+        form = _pose_form(pose, "pose")
+        return cls._between([form, form])
 
     @classmethod
     def linear(cls, p0: Vector, p1: Vector) -> Motion:
@@ -147,6 +159,10 @@ class Motion:
         if forms[0][0] != forms[1][0]:
             raise InputError("pose0, pose1: give both as 4x4 matrices or both as "
                              "(position, quaternion) pairs")
+        return cls._between(forms)
+
+    @classmethod
+    def _between(cls, forms):
         if forms[0][0] == "matrix":
             m0, m1 = forms[0][1], forms[1][1]
             return cls._built(("between", (m0.tolist(), m1.tolist())),

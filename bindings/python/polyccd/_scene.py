@@ -22,23 +22,32 @@ from ._numbers import fraction_from_text, show
 from ._pccd import ffi, lib
 from ._results import ContactTime
 from ._solve import _config, _items
-from ._types import Number
+from ._types import Number, Pose
 
-FEATURES = ("vertex", "edge", "triangle", "sphere")
+FEATURES = ("vertex", "edge", "triangle", "sphere", "solid")
 BROAD_PHASES = {"auto": lib.PCCD_BROAD_AUTO, "boxes": lib.PCCD_BROAD_BOXES,
                 "brute": lib.PCCD_BROAD_BRUTE, "range": lib.PCCD_BROAD_RANGE,
                 "bvh": lib.PCCD_BROAD_BVH}
 
 
 class Body:
-    """A rigid body (Mesh or Spheres) on a Motion (None: stationary), with a name."""
+    """A rigid body (Mesh or Spheres) on a Motion (None: stationary), with a name.
+
+    pose: a static body placed at a pose instead of a motion, a 4x4 pose matrix or a
+    (position, quaternion w x y z) pair, exactly as Motion.fixed(pose) (the Body's motion
+    is then that Motion)."""
 
     __slots__ = ("shape", "motion", "name")
 
     def __init__(self, shape: Union[Mesh, Spheres], motion: Optional[Motion] = None,
-                 name: Optional[str] = None) -> None:
+                 name: Optional[str] = None, pose: Optional[Pose] = None) -> None:
         if not isinstance(shape, (Mesh, Spheres)):
             raise InputError(f"shape: expected a polyccd.Mesh or polyccd.Spheres, got {show(shape)}")
+        if pose is not None:
+            if motion is not None:
+                raise InputError("pose: give a motion or a pose, not both (compose a pose "
+                                 "into a motion with Motion.compose)")
+            motion = Motion.fixed(pose)
         if motion is not None and not isinstance(motion, Motion):
             raise InputError(f"motion: expected a polyccd.Motion or None, got {show(motion)}")
         if name is not None and not isinstance(name, str):
@@ -91,7 +100,7 @@ class SceneResult:
 
     def feature_indices(self, body, *, pairs="first"):
         """{kind: int64 array} of the features of one body (an index or a name) that
-        touch, sorted and unique, kind in "vertex", "edge", "triangle", "sphere" (only the
+        touch, sorted and unique, kind in "vertex", "edge", "triangle", "sphere", "solid" (only the
         kinds present). pairs="first": the contacts of the scene's first pairs;
         "all": of every pair in contact."""
         source = {"first": self.first, "all": self.pairs}.get(pairs)

@@ -27,7 +27,9 @@ Policies (stated once, checked here or by the C library):
   - geometry (collision by default): meshes as their triangles (vertices times the
     URDF scale in doubles, exactly equal vertices merged), boxes as 12 triangles,
     spheres as balls; a cylinder as the prism over a 16-gon circumscribing its circle (a
-    stand-in that contains it: polyccd has no cylinder primitive).
+    stand-in that contains it: polyccd has no cylinder primitive). Solids where closed:
+    boxes, cylinders and every mesh whose merged triangles are closed and consistently
+    oriented (Mesh.from_trimesh's rule); other meshes stay surfaces.
   - each geometry with a nonzero origin is one more chain link under its URDF link, on
     a fixed joint (named "<link>#<i>"), so the origin rotation is exact as well.
 """
@@ -88,7 +90,7 @@ def _mesh_file(filename, scale, place):
     if scale is not None:
         vertices = vertices * np.asarray(scale, dtype=np.float64)
     vertices, inverse = np.unique(vertices, axis=0, return_inverse=True)
-    return Mesh(vertices, inverse.reshape(-1)[faces])
+    return Mesh(vertices, inverse.reshape(-1)[faces])._as_solid(required=False)
 
 
 class Robot:
@@ -397,14 +399,14 @@ def _geometry(g, urdf, place):
         raise InputError(f"{place}.geometry: missing")
     e = g[0]
     if e.tag == "box":
-        return Mesh.box(_floats(e.get("size"), place + ".geometry.box.size"))
+        return Mesh.box(_floats(e.get("size"), place + ".geometry.box.size"), solid=True)
     if e.tag == "sphere":
         r = _floats(e.get("radius"), place + ".geometry.sphere.radius", 1)[0]
         return Spheres([[0, 0, 0]], [r])
     if e.tag == "cylinder":
         r = _floats(e.get("radius"), place + ".geometry.cylinder.radius", 1)[0]
         h = _floats(e.get("length"), place + ".geometry.cylinder.length", 1)[0]
-        return Mesh.cylinder(r, h)
+        return Mesh.cylinder(r, h, solid=True)
     if e.tag == "mesh":
         name = e.get("filename")
         if not name:

@@ -77,7 +77,8 @@ def _arrays(shape, geometry, index):
 
 def _contacts(contacts, n_bodies):
     """[(body, kind, k)] from a SceneResult (the first pairs' contacts), PairResults,
-    or (body index, (kind, k)) items."""
+    or (body index, (kind, k)) items. A ("solid", 0) feature (a solid holding the other
+    body's vertex or ball) marks nothing: the point it holds is marked."""
     if contacts is None:
         return []
     if hasattr(contacts, "first") and hasattr(contacts, "pairs"):
@@ -95,9 +96,9 @@ def _contacts(contacts, n_bodies):
         body, (kind, k) = item
         out.append((int(body), kind, int(k)))
     for body, kind, k in out:
-        if not 0 <= body < n_bodies or kind not in ("vertex", "edge", "triangle", "sphere"):
+        if not 0 <= body < n_bodies or kind not in ("vertex", "edge", "triangle", "sphere", "solid"):
             raise InputError(f"contacts: bad feature {(body, kind, k)!r}")
-    return sorted(set(out))
+    return sorted(set(f for f in out if f[1] != "solid"))
 
 
 def _edges_of(triangles):

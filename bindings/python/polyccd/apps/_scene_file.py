@@ -50,7 +50,7 @@ def _with_place(path, fn, *args):
 
 def _body_at(value, path, index):
     obj = _object_at(value, path)
-    known_keys(obj, path, ("name", "mesh", "spheres", "motion"))
+    known_keys(obj, path, ("name", "mesh", "spheres", "motion", "solid"))
     name = _string_at(obj["name"], f"{path}.name") if "name" in obj else f"body{index}"
     shapes = [k for k in ("mesh", "spheres") if k in obj]
     if len(shapes) != 1:
@@ -77,8 +77,14 @@ def _body_at(value, path, index):
             tris.append(row)
         if all(x < 2 ** 63 for row in tris for x in row):  # the Mesh's fast path for arrays
             tris = np.array(tris, dtype=np.int64).reshape(len(tris), 3)
-        shape = _with_place(f"{path}.mesh", Mesh, verts, tris)
+        solid = obj.get("solid", False)
+        if solid is not True and solid is not False:
+            raise InputError(f"{path}.solid: expected true or false, got {describe(solid)}")
+        shape = _with_place(f"{path}.mesh", Mesh, verts, tris, solid)
     else:
+        if "solid" in obj:
+            raise InputError(f"{path}.solid: only a mesh body takes \"solid\" (balls are "
+                             f"solid already)")
         s = _object_at(obj["spheres"], f"{path}.spheres")
         known_keys(s, f"{path}.spheres", ("centers", "radii"))
         for key in ("centers", "radii"):
