@@ -41,3 +41,25 @@ def test_no_file_points_outside_the_repository():
         for m in re.finditer(r"shared/(design|paper|peers/(?!tight-inclusion))\S*", text):
             bad.append(f"{name}: {m.group(0)}")
     assert not bad, "\n".join(bad)
+
+
+# Absolute paths that belong to one machine: home and work folders, mounts, network
+# file systems (a path such as /usr/local or /tmp/x in an example is not one).
+MACHINE_PATH = re.compile(r"(?<![\w.$}~/-])/(work|home|root|Users|mnt|srv|scratch|data|opt|media"
+                          r"|nfs|gpfs|lustre)/|\b[A-Za-z]:\\(Users|Documents)\b")
+
+
+def test_no_tracked_file_names_a_machine_path():
+    """Nothing tracked depends on where one machine keeps its files: data is found through
+    $POLYCCD_QUERY_DIR or beside the checkout, never at a path of the machine it was
+    written on."""
+    tracked = subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True).stdout.split()
+    assert len(tracked) > 100
+    bad = []
+    for name in tracked:
+        path = ROOT / name
+        if path.is_symlink() or not path.is_file():
+            continue
+        text = path.read_bytes().decode("utf-8", errors="replace")
+        bad += [f"{name}: {m.group(0)}" for m in MACHINE_PATH.finditer(text)]
+    assert not bad, "\n".join(bad)
