@@ -42,13 +42,18 @@ CPP_TESTS := $(patsubst tests/cpp/%.cpp,$(BUILD)/%,$(sort $(wildcard tests/cpp/t
 # The system packages, one list shared with .ci/run (comments after # dropped).
 APT_PKGS := $(strip $(shell sed 's/\#.*//' .ci/apt-packages.txt))
 
+# Parallel by default: the entry points below build with -j<number of CPUs> unless the
+# command line gave its own -j (seen in MAKEFLAGS only inside recipes, hence `=`).
+NPROC    := $(shell nproc 2>/dev/null || echo 2)
+PAR       = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(NPROC))
+
 .PHONY: all deps lib venv wheel docs install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind tsan
 
 # The entry points of a fresh machine (all, test, demo, bench, valgrind, sanitize) run
 # deps first, then make the rest in a sub-make, so nothing compiles while apt-get is still
 # installing (also under -j). `make check` and the targets below it use what is installed.
 all: deps
-	@$(MAKE) --no-print-directory lib venv
+	@$(MAKE) --no-print-directory $(PAR) lib venv
 	@echo "libpolyccd: $(abspath $(LIB))"
 
 # Installs what is missing, only when run as root (CI, fresh machines).
@@ -80,10 +85,21 @@ $(VENV)/.stamp: bindings/python/requirements.txt tests/requirements.txt
 	$(VENV)/bin/pip install -q -r tests/requirements.txt
 	touch $@
 
-# build_ffi.py generates the cffi declarations from include/polyccd.h on every run.
-venv: $(VENV)/.stamp $(LIB)
+# The editable install: build_ffi.py generates the cffi declarations from
+# include/polyccd.h and builds the extension in place against build/libpolyccd.so, then
+# pip installs the package in editable mode. Redone only when its inputs change (the
+# stamp is under build/, so `make clean`, which removes the extension, redoes it): the
+# header, the two build scripts, the package metadata, the venv. A rebuilt library
+# needs no new extension (it loads the library by its soname, and the interface is the
+# header), hence the order-only $(LIB).
+EDITABLE := $(BUILD)/editable.stamp
+venv: $(EDITABLE)
+
+$(EDITABLE): $(VENV)/.stamp include/polyccd.h bindings/python/build_ffi.py \
+             bindings/python/gen_cdef.py bindings/python/pyproject.toml bindings/python/setup.py | $(LIB)
 	cd bindings/python && ../../$(VPY) build_ffi.py
 	$(VENV)/bin/pip install -q --no-build-isolation --no-deps -e bindings/python
+	@touch $@
 
 # `make install PREFIX=/abs/path` (default /usr/local; DESTDIR for staging): the header,
 # the library (real file, soname symlink, link symlink), polyccd.pc and the CMake package
@@ -110,7 +126,8 @@ install-dirs-absolute:
 	@case "$(PREFIX)$(LIBDIR)$(INCLUDEDIR)" in /*) ;; *) echo "PREFIX must be an absolute path"; exit 1;; esac
 	@for d in "$(LIBDIR)" "$(INCLUDEDIR)"; do case "$$d" in /*) ;; *) echo "$$d: not absolute"; exit 1;; esac; done
 
-install: install-dirs-absolute $(LIB)
+install: install-dirs-absolute
+	@$(MAKE) --no-print-directory $(PAR) lib
 	install -d $(DESTDIR)$(INCLUDEDIR) $(DESTDIR)$(LIBDIR)/pkgconfig $(DESTDIR)$(LIBDIR)/cmake/polyccd
 	install -m 644 include/polyccd.h $(DESTDIR)$(INCLUDEDIR)/polyccd.h
 	install -m 755 $(LIB_REAL) $(DESTDIR)$(LIBDIR)/libpolyccd.so.$(VERSION)
@@ -156,18 +173,29 @@ check-symbols: $(LIB)
 test-c: $(CPP_TESTS) $(C_TESTS) check-header check-symbols
 	@set -e; for t in $(CPP_TESTS) $(C_TESTS); do echo "== $$t"; $$t; done
 
+# pytest in $(PYTEST_WORKERS) worker processes (pytest-xdist). Tests write only under
+# their tmp_path and take ports from the OS (port 0); --dist loadfile keeps a file's
+# tests, and so its module-scoped fixtures, on one worker: tests/test_install.py, the
+# only file that builds in the tree (make install, pip wheel, the sdist), runs alone.
+PYTEST_WORKERS ?= 2
 test-py: lib venv $(BUILD)/poly_probe
-	POLYCCD_QUERY_DIR=$${POLYCCD_QUERY_DIR:-../shared/data/ccd-queries} $(VPY) -m pytest -q tests
+	POLYCCD_QUERY_DIR=$${POLYCCD_QUERY_DIR:-../shared/data/ccd-queries} $(VPY) -m pytest -q \
+	  -n $(PYTEST_WORKERS) --dist loadfile tests
 
 # Builds and runs every test (C, C++ and Python) with what is installed: no apt-get.
-check: test-c test-py
+# Everything is built first, in parallel; then the C and C++ tests run, then pytest,
+# whose summary line ("N passed ...") ends the output.
+check:
+	@$(MAKE) --no-print-directory $(PAR) lib venv $(CPP_TESTS) $(C_TESTS) $(BUILD)/poly_probe
+	@$(MAKE) --no-print-directory test-c
+	@$(MAKE) --no-print-directory test-py
 
 test: deps
 	@$(MAKE) --no-print-directory check
 
 # Memory checks: the C tests and the corpus under valgrind (see tests/c/run_valgrind.sh).
 valgrind: deps
-	@$(MAKE) --no-print-directory $(C_TESTS)
+	@$(MAKE) --no-print-directory $(PAR) $(C_TESTS)
 	bash tests/c/run_valgrind.sh $(notdir $(C_TESTS))
 
 # ASan + UBSan build of the library and the C tests (tests/c/run_sanitizers.sh).

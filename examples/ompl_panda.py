@@ -11,7 +11,7 @@ and below the shelf. The straight joint path from start to goal hits the wall. R
 versus plates; self-collision is off (--self-collision turns it on: slower).
 
 Needs the "ompl" extra and the robot packages: pip install "polyccd[ompl]"
-example-robot-data (tests/requirements.txt has them). Run:
+example-robot-data, once polyccd is installed (tests/requirements.txt has them). Run:
     .venv/bin/python examples/ompl_panda.py [--time 60] [--seed 1]
 Prints the planning time, the checks made, the path and both verdicts; exits 1 when no
 path was found or a check of the returned path fails.
@@ -89,7 +89,7 @@ def dense_free(robot, space, waypoints, obstacles, step, **options):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n\n")[0])
     ap.add_argument("--time", type=float, default=60.0, help="planning time budget (s)")
     ap.add_argument("--seed", type=int, default=1, help="OMPL's random seed")
     ap.add_argument("--step", type=float, default=0.01,
@@ -103,7 +103,8 @@ def main(argv=None):
     try:
         from ompl import util as ou
     except ImportError:
-        raise SystemExit('ompl_panda: needs the "ompl" extra: pip install "polyccd[ompl]"')
+        raise SystemExit('ompl_panda: needs the "ompl" extra: pip install "polyccd[ompl]" '
+                         '(adds it to this installed polyccd)')
     ou.setLogLevel(ou.LogLevel.LOG_WARN)
     ou.RNG.setSeed(args.seed)  # before any OMPL sampler exists
     import polyccd

@@ -100,16 +100,41 @@ def _check_example_run(exe, prefix, env):
     out = _run([str(exe)], env=env)
     assert out.stdout == "first contact at t = 1/2\n", out.stdout
     ldd = _run(["ldd", str(exe)], env=env).stdout
-    loaded = [line for line in ldd.splitlines() if "libpolyccd" in line]
-    assert len(loaded) == 1 and str(prefix / "lib" / "libpolyccd.so.0") in loaded[0], ldd
+    loaded = [line.split("=>")[1].split("(")[0].strip() for line in ldd.splitlines()
+              if "libpolyccd" in line]
+    # (normalised: the rpath of polyccd.pc names the directory as <pkgconfig>/..)
+    assert len(loaded) == 1 and os.path.normpath(loaded[0]) == str(prefix / "lib" / "libpolyccd.so.0"), ldd
+
+
+def _readme_c_commands():
+    """The README's shell block that installs, builds and runs the C quick start."""
+    blocks = re.findall(r"```sh\n(.*?)```", (ROOT / "README.md").read_text(encoding="utf-8"), re.S)
+    (block,) = [b for b in blocks if "pkg-config" in b and "make install" in b]
+    return block
+
+
+def test_readme_c_commands_run_as_written(tmp_path):
+    """The README's C commands, verbatim, for a user whose HOME is tmp_path/home: the
+    program saved as ex.c, make install into $HOME/.local, pkg-config, cc, ./a.out, with
+    no variable set beforehand (no LD_LIBRARY_PATH: polyccd.pc's Libs carry the rpath).
+    Only `make` is pointed at the checkout (a shell function), so nothing is written in
+    the tree; the user types them in the checkout."""
+    home = tmp_path / "home"
+    home.mkdir()
+    (tmp_path / "ex.c").write_text(_readme_c_example())
+    script = f'make() {{ command make -C "{ROOT}" --no-print-directory "$@"; }}\nset -e\n' + _readme_c_commands()
+    out = _run(["sh", "-c", script], cwd=tmp_path, env=_env(HOME=str(home)))
+    assert out.stdout.endswith("first contact at t = 1/2\n"), out.stdout
+    _check_example_run(tmp_path / "a.out", home / ".local", _env())
 
 
 def test_readme_c_example_builds_with_pkg_config(prefix, tmp_path):
     (tmp_path / "ex.c").write_text(_readme_c_example())
-    # The README's command, as a user types it (PKG_CONFIG_PATH at the prefix).
+    # The README's command, as a user types it (PKG_CONFIG_PATH at the prefix); the
+    # program finds the library through the rpath of polyccd.pc's Libs.
     env = _env(PKG_CONFIG_PATH=str(prefix / "lib" / "pkgconfig"))
     _run(["sh", "-c", "cc ex.c $(pkg-config --cflags --libs polyccd) -o ex"], cwd=tmp_path, env=env)
-    _check_example_run(tmp_path / "ex", prefix, _env(LD_LIBRARY_PATH=str(prefix / "lib")))
+    _check_example_run(tmp_path / "ex", prefix, _env())
 
 
 def _cmake_project(src, version=""):
@@ -176,7 +201,8 @@ def _package_files():
     """Every file of bindings/python the wheel is made from (the sdist's, less csrc/)."""
     files = [PKG / n for n in ("setup.py", "pyproject.toml", "MANIFEST.in", "build_ffi.py",
                                "gen_cdef.py", "requirements.txt")]
-    return files + sorted((PKG / "polyccd").rglob("*.py"))
+    return (files + sorted((PKG / "polyccd").rglob("*.py"))
+            + sorted(f for f in (PKG / "third-party").rglob("*") if f.is_file()))
 
 
 def _build_inputs():
@@ -185,8 +211,21 @@ def _build_inputs():
     return _package_files() + [ROOT / f for f in _library_sources() + ["README.md", "LICENSE", "COPYING"]]
 
 
-# What the README's Python quick start imports besides polyccd (it builds meshes with trimesh).
-QUICK_START_EXTRA = ["trimesh>=4,<6"]
+def _readme_extra():
+    """The extra of the README's install line `pip install "./bindings/python[NAME]"`."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    m = re.search(r'^pip install "\./bindings/python\[(\w+)\]"', readme, re.M)
+    assert m, "no install line pip install \"./bindings/python[EXTRA]\" in README.md"
+    return m.group(1)
+
+
+def _extras():
+    import tomllib
+    return tomllib.loads((PKG / "pyproject.toml").read_text())["project"]["optional-dependencies"]
+
+
+# The extra the README installs for its Python quick start, and what it lists.
+QUICK_START_EXTRA = _extras()[_readme_extra()]
 
 
 def _requirements():
@@ -261,6 +300,12 @@ def test_wheel_contents(wheel):
     info = f"polyccd-{VERSION}.dist-info/"
     for legal in ("LICENSE", "COPYING"):
         assert z.read(info + "licenses/" + legal) == (ROOT / legal).read_bytes()
+    # The GMP that auditwheel bundles comes with its licence: notice and texts.
+    gmp = sorted(f.relative_to(PKG).as_posix() for f in (PKG / "third-party" / "GMP").iterdir())
+    assert gmp == ["third-party/GMP/GPL-2", "third-party/GMP/LGPL-3", "third-party/GMP/NOTICE"]
+    for legal in gmp:
+        assert z.read(info + "licenses/" + legal) == (PKG / legal).read_bytes(), legal
+    assert b"GNU MP Library" in z.read(info + "licenses/third-party/GMP/NOTICE")
     meta = z.read(info + "METADATA").decode()
     for field in ("License-Expression: GPL-3.0-or-later", "License-File: COPYING",
                   "Description-Content-Type: text/markdown", "Classifier: ", "Requires-Python: ",
@@ -278,11 +323,26 @@ def test_pip_installed_command_checks_a_corpus_case(venv, tmp_path):
     assert got["first_contact"]["exact"] == expect["first_contact"]
 
 
-def test_quick_starts_run_from_root_with_the_installed_wheel(venv):
-    """The README's Python quick start and the other Python examples, run from / with the
-    installed wheel (and trimesh, which the quick start uses), print what they promise."""
+def test_readme_extra_holds_what_the_quick_start_imports():
+    """Every module the README's Python quick start imports is the standard library's,
+    polyccd, or a package of the extra its install line names."""
+    import ast
+    code = re.findall(r"```python\n(.*?)```", (ROOT / "README.md").read_text(encoding="utf-8"), re.S)[0]
+    imported = {a.name.split(".")[0] for node in ast.walk(ast.parse(code))
+                if isinstance(node, (ast.Import, ast.ImportFrom))
+                for a in (node.names if isinstance(node, ast.Import) else [ast.alias(node.module or "")])}
+    listed = {re.split(r"[<>=\[ ]", r)[0].lower() for r in QUICK_START_EXTRA}
+    missing = imported - set(sys.stdlib_module_names) - {"polyccd"} - listed
+    assert not missing, (missing, _readme_extra(), QUICK_START_EXTRA)
+
+
+def test_quick_starts_run_from_root_with_the_installed_wheel(venv, wheel):
+    """The README's install line with the wheel for the checkout (the same build:
+    polyccd with the extra it names), then the README's Python quick start and the other
+    Python examples, run from /: they print what they promise."""
     _run([sys.executable, "-m", "pip", "--python", str(venv / "bin" / "python"), "install", "-q",
-          "--no-index", "--find-links", str(DEPS), *QUICK_START_EXTRA], env=_env())
+          "--no-index", "--find-links", str(DEPS), "--find-links", str(wheel.parent),
+          f"polyccd[{_readme_extra()}]"], env=_env())
     for example in sorted((ROOT / "examples" / "python").glob("*.py")):
         out = _run([str(venv / "bin" / "python"), str(example)], cwd="/", env=_env())
         promised = example.read_text().split("\n# Prints:\n", 1)[1]

@@ -48,6 +48,14 @@ def test_every_folder_is_a_layer_with_a_readme():
         assert (LIB / name / "README.md").is_file(), f"lib/{name} has no README.md"
 
 
+def test_design_layout_names_every_folder_in_layer_order():
+    """docs/design.md's layout table has one row per lib/ folder, in the layer order."""
+    design = (LIB.parent / "docs" / "design.md").read_text(encoding="utf-8")
+    layout = design.split("\n## Layout\n", 1)[1].split("\n## ", 1)[0]
+    rows = re.findall(r"^\| `lib/(\w+)` \|", layout, re.M)
+    assert rows == ORDER, rows
+
+
 def test_layers_include_only_earlier_layers():
     bad = [v for p in sources() for v in violations(p, p.read_text())]
     assert bad == []

@@ -46,7 +46,8 @@ def test_missing_extra_names_it(monkeypatch, tmp_path):
     monkeypatch.setattr(PO, "_CLASSES", None)
     with pytest.raises(ModuleNotFoundError, match=r"^polyccd\.ompl needs the package 'ompl', "
                        r"which is not installed \(.*\); install it with: pip install "
-                       r'"polyccd\[ompl\]"$'):
+                       r'"polyccd\[ompl\]" \(adds the \'ompl\' extra\'s packages to this '
+                       r'installed polyccd\)$'):
         PO.RobotSpace(robot, [post(0, 1.5)])
     with pytest.raises(ImportError, match=r'pip install "polyccd\[ompl\]"'):
         PO.MotionValidator

@@ -9,7 +9,9 @@ Sphinx's C domain entries, so the reference can never drift from the header:
   (`PCCD_API ret name(args);`), opaque handles (`typedef struct X X;`), structs with
   their members and enums with their enumerators (each with its trailing comment), and
   `#define` constants;
-- comment text is shown preformatted (the header's own layout: aligned lists, formulas).
+- comment text is rendered as prose (c_prose.py: paragraphs, bullet and aligned lists);
+- a section's title is the banner's first words (up to a colon or full stop), the rest
+  of the banner its introduction, so the sidebar lists short titles.
 """
 import re
 from pathlib import Path
@@ -18,6 +20,8 @@ from docutils import nodes
 from docutils.parsers.rst import Directive
 from docutils.statemachine import StringList
 from sphinx.util.nodes import nested_parse_with_titles
+
+from c_prose import CProse
 
 SKIP_DEFINES = {"POLYCCD_H", "PCCD_API"}
 
@@ -85,16 +89,23 @@ def _rst(path):
     # Trailing comments stay glued to their code line: mark them so _blocks keeps them.
     out, doc = [], []
 
+    def prose(comment, indent):
+        out.extend([f"{indent}.. c-prose::", ""] + [f"{indent}   {ln}" if ln.strip() else ""
+                                                    for ln in comment])
+
     def emit(directive, sig, comment, indent=""):
         out.extend(["", f"{indent}.. c:{directive}:: {sig}", ""])
         if comment:
-            out.extend([f"{indent}   ::", ""] + [f"{indent}      {ln}" for ln in comment])
+            prose(comment, indent + "   ")
 
     for kind, item in _blocks_with_trailing(text):
         if kind == "comment":
-            title = re.match(r"^-{2,}\s*(.*?)\s*-{2,}$", " ".join(item).strip())
-            if title:
-                out.extend(["", title.group(1), "-" * len(title.group(1)), ""])
+            section = _section(item)
+            if section:
+                title, intro = section
+                out.extend(["", title, "-" * len(title), ""])
+                if intro:
+                    prose(intro, "")
                 doc = []
             else:
                 doc = item
@@ -102,6 +113,25 @@ def _rst(path):
         _code(item, doc, emit)
         doc = []
     return out
+
+
+def _section(lines):
+    """(title, introduction lines) of a section banner, `/* ---- Title ---- */` or a
+    comment framed by lines of dashes whose first sentence names the section; None for
+    any other comment."""
+    short = re.match(r"^-{2,}\s*(.*?)\s*-{2,}$", " ".join(lines).strip())
+    if len(lines) == 1 and short:
+        return short.group(1), []
+    if len(lines) < 3 or not re.fullmatch(r"-{4,}", lines[0].strip()) \
+            or not re.fullmatch(r"-{4,}", lines[-1].strip()):
+        return None
+    body = lines[1:-1]
+    m = re.match(r"\s*(.+?)[:.](\s+|$)(.*)$", body[0])
+    title, rest = (m.group(1), m.group(3)) if m else (body[0].strip(), "")
+    aside = re.match(r"(.+?) (\(.*\))$", title)   # "Title (the paper's section 3)"
+    if aside:
+        title, rest = aside.group(1), f"{aside.group(2)[1:-1].capitalize()}: {rest}"
+    return title, ([rest] if rest.strip() else []) + body[1:]
 
 
 def _blocks_with_trailing(text):
@@ -146,7 +176,7 @@ def _code(code, doc, emit):
         if m:
             if m.group(1) not in SKIP_DEFINES:
                 c = comment + (_comment_text(m.group(3)) if m.group(3) else [])
-                emit("macro", m.group(1), [f"{m.group(1)} = {m.group(2).strip()}"] + c)
+                emit("macro", m.group(1), [f"{m.group(1)} = {m.group(2).strip()}", ""] + c)
             rest = rest[m.end():]
             continue
         m = re.match(r"/\*.*?\*/", rest, re.S)   # a trailing comment already shown
@@ -172,4 +202,5 @@ class CHeader(Directive):
 
 def setup(app):
     app.add_directive("c-header", CHeader)
+    app.add_directive("c-prose", CProse)
     return {"parallel_read_safe": True, "version": "1"}

@@ -96,7 +96,7 @@ def case_runner(polyccd, family, n, motion):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n")[0])
     ap.add_argument("--sizes", default="125,250,500,1k,2k,4k,8k,16k")
     ap.add_argument("--families", default=",".join(af.FAMILIES + tuple(ONLINE)))
     ap.add_argument("--methods", default=",".join(METHODS))

@@ -87,7 +87,7 @@ from bodies_methods import (Answer, fcl_build_mesh, fcl_build_mol, fcl_mesh_quer
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n")[0])
     ap.add_argument("--quick", action="store_true", help=f"only {', '.join(QUICK_SIZES)} (CI smoke)")
     ap.add_argument("--sizes", help=f"comma-separated from {', '.join(ALL_SIZES)}; a bare 1k / 5k / ... "
                     "selects both families' entries of that size")

@@ -312,7 +312,7 @@ def show_rows(rows, rot_map):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n")[0])
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--sizes", help="comma-separated from " + ", ".join(dict.fromkeys(list(MESHES) + list(MOLS))))
     ap.add_argument("--repeat", type=int, default=int(os.environ.get("POLYCCD_BENCH_REPEAT", "3")))

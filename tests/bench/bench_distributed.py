@@ -110,7 +110,7 @@ def best(fn, repeat):
 
 
 def main(argv=None):
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.splitlines()[0])
     p.add_argument("--queries", type=int, default=10000)
     p.add_argument("--repeat", type=int, default=3)
     p.add_argument("--tasks", type=int, default=1000)

@@ -293,7 +293,7 @@ def run_combo(polyccd, cls, motion, sizes, opts):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n")[0])
     ap.add_argument("--sizes", default=None, help=f"comma-separated n (default {DEFAULT_SIZES}, "
                     f"each motion class up to {DEFAULT_MAX})")
     ap.add_argument("--classes", default=",".join(CLASSES))

@@ -116,7 +116,7 @@ def queries(robot, rspace, plates, n, rng, spread):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n\n")[0])
     ap.add_argument("--queries", type=int, default=3)
     ap.add_argument("--runs", type=int, default=3, help="plans per query and method")
     ap.add_argument("--seed", type=int, default=20261125)

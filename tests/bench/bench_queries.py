@@ -222,7 +222,7 @@ def ratio(x):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n")[0])
     ap.add_argument("--repeat", type=int, default=int(os.environ.get("POLYCCD_BENCH_REPEAT", "3")))
     ap.add_argument("--limit", type=int, default=0, help="only the first N queries (0 = all)")
     ap.add_argument("--no-ti", action="store_true", help="skip Tight Inclusion")

@@ -156,7 +156,7 @@ def run_arm(P, load_urdf, example_robot_file, name, self_collision, args, summar
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n\n")[0])
     ap.add_argument("--n", type=int, default=1000, help="segments per arm and setting (default 1000)")
     ap.add_argument("--seed", type=int, default=20261124)
     ap.add_argument("--resolution", type=float, nargs="+", default=[0.05, 0.1, 0.2],

@@ -148,7 +148,7 @@ def tunnel(repeat):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n\n")[0])
     ap.add_argument("--sizes", default="32,64,224@64",
                     help="cloth resolutions n (2 n^2 triangles), n@m: m resampled onto n")
     ap.add_argument("--phases", default=",".join(step_frames.PHASES))

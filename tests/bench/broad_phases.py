@@ -44,7 +44,7 @@ def bodies_of(label, variant, cache, swing=False):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.splitlines()[0])
     ap.add_argument("--sizes", default="mesh-1k,mesh-5k,mol-1k,mol-5k")
     ap.add_argument("--phases", default="boxes,range")
     ap.add_argument("--repeat", type=int, default=3)

@@ -55,7 +55,7 @@ $(FUZZ_TARGETS): $(FUZZ_BUILD)/%: $(FUZZ_BUILD)/%.ho $(FUZZ_OBJS)
 fuzz-build: $(FUZZ_TARGETS)
 
 fuzz: fuzz-deps
-	@$(MAKE) --no-print-directory fuzz-build lib venv
+	@$(MAKE) --no-print-directory $(PAR) fuzz-build lib venv
 	@$(MAKE) --no-print-directory fuzz-run
 
 fuzz-run:

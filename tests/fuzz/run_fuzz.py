@@ -87,7 +87,7 @@ def run(name, cmd, seconds, build, extra, timeout=TIMEOUT_S):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n")[0])
     ap.add_argument("--build", type=Path, default=ROOT / "build-fuzz")
     ap.add_argument("--seconds", default="10",
                     help="seconds per harness: N, or name=N,name=N (others: 10)")

@@ -199,7 +199,7 @@ def binary_seeds(doc):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n")[0])
     ap.add_argument("out", type=Path)
     ap.add_argument("--queries", type=Path, default=Path(os.environ.get(
         "POLYCCD_QUERY_DIR", ROOT.parent / "shared" / "data" / "ccd-queries")))

@@ -133,7 +133,7 @@ def all_files(timings=None):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.splitlines()[0])
     ap.add_argument("--out", default=OUT)
     ap.add_argument("--check", action="store_true")
     ap.add_argument("--times", action="store_true")

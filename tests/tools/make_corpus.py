@@ -136,7 +136,7 @@ def all_files():
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.splitlines()[0])
     ap.add_argument("--out", default=os.path.join(TESTS, "..", "corpus"))
     ap.add_argument("--check", action="store_true")
     args = ap.parse_args()

@@ -7,7 +7,9 @@ import importlib
 def need(what, extra, *modules):
     """Imports the modules (e.g. "trimesh", "scipy") that `what` (the feature, e.g.
     "polyccd.apps.to_trimesh") needs and returns the first; ModuleNotFoundError naming
-    the missing one and `pip install "polyccd[extra]"` when one is not installed."""
+    the missing one and `pip install "polyccd[extra]"` when one is not installed (pip adds
+    the extra's packages to the polyccd already installed: no package index serves
+    polyccd itself)."""
     out = []
     for name in modules:
         try:
@@ -15,5 +17,6 @@ def need(what, extra, *modules):
         except ImportError as e:
             raise ModuleNotFoundError(
                 f"{what} needs the package {name.split('.')[0]!r}, which is not installed "
-                f"({e}); install it with: pip install \"polyccd[{extra}]\"", name=name) from None
+                f"({e}); install it with: pip install \"polyccd[{extra}]\" (adds the "
+                f"'{extra}' extra's packages to this installed polyccd)", name=name) from None
     return out[0]

@@ -1,9 +1,10 @@
 """polyccd.ompl: OMPL's planners with polyccd's exact checks for a Robot among obstacles.
 
-An optional extra: `pip install "polyccd[ompl]"` (PyPI ompl >= 2.0.1, OMPL's nanobind
-bindings). `import polyccd` never imports this module, and this module imports ompl only
-when an OMPL object is made (RobotSpace, MotionValidator, StateValidityChecker): without
-it they raise ImportError naming the extra.
+An optional extra: `pip install "polyccd[ompl]"` adds it to an installed polyccd (PyPI
+ompl >= 2.0.1, OMPL's nanobind bindings; from a checkout: `pip install
+"./bindings/python[ompl]"`). `import polyccd` never imports this module, and this module
+imports ompl only when an OMPL object is made (RobotSpace, MotionValidator,
+StateValidityChecker): without it they raise ImportError naming the extra. In short::
 
     from polyccd.ompl import RobotSpace
     space = RobotSpace(robot, obstacles, fixed={"panda_finger_joint1": 0.02},
@@ -17,9 +18,10 @@ it they raise ImportError naming the extra.
 The state space is an ompl.base.RealVectorStateSpace over the planned joints (bounds:
 the URDF limits; continuous joints [-pi, pi]; `bounds=` overrides), the other actuated
 joints held at `fixed` values. Its SpaceInformation gets
-  - StateValidityChecker: Robot.check(q, q, obstacles, **check_options), the exact check
+
+  - StateValidityChecker: ``Robot.check(q, q, obstacles, **check_options)``, the exact check
     of the robot standing still at q (a zero-length segment: constant link motions);
-  - MotionValidator: Robot.check(q1, q2, obstacles, **check_options), the exact check of
+  - MotionValidator: ``Robot.check(q1, q2, obstacles, **check_options)``, the exact check of
     the segment's joint path. checkMotion(s1, s2) -> bool; checkMotion(s1, s2, last_valid)
     with last_valid a list [state or None, fraction] (OMPL's std::pair<State*, double>&):
     when the motion is invalid, last_valid[1] = f strictly before the certified first
@@ -31,6 +33,7 @@ joints held at `fixed` values. Its SpaceInformation gets
     whose trampoline forwards the C++ three-argument form (ompl 2.0.1's does not: C++
     planners calling it, such as KPIECE1, get the two-argument answer and an untouched
     last valid state there).
+
 Any exception inside a check (a LimitError from `limits=`, say) makes the state or
 motion invalid (never accepted unchecked) and is kept in `space.errors`.
 
@@ -55,6 +58,11 @@ from fractions import Fraction
 import numpy as np
 
 from ._errors import InputError
+
+# The public names (the generated reference lists each: tests/test_docs.py);
+# MotionValidator and StateValidityChecker are made when first used (__getattr__).
+__all__ = ["RobotSpace", "MotionValidator", "StateValidityChecker", "joint_path", "joint_space",
+           "simplify"]
 
 # last_valid's candidate fractions: ContactTime.lo times these, each tried until the
 # path from s1 to its state is contact-free (exactly); then s1 itself.

@@ -54,6 +54,10 @@ if TYPE_CHECKING:
     from ._motion import Motion
     from ._scene import Body
 
+# The public names (the generated reference lists each: tests/test_docs.py).
+__all__ = ["load_urdf", "Robot", "RobotResult", "RobotContact", "PathResult", "SUPPORTED"]
+
+#: The URDF joint types load_urdf reads (floating and planar joints are refused).
 SUPPORTED = ("fixed", "revolute", "continuous", "prismatic")
 
 def _floats(text, place, n=3):
@@ -264,6 +268,10 @@ class RobotContact:
 
 @dataclass(frozen=True)
 class RobotResult:
+    """The answer of Robot.check over one joint-space segment: whether anything touches,
+    the first contact time, the feature pairs that may touch first, the joint values at
+    the ends of the time's enclosure, the scene's answer and a certified contact-free
+    prefix (free_until)."""
     collides: bool
     first_contact: object          # ContactTime or None
     contacts: tuple                # RobotContact of the pairs that may touch first
@@ -284,6 +292,8 @@ class RobotResult:
 
 @dataclass(frozen=True)
 class PathResult:
+    """The answer of Robot.check_path: the first segment in contact and its RobotResult
+    (both None when the whole path is contact-free)."""
     segment: Optional[int]   # the first colliding segment (waypoints[s] -> [s + 1]), or None
     result: Optional[RobotResult]
 

@@ -15,6 +15,7 @@ library's grammar and size limits.
 from ._numbers import exact_fraction, int_from_text, ratio_text, show
 from ._pccd import lib as _lib
 
+#: The longest number text the library reads (PCCD_MAX_NUMBER_CHARS).
 MAX_NUMBER_CHARS: int = _lib.PCCD_MAX_NUMBER_CHARS
 
 __all__ = ["exact_fraction", "int_from_text", "ratio_text", "show", "MAX_NUMBER_CHARS"]

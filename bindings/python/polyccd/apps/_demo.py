@@ -84,11 +84,13 @@ def run_cases(out):
 
 
 def query_dir():
-    """The shared benchmark query folder, or None when it is not there."""
+    """The shared benchmark query folder, or None when it is not there: $POLYCCD_QUERY_DIR
+    (absolute, or relative to the working directory or the checkout), else
+    ../shared/data/ccd-queries beside the checkout this package runs from (an installed
+    package has no checkout: then only the variable finds it)."""
     env = os.environ.get("POLYCCD_QUERY_DIR")
     repo = Path(__file__).resolve().parents[4]  # bindings/python/polyccd/apps -> the repo
-    candidates = ([Path(env), repo / env] if env else
-                  [repo / "../shared/data/ccd-queries", Path("/work/shared/data/ccd-queries")])
+    candidates = [Path(env), repo / env] if env else [repo / "../shared/data/ccd-queries"]
     for d in candidates:
         if d.is_dir():
             return d.resolve()

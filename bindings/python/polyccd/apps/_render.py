@@ -8,7 +8,6 @@ ball centre is moved in float with numpy. The geometry comes from the shapes' fl
 arrays (polyccd.apps' LoadedMesh.vertices / .triangles, LoadedSpheres.centers /
 .radii); other shapes need them passed in `geometry`.
 """
-import textwrap
 from fractions import Fraction
 from pathlib import Path
 
@@ -16,6 +15,7 @@ import numpy as np
 
 from .. import InputError
 from ..extras import need
+from ._annotate import add_legend, place_labels, tidy_ticks, touching_line
 from ._files import replace_file
 from ._draw_geometry import (BODY_COLORS, HIGHLIGHT, _arrays, _clip_segments, _clip_to_box,
                              _contacts, _decimate, _edges_of, _float_pose, _parts, _shade, _time)
@@ -184,7 +184,7 @@ def _draw(ax, fig, placed, features, center, half, *, max_triangles, labels, zoo
         ax.add_collection3d(poly)
 
     # The touching features, always drawn in full and on top.
-    red_polys, red_lines, red_points, balls = [], [], [], []
+    red_polys, red_lines, red_points, balls, label_at = [], [], [], [], []
     for b, kind, k in features:
         body = placed[b]
         pts = body.feature_points(kind, k)
@@ -223,7 +223,7 @@ def _draw(ax, fig, placed, features, center, half, *, max_triangles, labels, zoo
                        edgecolors="black", linewidths=1.2, alpha=0.95, depthshade=False,
                        zorder=7)
         if zoomed and labels is not None and labels.get(b) is not None:
-            ax.text(c[0], c[1], c[2] + r * 1.1, f" {labels[b](k)}", fontsize=8, zorder=8)
+            label_at.append((b, c[0], c[1], c[2] + r * 1.1, labels[b](k)))
     for body, path in zip(placed, paths or ()):
         if path is not None:  # where the body's centre goes over [0, 1]
             color = np.array(mcolors.to_rgb(BODY_COLORS[body.index % len(BODY_COLORS)])) * 0.6
@@ -240,6 +240,9 @@ def _draw(ax, fig, placed, features, center, half, *, max_triangles, labels, zoo
     ax.set_xlabel("x")
     ax.set_ylabel("y")
     ax.set_zlabel("z")
+    tidy_ticks(ax)
+    # Labels that would overlap are left out (the first features' first): their count.
+    return place_labels(ax, fig, label_at) if label_at else 0
 
 
 def _label_functions(labels):
@@ -304,20 +307,18 @@ def render_scene(bodies, t, contacts, path, title=None, *, geometry=None, labels
         zh = zoom_half if zoom_half is not None else max(half * 0.15, 3.5 * max(balls, default=0))
         zx = fig.add_subplot(1, 2, 2, projection="3d")
         zx.view_init(elev=elev, azim=azim)
-        _draw(zx, fig, placed, features, c, zh, max_triangles=max_triangles,
-              labels=label_fns, zoomed=True)
-        zx.set_title("contact region (zoom)", fontsize=10)
-    names = ", ".join(f"{b.name} ({BODY_COLORS[b.index % len(BODY_COLORS)]})"
-                      for b in placed)
+        hidden = _draw(zx, fig, placed, features, c, zh, max_triangles=max_triangles,
+                       labels=label_fns, zoomed=True)
+        zx.set_title("contact region (zoom)" + (f"; {hidden} more touching balls not labelled"
+                                                if hidden else ""), fontsize=10)
     t_exact = _time(t)
     head = title or "polyccd scene"
-    # The body list wrapped (a robot has a dozen or more meshes), at most three lines.
-    lines = textwrap.wrap(f"bodies: {names}", width=160)
-    if len(lines) > 3:
-        lines = lines[:2] + [f"... ({len(placed)} bodies)"]
-    fig.suptitle("\n".join([head, f"drawn at t = {float(t_exact):.12g}   touching features in "
-                                   f"red: {len(features)}"] + lines), fontsize=11)
-    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.02, top=0.88 - 0.03 * (len(lines) - 1),
-                        wspace=0.02)
+    # The title names the bodies in contact; the legend shows every colour (a robot has a
+    # dozen or more meshes: the touching ones first, the rest counted).
+    fig.suptitle("\n".join([head, f"{touching_line(placed, features)}   (drawn at t = "
+                                   f"{float(t_exact):.12g}, {len(features)} features in red)"]),
+                 fontsize=11)
+    add_legend(fig, placed, features, BODY_COLORS)
+    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.07, top=0.9, wspace=0.02)
     fmt = Path(path).suffix[1:].lower() or "png"  # a temporary file, renamed (_files.py)
     return replace_file(path, lambda f: fig.savefig(f, dpi=dpi, format=fmt))

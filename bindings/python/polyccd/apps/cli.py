@@ -11,6 +11,7 @@ terminals, never with --quiet (polyccd.apps._progress).
 """
 import argparse
 import contextlib
+import functools
 import json
 import sys
 
@@ -19,7 +20,7 @@ from polyccd import Error, Index, InputError, Limits, __version__
 from ._corpus import (DEFAULT_TOLERANCE, check_case, files_under, read_case, solve_case,
                       solve_scene_case)
 from ._csv import CSV_KINDS
-from ._json import result_json, time_json
+from ._output import check_json, index_json
 from ._queries import mismatch_lines, run_file
 from ._progress import bar, echo
 from . import _reading
@@ -52,15 +53,6 @@ def _progress(args):
 
 def _error(message):
     echo(f"polyccd: {message}", file=sys.stderr)
-
-
-def _check_json(result):
-    """The JSON of `polyccd check` for a SceneResult or a Result."""
-    if hasattr(result, "pairs"):
-        return scene_json(result)
-    out = result_json(result)
-    out["bodies"] = None  # bodies in contact: for scene files only
-    return out
 
 
 def _check_serial(files, threads, progress, limits=None, decide=False):
@@ -101,39 +93,9 @@ def cmd_check(args):
                 _error(f"{path}: {type(result).__name__ + ': ' if bug else ''}{result}")
                 status = status or FAILED if bug else BAD_INPUT
                 continue
-            out = _check_json(result)
+            out = check_json(result, args.decide)
             echo(json.dumps(out if len(files) == 1 else {"file": path, **out}))
     return status
-
-
-def _contact_json(pair, c):
-    return {"bodies": list(pair.names), "a": list(c.a), "b": list(c.b),
-            "first_contact": time_json(c.first_contact)}
-
-
-def scene_json(r):
-    """The JSON of a SceneResult (formats.md, check; "pairs" is an optional extension:
-    every body pair in contact with its first time and touching features)."""
-    return {
-        "collides": r.collides,
-        "first_contact": time_json(r.first_contact),
-        "features": [_contact_json(p, c) for p in r.first for c in p.contacts
-                     if r.first_contact.exact is None or c.first_contact.exact == r.first_contact.exact],
-        "bodies": list(r.first[0].names) if r.first else None,
-        "pairs": [{"bodies": list(p.names), "first_contact": time_json(p.first_contact),
-                   "features": [_contact_json(p, c) for c in p.contacts]} for p in r.pairs],
-    }
-
-
-def index_json(stored_name, query_name, r, all_contacts=False):
-    """The JSON line of one query of `polyccd index`: the fields of `polyccd check` of the
-    two-body scene (stored, query); with all_contacts, "features" lists every touching
-    feature pair with its own first time."""
-    out = scene_json(r)
-    features = ([_contact_json(p, c) for p in r.pairs for c in p.contacts] if all_contacts
-                else out["features"])
-    return {"stored": stored_name, "query": query_name, "collides": out["collides"],
-            "first_contact": out["first_contact"], "features": features}
 
 
 def cmd_index(args):
@@ -368,10 +330,15 @@ def _cluster_flags(c):
 
 def parser():
     p = argparse.ArgumentParser(
-        prog="polyccd", description="Exact continuous collision detection of moving "
-        "primitives (file formats: docs/formats.md in the source repository).")
+        prog="polyccd", allow_abbrev=False, description="Exact continuous collision "
+        "detection of moving primitives (file formats: docs/formats.md in the source "
+        "repository).")
     p.add_argument("--version", action="version", version=f"polyccd {__version__}")
-    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    # No abbreviated options in the subcommands either (`--thread` is not `--threads`).
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND",
+                           parser_class=functools.partial(argparse.ArgumentParser,
+                                                          allow_abbrev=False))
+    p.subcommands = sub.choices  # name -> its parser (parse() reports through it)
     c = sub.add_parser("check", help="solve one scene or query file and print the JSON result "
                        "(several files: one JSON line per file, with \"file\")")
     c.add_argument("file", nargs="+", metavar="FILE.json")
@@ -421,8 +388,19 @@ def parser():
     return p
 
 
+def parse(argv=None):
+    """The arguments; a usage error exits 2 with the usage of the parser concerned: an
+    option no subcommand knows is reported by that subcommand (its usage, its options),
+    not by the top level."""
+    p = parser()
+    args, unknown = p.parse_known_args(argv)
+    if unknown:
+        p.subcommands[args.command].error("unrecognized arguments: " + " ".join(unknown))
+    return args
+
+
 def main(argv=None):
-    args = parser().parse_args(argv)
+    args = parse(argv)
     _reading.max_file_bytes = getattr(args, "max_file_mb", _reading.DEFAULT_MAX_FILE_MB) << 20
     try:
         return args.run(args)

@@ -1,4 +1,4 @@
-"""polyccd.apps.distributed: batches of polyccd work mapped over a dask.distributed cluster.
+"""polyccd.apps.distributed: batches of polyccd work mapped over a dask.distributed cluster. In short::
 
     import polyccd.apps.distributed as pd
     with pd.cluster(workers=2) as client:            # an embedded LocalCluster
@@ -23,8 +23,8 @@ same files (a shared file system).
 A worker that dies mid-run loses nothing: the results not yet received are computed
 again by the scheduler on the remaining or restarted workers (every worker of an
 embedded cluster has a nanny that restarts it), and the broadcast body has a copy on
-every worker. Needs dask.distributed (`pip install polyccd[dask]`); `import polyccd`
-never imports this module.
+every worker. Needs dask.distributed (`pip install "polyccd[dask]"` adds it to an installed
+polyccd); `import polyccd` never imports this module.
 """
 import dataclasses
 import functools
@@ -43,7 +43,8 @@ try:
     import distributed as _distributed
 except ImportError as _e:  # pragma: no cover - depends on the install
     raise ImportError("polyccd.apps.distributed needs dask.distributed: pip install "
-                      "'polyccd[dask]' (or dask[distributed])") from _e
+                      "'polyccd[dask]' (adds the dask extra's packages to this installed "
+                      "polyccd) or 'dask[distributed]'") from _e
 
 __all__ = ["cluster", "map_chunks", "index_map", "check_map", "corpus_map", "queries_map"]
 
@@ -126,7 +127,7 @@ def _fixed_size(chunk_size):
 
 def map_chunks(fn, items, *shared, client=None, chunk_size=None, progress=None,
                desc="polyccd", unit="it"):
-    """Yields fn(chunk, *shared) item by item, in the order of items: items are cut into
+    """Yields ``fn(chunk, *shared)`` item by item, in the order of items: items are cut into
     chunks (lists), fn returns one answer per item of its chunk. chunk_size: items per
     chunk, or None: sized by the cost per item measured on the workers (_chunks.Sizer:
     small probes first, then chunks of about 0.1 s of work). shared: objects every task
@@ -252,7 +253,7 @@ def _index_chunk(chunk, body, token, options):
 
 
 def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **options):
-    """Yields index.query(q, **options) for every query Body, in order, computed on the
+    """Yields ``index.query(q, **options)`` for every query Body, in order, computed on the
     cluster (identical SceneResults, with their bodies attached again here).
 
     index: a polyccd.Index or the Body to index (each worker builds its own Index once,
