@@ -127,20 +127,31 @@ Auto_costs estimate_costs(const narrow::Pair_ctx &ctx) {
   while (k < 6 && path > feature * double(1 << k)) ++k;
   if (!std::isfinite(path)) k = 6;
   out.pieces = 1 << k;
-  // bvh: the elements of S meeting each sampled element of Q, summed over the pieces.
+  const bool meshes = S.is_mesh() && Q.is_mesh();
+  out.range = (meshes ? kRange_call_meshes : kRange_call_other) +
+              (meshes ? kItem_meshes : kItem_other) * double(items(Q)) * out.pieces;
+  // bvh halves its pieces until the certified motion spread (enclose::whole_pose, kept
+  // with each body) is below the feature size, so it takes about spread / feature
+  // pieces where the sums below take `pieces`: under rotations many more (blades
+  // turned about one axis: 7 to 140 against 4 to 16), each with its own pairs.
+  const double spread = std::max(enclose::whole_pose(Q).spread, enclose::whole_pose(S).spread);
+  const double ratio = spread / (feature * out.pieces);
+  const double refine = ratio > 1 ? (std::isfinite(ratio) ? ratio : HUGE_VAL) : 1.0;
+  // bvh: the elements of S meeting each sampled element of Q, summed over the pieces;
+  // the count stops once it alone makes bvh the dearer (the choice is then made: kCap
+  // elements against every one of 8,000 needles cost a third of a range query).
   const bvh::Hierarchy &h = bvh::hierarchy(*S.data);
   const size_t nq = elements(Q), m = std::min(nq, kSamples);
+  const double enough = (out.range - kBvh_call) / kPair / refine * double(m) / double(std::max<size_t>(nq, 1));
+  const size_t cap = std::min<double>(kCap, std::max(0.0, enough) + 1);
   std::vector<Pose> es(out.pieces + 1), eq(out.pieces + 1);
   for (int i = 0; i <= out.pieces; ++i) es[i] = pose_at(S, double(i) / out.pieces), eq[i] = pose_at(Q, double(i) / out.pieces);
-  std::vector<V3> pts;
+  std::vector<V3> pts, prev, now;
   std::vector<uint32_t> met;
-  double sum = 0;
-  std::vector<V3> prev, now;
-  for (size_t j = 0; j < m; ++j) {
+  for (size_t j = 0; j < m && met.size() < cap; ++j) {
     double r = 0;
     element_points(Q, j * nq / m, pts, r);
-    met.clear();
-    for (int i = 0; i <= out.pieces && met.size() < kCap; ++i) {
+    for (int i = 0; i <= out.pieces && met.size() < cap; ++i) {
       now.clear();
       for (const V3 &p : pts) now.push_back(in_frame(es[i], eq[i], p));
       if (i > 0) {
@@ -148,24 +159,13 @@ Auto_costs estimate_costs(const narrow::Pair_ctx &ctx) {
         for (const auto *set : {&prev, &now})
           for (const V3 &y : *set)
             for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], y[a] - r), hi[a] = std::max(hi[a], y[a] + r);
-        meeting(h, lo, hi, met, kCap);
+        meeting(h, lo, hi, met, cap);
       }
       std::swap(prev, now);
     }
-    sum += double(met.size());
   }
-  out.pairs = m ? sum * double(nq) / double(m) : 0.0;
-  // bvh halves its pieces until the certified motion spread (enclose::whole_pose, kept
-  // with each body) is below the feature size, so it takes about spread / feature
-  // pieces where the sums above took `pieces`: under rotations many more (blades
-  // turned about one axis: 7 to 140 against 4 to 16), each with its own pairs.
-  const double spread = std::max(enclose::whole_pose(Q).spread, enclose::whole_pose(S).spread);
-  const double refine = spread / (feature * out.pieces);
-  if (refine > 1) out.pairs *= std::isfinite(refine) ? refine : HUGE_VAL;
+  out.pairs = m ? double(met.size()) * double(nq) / double(m) * refine : 0.0;
   out.bvh = kBvh_call + kPair * out.pairs;
-  const bool meshes = S.is_mesh() && Q.is_mesh();
-  out.range = (meshes ? kRange_call_meshes : kRange_call_other) +
-              (meshes ? kItem_meshes : kItem_other) * double(items(Q)) * out.pieces;
   return out;
 }
 

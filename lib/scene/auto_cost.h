@@ -13,13 +13,15 @@
 //          estimated by taking at most kSamples elements of Q at a fixed stride and
 //          counting, on each of the same pieces, S's elements whose body-frame box meets
 //          the sample's box over the piece (float poses at the piece's ends, S's box
-//          hierarchy, bvh/hierarchy.h; at most kCap per sample), scaled by |Q| / samples.
+//          hierarchy, bvh/hierarchy.h), scaled by |Q| / samples and by bvh's extra
+//          halvings (its certified spread over the feature size, per piece); the count
+//          stops once it makes bvh the dearer (at most kCap).
 // auto takes range when its estimate is lower, bvh otherwise. The constants are CPU
 // seconds measured on the on-line families (tests/bench/bench_adversarial.py: terrain,
 // molecules, translated needles, nested shells, turned blades; docs/benchmarks.md, "auto
 // by estimated cost"); only their ratios matter, and an estimate off by 2x moves the
 // choice only where the two phases cost about the same. The estimate costs
-// O(kSamples (pieces + kCap)) float operations. Floats and samples: it decides a speed,
+// O(kSamples pieces + kCap log n) float operations. Floats and samples: it decides a speed,
 // never an answer.
 #pragma once
 #include "narrow/pair_ctx.h"
