@@ -5,12 +5,11 @@ contact, pairs, touching features and their times) in first-contact and all-cont
 modes, with the apart and the hitting motions of each family. The families' docstring
 states which pairs cannot touch (hit=False); there the answer must be "no contact".
 
-auto chooses per body pair by evidence (lib/scene/broad_phase.h, choose): range when
-either body's self box degree is at least 32, which these families reach from 32
-elements per body on (every box meets every other), bvh below. The small cases take
-bvh, the larger ones (compared with bvh, itself compared with brute force above) and the
-index cases (a stored body of 40 or more) take range: answers must not depend on the
-choice.
+auto chooses per body pair by estimated cost (lib/scene/auto_cost.h): range where a
+sampled element's box meets many of the other body's boxes on each time piece (every box
+meets every other here), bvh where it meets few. The larger cases (compared with bvh,
+itself compared with brute force above) and the index cases take range: answers must
+not depend on the choice.
 """
 import math
 import os
@@ -46,7 +45,7 @@ def test_every_method_equals_brute_force(family, hit, all_contacts):
 @pytest.mark.parametrize("family", ["slivers", "plates", "balls"])
 @pytest.mark.parametrize("hit", [False, True])
 def test_auto_by_evidence_equals_bvh(family, hit):
-    bodies = af.make(P, family, 160, hit)  # >= 32 elements per body: auto takes range
+    bodies = af.make(P, family, 160, hit)  # 80 elements per body: auto takes range
     want = answers(bodies, "bvh", False)
     assert want[0] is hit
     for m in ("auto", "range"):

@@ -210,7 +210,7 @@ Relative_motion::Pose Relative_motion::approx(double t) const {
   return p;
 }
 
-Piece_query::Piece_query(const Relative_motion &rel, const Moving_body &query, double a, double b)
+Piece_query::Piece_query(const Relative_motion &rel, const Moving_body &query, double a, double b, const Ids *only)
     : q_(query), translation_(rel.linear_translation) {
   const Interval ia(a), ib(b);
   std::array<std::array<IPoly, 3>, 3> M;
@@ -232,7 +232,8 @@ Piece_query::Piece_query(const Relative_motion &rel, const Moving_body &query, d
   w_ = sb_from_power(w, n);
   w2_ = sb_mul(w_, w_);
   H_.resize(query.n_points());
-  for (size_t k = 0; k < H_.size(); ++k) {
+  for (size_t at = 0; at < (only ? only->size() : H_.size()); ++at) {
+    const size_t k = only ? (*only)[at] : at;
     const I3 p = enclose_point(query.point(k));
     for (int i = 0; i < 3; ++i) {
       Sb h(n + 1, Interval(0.0));
@@ -249,8 +250,8 @@ Piece_query::Piece_query(const Relative_motion &rel, const Moving_body &query, d
   for (const Interval &x : w_) positive = positive && x.lo > 0;
   if (!positive) return;
   ybox_.resize(H_.size());
-  for (size_t k = 0; k < H_.size(); ++k)
-    for (int i = 0; i < 3; ++i) {
+  for (size_t at = 0; at < (only ? only->size() : H_.size()); ++at)
+    for (size_t i = 0, k = only ? (*only)[at] : at; i < 3; ++i) {
       Interval b(HUGE_VAL, -HUGE_VAL);
       for (size_t j = 0; j <= n; ++j) {
         const Interval y = H_[k][i][j] / w_[j];

@@ -85,7 +85,10 @@ struct Relative_motion {
 // cheap clauses against the whole tree first (Range_tree::may_hit).
 class Piece_query {
  public:
-  Piece_query(const Relative_motion &rel, const Moving_body &query, double a, double b);
+  // only: when not null, the query points prepared (the others are left empty, and
+  // the queries may use only primitives whose points are all in it); null: every point.
+  using Ids = std::vector<uint32_t>;
+  Piece_query(const Relative_motion &rel, const Moving_body &query, double a, double b, const Ids *only = nullptr);
 
   // query triangle, stored vertices
   Cnf<kDimVertex> triangle_vs_vertices_boxes(uint32_t tri) const;

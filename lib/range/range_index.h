@@ -84,6 +84,7 @@ class Range_index {
   void query_one(const Piece_query &pq, const Rotation_piece *rp, size_t item,
                  std::vector<Prim_pair> &out, std::vector<uint32_t> &scratch) const;
   size_t query_items() const;
+  std::vector<uint32_t> near_at_zero(Thread_pool &pool) const;
 };
 
 }  // namespace pccd::range

@@ -26,24 +26,11 @@ inline Broad_phase resolve(Broad_phase p, bool /*online*/, bool min_distance) {
   return min_distance ? Broad_phase::bvh : Broad_phase::automatic;
 }
 
-// The automatic phase of one body pair, chosen by evidence (the rule and the
-// measurements it rests on: docs/benchmarks.md, "Where boxes cannot help"): p itself
-// unless it is automatic; bvh with a minimum separation (range has no delta); range for
-// two sphere sets both on linear translations (or at rest: range/linearize.h,
-// is_linear_translation); else range when either body's self box degree is at least
-// kRangeDegree, bvh below.
-// Speed only: every phase gives the same answers.
-constexpr double kRangeDegree = 32;
+// The automatic phase of one body pair: p itself unless it is automatic; bvh with a
+// minimum separation (range has no delta); otherwise the phase of the lower estimated
+// cost, range or bvh (scene/auto_cost.h: the rule, its cost model and where its
+// constants were measured). Speed only: every phase gives the same answers.
 Broad_phase choose(Broad_phase p, const narrow::Pair_ctx &ctx, bool min_distance);
-
-// The self box degree of a body: the mean number of its elements (triangles or balls,
-// itself included) whose box meets the box of one of them, over at most 64 elements at
-// a fixed stride, each against all n (O(64 n) double comparisons, taken once per body
-// and kept with it). Parallel slivers, plates, fans, needles, large overlapping balls:
-// every box meets every other (n); a terrain, a molecule, a scanned mesh: a few
-// neighbours. The boxes are rounded outward from the body's doubles, but they decide
-// only the choice of a broad phase, never a contact.
-double self_degree(const narrow::Body_data &d);
 
 // The source of a resolved phase. stored: the range phase's stored side (-1: the
 // larger). reach: enclose::reach_of of the minimum separation (0: none); range is

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "bvh/hierarchy.h"
 #include "range/range_index.h"
 
 namespace pccd::scene {
@@ -21,7 +22,7 @@ Moving_body prepare(const Scene_body &b, const std::string &where = "") {
 
 Online_index::Online_index(const Scene_body &stored) : stored_(prepare(stored)) {
   range::stored_trees(*stored_.data);  // the preprocessing: built here, not by the first query
-  self_degree(*stored_.data);          // the evidence for automatic (broad_phase.h), once
+  bvh::hierarchy(*stored_.data);       // automatic's estimate and bvh use it (auto_cost.h)
 }
 
 Scene_report Online_index::query(const Scene_body &q, const Scene_options &opt) const {

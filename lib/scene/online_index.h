@@ -9,12 +9,9 @@
 //
 // query() only reads the index, so several threads may query one index at once.
 // Answers equal those of solve_scene on the same two bodies with any broad phase;
-// opt.broad_phase chooses how candidates are found. automatic is chosen by evidence
-// (scene::choose, broad_phase.h): range (the stored trees) when the stored or the query
-// body has a high self box degree (parallel slivers, fans, needles: a query's box meets
-// most stored boxes), else bvh (the stored body's hierarchy: a terrain, a molecule);
-// the stored body's degree is taken once, when the index is built. With a minimum
-// separation delta > 0 automatic is bvh (range has no delta).
+// opt.broad_phase chooses how candidates are found; automatic is chosen per query by
+// estimated cost (scene::choose, broad_phase.h; the rule: scene/auto_cost.h), and is
+// bvh with a minimum separation delta > 0 (range has no delta).
 #pragma once
 #include "scene/scene.h"
 

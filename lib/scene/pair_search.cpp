@@ -8,62 +8,15 @@
 
 #include "enclose/enclose.h"
 #include "narrow/containment.h"
-#include "range/linearize.h"
+#include "scene/auto_cost.h"
 
 namespace pccd::scene {
-
-namespace {
-
-struct Self_degree final : narrow::Body_attachment {
-  double value = 0;
-};
-
-}  // namespace
-
-double self_degree(const narrow::Body_data &d) {
-  return d.attached<Self_degree>([&] {
-    std::vector<std::array<double, 6>> box;  // lo, hi of each element
-    auto grow = [](std::array<double, 6> &b, const std::array<double, 3> &p, double r) {
-      for (int a = 0; a < 3; ++a) {
-        b[a] = std::min(b[a], p[a] - r);
-        b[3 + a] = std::max(b[3 + a], p[a] + r);
-      }
-    };
-    const double inf = std::numeric_limits<double>::infinity();
-    if (d.mesh) {
-      for (const auto &t : d.mesh->triangles()) {
-        std::array<double, 6> b = {inf, inf, inf, -inf, -inf, -inf};
-        for (uint32_t v : t) grow(b, d.pts[v], d.pt_err);
-        box.push_back(b);
-      }
-    } else {
-      for (size_t k = 0; k < d.pts.size(); ++k) {
-        std::array<double, 6> b = {inf, inf, inf, -inf, -inf, -inf};
-        grow(b, d.pts[k], d.radius_up[k] + d.pt_err);
-        box.push_back(b);
-      }
-    }
-    const size_t n = box.size(), m = std::min<size_t>(n, 64);
-    size_t hits = 0;
-    for (size_t k = 0; k < m; ++k) {
-      const std::array<double, 6> &b = box[k * n / m];
-      for (const auto &c : box)
-        hits += b[0] <= c[3] && c[0] <= b[3] && b[1] <= c[4] && c[1] <= b[4] && b[2] <= c[5] && c[2] <= b[5];
-    }
-    auto r = std::make_unique<Self_degree>();
-    r->value = m ? double(hits) / double(m) : 0.0;
-    return r;
-  }).value;
-}
 
 Broad_phase choose(Broad_phase p, const Pair_ctx &ctx, bool min_distance) {
   if (p != Broad_phase::automatic) return p;
   if (min_distance) return Broad_phase::bvh;
-  const Moving_body &a = ctx.side(0), &b = ctx.side(1);
-  if (!a.is_mesh() && !b.is_mesh() && range::is_linear_translation(a) && range::is_linear_translation(b))
-    return Broad_phase::range;
-  const double degree = std::max(self_degree(*a.data), self_degree(*b.data));
-  return degree >= kRangeDegree ? Broad_phase::range : Broad_phase::bvh;
+  const Auto_costs c = estimate_costs(ctx);
+  return c.range < c.bvh ? Broad_phase::range : Broad_phase::bvh;
 }
 
 namespace {

@@ -2,10 +2,15 @@
 """Benchmark of the broad phases where bounding boxes cannot help (issue 26): the two-body
 adversarial families of adversarial_families.py (slivers, plates, fans, needles, balls;
 N = |B1| + |B2| primitives, both bodies large), timed with polyccd.check for each
-broad phase (range, bvh, boxes, auto), and the on-line families of bench_online.py
-(terrain, molecule slab; n stored primitives, n one-primitive queries, polyccd.Index),
-where auto must stay near the fastest method. Prints the time table and the fitted
-exponent of time against N per method and family, in one run.
+broad phase (range, bvh, boxes, auto); the on-line adversarial families of
+online_families.py (issue 31: tneedles, shells, turned; N stored triangles in a
+polyccd.Index, --queries one-triangle queries, so a cell's time is per-query time times
+a constant); and the on-line families of bench_online.py (terrain, molecule slab; n
+stored primitives, n one-primitive queries), where auto must stay near the fastest
+method. Prints the time table and the fitted exponent of time against N per method and
+family, in one run; the exponents table adds auto's per-query exponent (the two-body and
+bench_online families answer N queries: their exponent minus 1; online_families: the
+exponent itself), against the paper's on-line bound n^0.6 per query.
 
 A benchmark, not a test: it never asserts on speed. It checks answers: every method's
 collides and first contact (lo, hi, exact) must equal the others' on every family and
@@ -27,10 +32,10 @@ and the exponents table the fit of the minima with, in brackets, the lowest and 
 exponent fitted on the r-th runs alone (r = 1..R): the spread that load gives a fit.
 
 Usage: python tests/bench/bench_adversarial.py [--sizes 125,250,500,1k,2k,4k,8k,16k]
-           [--families slivers,plates,fans,needles,balls,terrain,mol]
+           [--families slivers,plates,fans,needles,balls,tneedles,shells,turned,terrain,mol]
            [--methods range,bvh,boxes,auto] [--motion translation|axis|general]
            [--budget-seconds 30] [--cap-seconds 30] [--repeat 1] [--fit-from 1k]
-           [--clock cpu|wall] [--json FILE] [--tables-of FILE]
+           [--clock cpu|wall] [--queries 200] [--json FILE] [--tables-of FILE]
 """
 
 import argparse
@@ -42,6 +47,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import adversarial_families as af  # noqa: E402
+import online_families as of  # noqa: E402
 from bench_bodies import fit_exponent  # noqa: E402
 
 ONLINE = {"terrain": "mesh", "mol": "mol"}   # bench_online.py's classes
@@ -73,8 +79,17 @@ def timed(fn):
         gc.enable()
 
 
-def case_runner(polyccd, family, n, motion):
+def case_runner(polyccd, family, n, motion, queries=200):
     """fn(method) -> (seconds, answers, stats) for one family and size."""
+    if family in of.FAMILIES:                   # one stored body of n triangles, `queries` queries
+        stored, qs = of.make(polyccd, family, n, queries)
+        ix = polyccd.Index(stored)
+
+        def run(method):
+            dt, res = timed(lambda: ix.query_many(qs, broad_phase=method, threads=1))
+            cand = sum(r.stats["candidates"] for r in res)
+            return dt, [answer(r) for r in res], {"candidates": cand}
+        return run
     if family in ONLINE:
         import bench_online as bo
         cls = ONLINE[family]
@@ -98,7 +113,8 @@ def case_runner(polyccd, family, n, motion):
 def main():
     ap = argparse.ArgumentParser(allow_abbrev=False, description=__doc__.split("\n")[0])
     ap.add_argument("--sizes", default="125,250,500,1k,2k,4k,8k,16k")
-    ap.add_argument("--families", default=",".join(af.FAMILIES + tuple(ONLINE)))
+    ap.add_argument("--families", default=",".join(af.FAMILIES + of.FAMILIES + tuple(ONLINE)))
+    ap.add_argument("--queries", type=int, default=200, help="queries per size (online_families.py)")
     ap.add_argument("--methods", default=",".join(METHODS))
     ap.add_argument("--budget-seconds", type=float, default=30.0)
     ap.add_argument("--cap-seconds", type=float, default=30.0,
@@ -132,7 +148,7 @@ def main():
         times = {m: {} for m in methods}
         last, capped = {}, set()
         for n in sizes:
-            run = case_runner(polyccd, family, n, opts.motion)
+            run = case_runner(polyccd, family, n, opts.motion, opts.queries)
             ref = None
             todo = [m for m in methods if m not in capped and not (
                 m in last and last[m][1] * (n / last[m][0]) ** 2 > opts.budget_seconds)]
@@ -199,8 +215,8 @@ def print_tables(out, sizes, methods, fit_from):
     print(f"\nFitted exponents (least squares of log time on log N over the sizes measured, "
           f"N >= {fit_from} where a method reached two such sizes, else all it reached: the fit "
           f"of the minima [lowest-highest fit of single runs] (sizes fitted))")
-    print("| family | " + " | ".join(methods) + " | auto / fastest (worst size) |")
-    print("|" + "---|" * (len(methods) + 2))
+    print("| family | " + " | ".join(methods) + " | auto / fastest (worst size) | auto per query |")
+    print("|" + "---|" * (len(methods) + 3))
     for family, res in out.items():
         ex = []
         for m in methods:
@@ -214,7 +230,9 @@ def print_tables(out, sizes, methods, fit_from):
                 if str(n) in res.get("auto", {}) and ts:
                     r = min(runs_of(res["auto"][str(n)])) / min(ts)
                     worst = r if worst is None else max(worst, r)
-        print(f"| {family} | " + " | ".join(ex) + f" | {'-' if worst is None else f'{worst:.2f}'} |")
+        fa = fitted(res, "auto", fit_from) if "auto" in methods else None
+        per_query = "-" if fa is None else f"{fa[0] - (0 if family in of.FAMILIES else 1):.2f}"
+        print(f"| {family} | " + " | ".join(ex) + f" | {'-' if worst is None else f'{worst:.2f}'} | {per_query} |")
 
 
 if __name__ == "__main__":
