@@ -243,7 +243,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
   const motion::Chain_path path(r.chain, q0, q1);  // Input_error for a rejected segment
   const std::vector<Moving_body> obst = prepare_bodies(obstacles, "obstacles");
   const size_t nr = r.bodies.size();
-  if (nr + obst.size() < 2) throw arith::Input_error("obstacles: nothing to check (one body, no obstacle)");
+  // No pair at all (a robot without geometry, a lone link without obstacles): nothing
+  // can touch, so no contact (issue 33: this was "nothing to check", an error).
   std::vector<Pair_plan> plans;
   for (size_t i = 0; i < nr; ++i) {
     if (ro.self_collision)

@@ -22,10 +22,12 @@ from fractions import Fraction
 
 import numpy as np
 
-from typing import Any, Sequence, Tuple
+from typing import Any, Optional, Sequence, Tuple
 
 from ._types import Indices, Number, Points, Vector
 from . import _handles as handles
+from . import _limits
+from ._limits import Limits
 from ._errors import InputError, check
 from ._numbers import exact_fraction, number_text, show
 from ._pccd import ffi, lib
@@ -147,19 +149,25 @@ class Mesh(_Body):
 
     __slots__ = ()
 
-    def __init__(self, vertices: Points, triangles: Indices) -> None:
+    def __init__(self, vertices: Points, triangles: Indices, *,
+                 limits: Optional[Limits] = None) -> None:
+        """limits: a polyccd.Limits bounding the building (pccd_body_new_mesh_cfg_d:
+        the conversion, the edges, the hierarchy), LimitError when reached; None: none."""
         nv, doubles, texts = _points(vertices, "vertices")
         nt, tris = _indices(triangles)
-        self._build(nv, doubles, None if texts is None else tuple(texts), tris)
+        cfg = None if limits is None else _limits.config(limits)
+        self._build(nv, doubles, None if texts is None else tuple(texts), tris, cfg)
 
-    def _build(self, nv, doubles, texts, tris):
+    def _build(self, nv, doubles, texts, tris, cfg=None):
         t = ffi.from_buffer("unsigned int[]", tris)
+        tail, cfg_ = ("", ()) if cfg is None else ("cfg_", (cfg,))
         if doubles is not None:
             handle = handles.new("body", ffi.from_buffer("double[]", doubles), nv, t,
-                                 len(tris) // 3, via="new_mesh_d")
+                                 len(tris) // 3, *cfg_, via=f"new_mesh_{tail}d")
         else:
             array, _keep = _texts(texts)
-            handle = handles.new("body", array, nv, t, len(tris) // 3, via="new_mesh_s")
+            handle = handles.new("body", array, nv, t, len(tris) // 3, *cfg_,
+                                 via=f"new_mesh_{tail}s")
         object.__setattr__(self, "_handle", handle)
         object.__setattr__(self, "_inputs", (nv, doubles, texts, tris))
 

@@ -16,7 +16,7 @@ from ._body import _indices
 from ._errors import InputError, check
 from ._pccd import ffi, lib
 from ._results import ContactTime
-from ._solve import _config
+from ._solve import _config, _items
 from ._types import Indices, Number, Points
 
 KIND_NAMES = {0: "vertex-face", 1: "edge-edge", 2: "vertex-edge", 3: "vertex-vertex"}
@@ -75,18 +75,17 @@ def _checked(where, rc):
     check(rc)
 
 
-def _mesh(step, where, v0, v1, faces, edges, points):
+def _mesh(step, where, v0, v1, faces, edges, points, cfg):
     """Adds one mesh to the step handle; InputError names its place with `where`."""
     a0, a1 = _positions(where, v0, v1)
     nf, f = _indices(np.zeros((0, 3), np.uint32) if faces is None else faces, f"{where}faces", 3)
     ne, e = (0, None) if edges is None else _indices(edges, f"{where}edges", 2)
     n_p, p = (0, None) if points is None else _points(points, f"{where}points")
     out = ffi.new("size_t *")
-    rc = lib.pccd_step_add_mesh_d(step, ffi.from_buffer("double[]", a0), ffi.from_buffer("double[]", a1),
-                                  len(a0), ffi.from_buffer("unsigned int[]", f), nf,
-                                  ffi.NULL if e is None else ffi.from_buffer("unsigned int[]", e), ne,
-                                  ffi.NULL if p is None else ffi.from_buffer("unsigned int[]", p), n_p,
-                                  out)
+    rc = _limits.run(cfg, lib.pccd_step_add_mesh_cfg_d, step, ffi.from_buffer("double[]", a0),
+                     ffi.from_buffer("double[]", a1), len(a0), ffi.from_buffer("unsigned int[]", f),
+                     nf, ffi.NULL if e is None else ffi.from_buffer("unsigned int[]", e), ne,
+                     ffi.NULL if p is None else ffi.from_buffer("unsigned int[]", p), n_p, out, cfg)
     _checked(where, rc)
     return out[0]
 
@@ -121,10 +120,11 @@ def _topology(faces, edges, points, sizes, obs_faces):
 _cache = threading.local()  # the last step handle of this thread, by topology
 
 
-def _build(V0, V1, faces, edges, points, obstacles):
+def _build(V0, V1, faces, edges, points, obstacles, cfg):
     """A step handle of the mesh and obstacles. A simulator calls with the same
     connectivity every step: then the last handle of this thread is reused, only its
     positions replaced (pccd_step_set_positions_d checks them as adding would)."""
+    obstacles = _items(obstacles, "obstacles", "a sequence of (V, faces) or (V0, V1, faces)")
     obs = [_obstacle(k, ob) for k, ob in enumerate(obstacles)]
     try:
         sizes = [len(V0)] + [len(o[0]) for o in obs]
@@ -141,9 +141,9 @@ def _build(V0, V1, faces, edges, points, obstacles):
                                                           ffi.from_buffer("double[]", a1), len(a0)))
         return step, len(obs) + 1
     step = handles.new("step")
-    _mesh(step, "", V0, V1, faces, edges, points)
+    _mesh(step, "", V0, V1, faces, edges, points, cfg)  # under the call's limits
     for k, (o0, o1, of) in enumerate(obs):
-        _mesh(step, f"obstacles[{k}].", o0, o1, of, None, None)
+        _mesh(step, f"obstacles[{k}].", o0, o1, of, None, None, cfg)
     for i in range(1, len(obs) + 1):  # obstacles: against the mesh only
         for j in range(i, len(obs) + 1):
             check(lib.pccd_step_set_pair_check(step, i, j, 0))
@@ -209,11 +209,11 @@ def _solve(V0, V1, faces, edges, points, obstacles, min_distance, mode, threads,
     c = None if paths is None else _paths(paths, V0, V1)
     if c is not None:
         V0 = V1 = c[0]  # the topology's mesh; its paths are set below
-    step, nmeshes = _build(V0, V1, faces, edges, points, obstacles)
-    if c is not None:
-        check(lib.pccd_step_set_paths_d(step, 0, ffi.from_buffer("double[]", c), c.shape[0], c.shape[1]))
     cfg, _keep = _config(time_tolerance, True, True, limits,
                          None if not min_distance else min_distance)
+    step, nmeshes = _build(V0, V1, faces, edges, points, obstacles, cfg)
+    if c is not None:
+        check(lib.pccd_step_set_paths_d(step, 0, ffi.from_buffer("double[]", c), c.shape[0], c.shape[1]))
     opt = ffi.new("pccd_step_options *")
     check(lib.pccd_step_options_init(opt))
     opt.threads, opt.mode = threads, mode
