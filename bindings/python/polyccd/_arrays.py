@@ -78,7 +78,7 @@ def _float64_array(x, place, shape_text, fits):
             a = np.asarray(x)
         except (ValueError, TypeError) as e:
             raise InputError(f"{place}: not an array of shape {shape_text}: {e}") from None
-        if a.dtype.kind in "iub":  # numpy reads True as 1 in a list of ints: refused
+        if a.dtype.kind in "iubf":  # numpy reads True as 1 in a list of numbers: refused
             _no_bools(x, a.shape, place)
     if a.dtype != _F64:
         a = _exact_float64(a, place)

@@ -29,6 +29,7 @@ from . import _handles as handles
 from . import _limits
 from ._limits import Limits
 from ._errors import InputError, check
+from ._flags import real
 from ._numbers import exact_fraction, number_text, show
 from ._pccd import ffi, lib
 from ._solve import _items, _texts
@@ -180,7 +181,7 @@ class Mesh(_Body):
         """The closed box [-a/2, a/2] x [-b/2, b/2] x [-c/2, c/2] of extents (a, b, c) > 0
         as 12 outward-facing triangles; halving a double is exact, so its corners are
         exactly +-extents/2."""
-        e = [float(x) for x in _items(extents, "extents", "3 numbers")]
+        e = [real(x, f"extents[{k}]") for k, x in enumerate(_items(extents, "extents", "3 numbers"))]
         if len(e) != 3 or not all(np.isfinite(x) and x > 0 for x in e):
             raise InputError(f"extents: expected 3 positive finite numbers, got {show(extents)}")
         h = [x / 2 for x in e]
@@ -196,11 +197,11 @@ class Mesh(_Body):
         covers the rounding of the doubles, about 1e-16 relative), so the prism contains
         the cylinder; its distance from the cylinder is at most radius (1 / cos(pi /
         sections) - 1), 2 % for 16 sections. Collisions are those of the prism."""
-        r, hgt = float(radius), float(height)
-        if not (np.isfinite(r) and r > 0 and np.isfinite(hgt) and hgt > 0):
-            raise InputError(f"radius, height: expected positive finite numbers, got "
-                             f"{show(radius)}, {show(height)}")
-        if not isinstance(sections, numbers.Integral) or sections < 3:
+        r, hgt = real(radius, "radius"), real(height, "height")
+        for name, x in (("radius", r), ("height", hgt)):
+            if not (np.isfinite(x) and x > 0):
+                raise InputError(f"{name}: expected a positive finite number, got {show(x)}")
+        if isinstance(sections, bool) or not isinstance(sections, numbers.Integral) or sections < 3:
             raise InputError(f"sections: expected an integer >= 3, got {show(sections)}")
         big = r / np.cos(np.pi / sections) * (1 + 1e-12)
         a = 2 * np.pi * (np.arange(sections) + 0.5) / sections

@@ -117,6 +117,8 @@ class Motion:
     @classmethod
     def translation(cls, coeffs_xyz: Sequence[Coefficients]) -> Motion:
         """A pure translation: [xs, ys, zs], ascending powers of t."""
+        if coeffs_xyz is None:  # Motion(translation=None) is the identity; this is not
+            raise InputError("coeffs_xyz: expected [xs, ys, zs] (coefficient lists), got None")
         return cls(translation=coeffs_xyz)
 
     @classmethod

@@ -94,8 +94,11 @@ def _set_allowed(robot, made, allowed):
 def _validated(robot, allowed):
     """The allowed link pairs as a set of frozensets; InputError naming a bad one."""
     allowed_set = set()
-    for k, pair in enumerate(allowed):
-        pair = tuple(pair)
+    pairs = list(allowed) if isinstance(allowed, (set, frozenset)) else \
+        _items(allowed, "allowed", "an iterable of link-name pairs")  # a set of pairs: as good
+    for k, pair in enumerate(pairs):
+        pair = tuple(pair) if isinstance(pair, frozenset) else \
+            tuple(_items(pair, f"allowed[{k}]", "a pair of link names"))
         if len(pair) != 2 or any(x not in robot.tree for x in pair):
             raise InputError(f"allowed[{k}]: {pair!r} is not a pair of link names")
         allowed_set.add(frozenset(pair))

@@ -11,9 +11,10 @@ import numpy as np
 
 from . import _handles as handles
 from . import _limits
-from ._arrays import _float64_array
+from ._arrays import _float64_array, _no_bools
 from ._body import _indices
 from ._errors import InputError, check
+from ._flags import flag
 from ._pccd import ffi, lib
 from ._results import ContactTime
 from ._solve import _config, _items
@@ -92,7 +93,14 @@ def _mesh(step, where, v0, v1, faces, edges, points, cfg):
 
 def _points(points, where):
     """(n, uint32 array) of a 1-D sequence of vertex indices, or InputError naming the entry."""
-    a = np.asarray(points)
+    if isinstance(points, (str, bytes, dict, set, frozenset)):
+        raise InputError(f"{where}: expected a 1-D sequence of integer vertex indices")
+    try:
+        a = np.asarray(points)
+    except (ValueError, TypeError):  # ragged
+        raise InputError(f"{where}: expected a 1-D sequence of integer vertex indices") from None
+    if a.ndim == 1 and a.dtype.kind in "iub" and not isinstance(points, np.ndarray):
+        _no_bools(points, a.shape, where)
     if a.ndim != 1 or (a.size and a.dtype.kind not in "iu"):
         raise InputError(f"{where}: expected a 1-D sequence of integer vertex indices")
     bad = np.flatnonzero((a < 0) | (a > 2 ** 32 - 1)) if a.size else []
@@ -210,7 +218,8 @@ def _solve(V0, V1, faces, edges, points, obstacles, min_distance, mode, threads,
     if c is not None:
         V0 = V1 = c[0]  # the topology's mesh; its paths are set below
     cfg, _keep = _config(time_tolerance, True, True, limits,
-                         None if not min_distance else min_distance)
+                         None if min_distance is None or (type(min_distance) in (int, float)
+                                                          and min_distance == 0) else min_distance)
     step, nmeshes = _build(V0, V1, faces, edges, points, obstacles, cfg)
     if c is not None:
         check(lib.pccd_step_set_paths_d(step, 0, ffi.from_buffer("double[]", c), c.shape[0], c.shape[1]))
@@ -242,7 +251,7 @@ def check_step(V0: Points, V1: Points, faces: Indices, edges: Optional[Indices] 
     solved by the general exact solver. Errors name V0, V1, paths as v_t0, v_t1, coeffs
     (the C arguments), e.g. "obstacles[0].v_t1[4][2]: NaN is not a finite number".
     Returns a StepResult."""
-    mode = 2 if all_contacts else (0 if first_contact else 1)
+    mode = 2 if flag(all_contacts, "all_contacts") else (0 if flag(first_contact, "first_contact") else 1)
     step, nmeshes, rep = _solve(V0, V1, faces, edges, points, obstacles, min_distance, mode,
                                 threads, limits, paths=paths)
     hit = ffi.new("int *")

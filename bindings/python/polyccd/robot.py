@@ -49,12 +49,15 @@ from ._errors import InputError
 from ._extras import need
 from ._types import Number
 from ._path import file_path
+from ._solve import _items
 from ._urdf_check import check_urdf
 
 if TYPE_CHECKING:
     from ._limits import Limits
     from ._motion import Motion
     from ._scene import Body
+
+__all__ = ["load_urdf", "Robot", "RobotResult", "RobotContact", "PathResult", "SUPPORTED"]
 
 SUPPORTED = ("fixed", "revolute", "continuous", "prismatic")
 
@@ -120,6 +123,8 @@ class Robot:
     def chain_values(self, q: Sequence[float], place: str = "q") -> np.ndarray:
         """The chain's joint values (by chain link) of the actuated joint values q (real
         numbers, each exactly a double; InputError naming place otherwise)."""
+        if not isinstance(place, str):
+            raise InputError(f"place: expected a string, got {place!r}"[:120])
         q = _float64_array(q, place, f"({len(self.joints)},)", lambda s: True)
         if q.shape != (len(self.joints),):
             raise InputError(f"{place}: expected {len(self.joints)} joint values "
@@ -247,7 +252,14 @@ class Robot:
         """Checks the segments waypoints[0] -> waypoints[1] -> ... in order and stops at
         the first that collides: a PathResult (segment index and its RobotResult, or
         segment None when no segment collides). Options as check()."""
-        w = [np.asarray(q, dtype=np.float64) for q in waypoints]
+        w = list(_items(waypoints, "waypoints", "a list of joint vectors"))
+        for k, q in enumerate(w):
+            self.chain_values(q, f"waypoints[{k}]")  # the type and shape checks
+        obstacles = _items(obstacles, "obstacles", "an iterable of polyccd.Body")
+        from ._scene import Body
+        for k, o in enumerate(obstacles):
+            if not isinstance(o, Body):
+                raise InputError(f"obstacles[{k}]: expected a polyccd.Body, got {type(o).__name__}")
         if len(w) < 2:
             raise InputError(f"waypoints: a path needs at least 2 waypoints, got {len(w)}")
         for s in range(len(w) - 1):
