@@ -10,6 +10,7 @@ one list of documented acceptances: public names whose arguments are not checked
 why.
 """
 from dataclasses import dataclass, field
+from math import inf
 from typing import Any, Callable, Dict, Tuple
 
 import numpy as np
@@ -62,6 +63,8 @@ ACCEPTED_VALUES = {
     ("joint_path", "t"): (lambda v: _times(v), "t may be an array of times (empty: none)"),
     ("RobotSpace.joint_path", "t"): (lambda v: _times(v), "t may be an array of times (empty: none)"),
     ("RobotSpace.waypoints", "path"): (lambda v: isinstance(v, list) and not v, "an empty path: no waypoint"),
+    ("Robot.check_joint_limits", "q0"): (lambda v: _non_finite(v), "non-finite values: the chain's to report"),
+    ("Robot.check_joint_limits", "q1"): (lambda v: _non_finite(v), "non-finite values: the chain's to report"),
     # polyccd.ompl's validators never raise (polyccd/ompl.py: an exception inside a check
     # makes the state or motion invalid and is kept in RobotSpace.errors)
     ("RobotSpace.is_valid", "q"): (lambda v: True, "a validator: invalid, error in space.errors"),
@@ -70,6 +73,11 @@ ACCEPTED_VALUES = {
     ("RobotSpace.last_valid", "q1"): (lambda v: True, "a validator"),
     ("RobotSpace.last_valid", "q2"): (lambda v: True, "a validator"),
 }
+
+def _non_finite(v):
+    """A list of real numbers, one of them a NaN or an infinity (check_joint_limits' docstring)."""
+    return isinstance(v, list) and all(type(x) in (int, float) for x in v) and any(x != x or abs(x) == inf for x in v)
+
 
 def _times(v):
     return isinstance(v, (list, tuple)) and all(type(x) in (int, float) and 0 <= x <= 1 for x in v)
@@ -187,7 +195,7 @@ CASES = [
     Case("Mesh.edge_triangles", MESH.edge_triangles, lambda: {"i": 1}, {"i": "int"}),
     Case("Mesh.from_trimesh", P.Mesh.from_trimesh, lambda: {"mesh": _trimesh()}, {"mesh": "body"}),
     Case("Spheres", P.Spheres, lambda: {"centers": [[0, 0, 0], [1, 0, 0]], "radii": [1, "1/2"]},
-         {"centers": "points", "radii": "numbers"}),
+         {"centers": "points", "radii": "numbers"}, dict.fromkeys(("centers", "radii"), ("centers, radii",))),
     Case("Body", P.Body, lambda: {"shape": BALL, "motion": MOTION, "name": "x"},
          {"shape": "body", "motion": "motion", "name": "str?"}),
     Case("check", P.check, lambda: {"bodies": [MOVING, STILL], "skip_pairs": [(0, 1)]},

@@ -68,7 +68,8 @@ def ompl_cases(robot):
     state = {"space": space, "states": (space.state(Q0), space.state(Q1))}
     return [
         Case("joint_path", O.joint_path, lambda: {"revolute": [True, False], "q0": Q0, "q1": Q1, "t": 0.5},
-             {"revolute": "numbers", "q0": "numbers", "q1": "numbers", "t": "number"}),
+             {"revolute": "numbers", "q0": "numbers", "q1": "numbers", "t": "number"},
+             dict.fromkeys(("revolute", "q0", "q1"), ("revolute, q0, q1",))),  # lengths that differ
         Case("joint_space", O.joint_space, lambda: {"names": ["a", "b"], "bounds": [(-1, 1), (0, 2)]},
              {"names": "bodies", "bounds": "points"}),
         Case("simplify", O.simplify, lambda: {"si": space.si, "path": og.PathGeometric(path), "rounds": 1},
@@ -86,7 +87,8 @@ def ompl_cases(robot):
         Case("RobotSpace.waypoints", space.waypoints, lambda: {"path": path}, {"path": "body"}),
         Case("RobotSpace.interpolate_path", space.interpolate_path, lambda: {"path": [Q0, Q1], "step": 0.5},
              {"path": "points", "step": "number"}),
-        Case("RobotSpace.check_path", space.check_path, lambda: {"path": [Q0, Q1]}, {"path": "points"}),
+        Case("RobotSpace.check_path", space.check_path, lambda: {"path": [Q0, Q1]}, {"path": "points"},
+             {"path": ("waypoints",)}),  # Robot.check_path's argument, as its docstring says
         Case("RobotSpace.simplify", space.simplify, lambda: {"path": og.PathGeometric(path), "rounds": 1},
              {"path": "body", "rounds": "int"}),
         Case("RobotSpace.is_valid", space.is_valid, lambda: {"q": Q0}, {"q": "numbers"}),

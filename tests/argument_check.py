@@ -4,6 +4,7 @@ whose message starts with that argument's place; anything else fails with the ca
 shown. And coverage: every public name of a module is a case or a listed acceptance,
 so a new public name without a case fails."""
 import inspect
+import os
 import re
 
 from hypothesis import HealthCheck, given, settings
@@ -13,7 +14,7 @@ import polyccd as P
 from argument_cases import ACCEPTED, ACCEPTED_VALUES, NO_ARGUMENTS
 from argument_values import kind
 
-EXAMPLES = 200
+EXAMPLES = int(os.environ.get("POLYCCD_ARGUMENT_EXAMPLES", "200"))  # more: a wider search
 
 
 def accepted(name, arg, value):
@@ -32,7 +33,8 @@ def refuses_by_name(case):
     except (TypeError, ValueError):
         none_ok = set()
 
-    @settings(max_examples=EXAMPLES, deadline=None, database=None, derandomize=True, report_multiple_bugs=False,
+    @settings(max_examples=EXAMPLES, deadline=None, database=None, report_multiple_bugs=False,
+              derandomize=not os.environ.get("POLYCCD_ARGUMENT_RANDOM"),
               suppress_health_check=list(HealthCheck))
     @given(data=st.data())
     def run(data):

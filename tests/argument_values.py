@@ -88,7 +88,8 @@ def _choices(valid):
                      st.booleans(), _OTHER, st.just(sorted(valid)[:1]))
 
 
-def _not_instance(*valid_types, none_ok=False):
+def _not_instance(none_ok=False):
+    """Values of no polyccd or OMPL type (for arguments that take an object of one)."""
     base = st.one_of(st.integers(), st.text(max_size=3), _OTHER, st.lists(st.integers(), max_size=2),
                      st.just(np.zeros(3)))
     return base if none_ok else st.one_of(st.none(), base)

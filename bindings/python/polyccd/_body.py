@@ -305,7 +305,7 @@ class Spheres(_Body):
         n, c_doubles, c_texts = _points(centers, "centers")
         nr, r_doubles, r_texts = _points(radii, "radii", width=None)
         if nr != n:
-            raise InputError(f"radii: expected {n} radii (one per center), got {nr}")
+            raise InputError(f"centers, radii: {n} centers but {nr} radii (one radius per center)")
         self._build(n, c_doubles, c_texts, r_doubles, r_texts)
 
     def _build(self, n, c_doubles, c_texts, r_doubles, r_texts):

@@ -14,14 +14,21 @@ from ._solve import _items
 
 
 def vector(value, place, n=None):
-    """A float64 (n,) array of real numbers (n None: any length)."""
-    return _float64_array(value, place, f"({'n' if n is None else n},)",
-                          lambda s: len(s) == 1 and (n is None or s[0] == n))
+    """A float64 (n,) array of finite real numbers (n None: any length)."""
+    a = _float64_array(value, place, f"({'n' if n is None else n},)",
+                       lambda s: len(s) == 1 and (n is None or s[0] == n))
+    bad = np.flatnonzero(~np.isfinite(a))
+    if len(bad):
+        raise InputError(f"{place}[{bad[0]}]: {a[bad[0]]!r} is not a finite number")
+    return a
 
 
 def mask(value, place):
     """A bool (n,) array (True / False values only)."""
-    a = np.asarray(value) if not isinstance(value, (str, bytes, dict)) else None
+    try:
+        a = np.asarray(value) if not isinstance(value, (str, bytes, dict, set)) else None
+    except (ValueError, TypeError):  # ragged
+        a = None
     if a is None or a.ndim != 1 or (a.size and a.dtype.kind != "b"):
         raise InputError(f"{place}: expected a 1-D sequence of True / False, got {show(value)}")
     return a.astype(bool)

@@ -80,7 +80,9 @@ def joint_path(revolute, q0, q1, t):
     within a few ulps of Robot.joint_values, which evaluates the exact path. Shape
     (len(t), n) for an array t, (n,) for a scalar."""
     revolute = _a.mask(revolute, "revolute")
-    q0, q1 = _a.vector(q0, "q0", len(revolute)), _a.vector(q1, "q1", len(revolute))
+    q0, q1 = _a.vector(q0, "q0"), _a.vector(q1, "q1")
+    if not len(revolute) == len(q0) == len(q1):
+        raise InputError(f"revolute, q0, q1: lengths {len(revolute)}, {len(q0)}, {len(q1)} differ")
     t = _a.times(t)
     tt = t[..., None] if t.ndim else t
     c0, s0, c1, s1 = np.cos(q0 / 2), np.sin(q0 / 2), np.cos(q1 / 2), np.sin(q1 / 2)
