@@ -46,7 +46,7 @@ def _elements(path):
     try:
         with open(path, "rb") as f:
             parser.ParseFile(f)
-    except xml.parsers.expat.ExpatError as e:
+    except (xml.parsers.expat.ExpatError, OSError) as e:
         raise InputError(f"path: {str(path)!r} is not a readable URDF ({e})") from None
     return links, joints
 
