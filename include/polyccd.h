@@ -636,6 +636,17 @@ PCCD_API int pccd_body_new_mesh_d(pccd_body **out, const double *vertices, size_
                                   const unsigned int *triangles, size_t nt);
 PCCD_API int pccd_body_new_mesh_s(pccd_body **out, const char *const *vertices, size_t nv,
                                   const unsigned int *triangles, size_t nt);
+/* pccd_body_new_mesh_d / _s within the limits of cfg: max_seconds, max_work and cancel
+ * bound the building (the numbers' conversion, the edges, the body's hierarchy: work
+ * steps per 4,096 elements), PCCD_ELIMIT when reached; max_number_bits: the body's
+ * numbers ("vertices[3][1]: ..."). cfg NULL: no limits, as pccd_body_new_mesh_d / _s.
+ * *out is NULL on error. */
+PCCD_API int pccd_body_new_mesh_cfg_d(pccd_body **out, const double *vertices, size_t nv,
+                                      const unsigned int *triangles, size_t nt,
+                                      const pccd_config *cfg);
+PCCD_API int pccd_body_new_mesh_cfg_s(pccd_body **out, const char *const *vertices, size_t nv,
+                                      const unsigned int *triangles, size_t nt,
+                                      const pccd_config *cfg);
 
 /* Creates a body of n balls: centers holds n * 3 numbers, radii n numbers.
  * PCCD_EINVAL: out NULL, a NULL array, n == 0, a radius <= 0 ("radii[2]: -1/2 is not
@@ -1023,6 +1034,16 @@ PCCD_API void pccd_step_free(pccd_step *s);
 PCCD_API int pccd_step_add_mesh_d(pccd_step *s, const double *v_t0, const double *v_t1, size_t nv,
                                   const unsigned int *faces, size_t nf, const unsigned int *edges,
                                   size_t ne, const unsigned int *points, size_t np, size_t *index);
+/* pccd_step_add_mesh_d within the limits of cfg: max_seconds, max_work and cancel bound
+ * the building (the checks, the edges derived and sorted: a work step per 4,096
+ * elements), PCCD_ELIMIT when reached, the step unchanged. cfg NULL: no limits. A
+ * caller with one budget for a whole step (polyccd.check_step) gives the same cfg here
+ * and to pccd_step_solve; each call has its own clock. */
+PCCD_API int pccd_step_add_mesh_cfg_d(pccd_step *s, const double *v_t0, const double *v_t1,
+                                      size_t nv, const unsigned int *faces, size_t nf,
+                                      const unsigned int *edges, size_t ne,
+                                      const unsigned int *points, size_t np, size_t *index,
+                                      const pccd_config *cfg);
 
 /* Replaces the positions of mesh `mesh` (the next step of a simulation: same topology,
  * nv its vertex count). Errors as pccd_step_add_mesh_d, and "mesh", "nv" out of range. */

@@ -154,7 +154,7 @@ def test_mesh_errors_name_the_place(vertices, triangles, place, word):
     ([[0, 0, "x"]], [1], "centers[0][2]", "not a number"),
     ([[0, 0, 0]], ["1/0"], "radii[0]", "zero denominator"),
     ([[0, 0, 0]], [[1]], "radii[0]", "expected a number"),
-    ([[0, 0, 0]], [1, 2], "radii", "expected 1 radii"),
+    ([[0, 0, 0]], [1, 2], "centers, radii", "1 centers but 2 radii"),
     ([], [], "centers", "at least one ball"),
     (np.zeros((0, 3)), np.zeros(0), "centers", "at least one ball"),
     ([[0, 0]], [1], "centers[0]", "expected 3 numbers"),

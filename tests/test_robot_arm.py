@@ -141,7 +141,7 @@ def test_bad_urdfs(tmp_path):
         robot.check_path([[0, 0], [0, 1], [0, 8]], [P.Body(P.Spheres([[9, 9, 9]], [1]))])
     with pytest.raises(InputError, match=r"^q0\[1\] \(elbow\): "):  # not finite
         robot.motions([0, float("nan")], [0, 0])
-    with pytest.raises(InputError, match=r"^q: expected 2 joint values"):
+    with pytest.raises(InputError, match=r"^q0: expected 2 joint values"):
         robot.motions([0], [0])
     with pytest.raises(InputError, match=r"^allowed\[0\]:"):
         robot.check([0, 0], [0, 1], allowed=[("base", "nope")])

@@ -66,7 +66,7 @@ def test_limits_error_names_joint_and_value(tmp_path):
     with pytest.raises(InputError, match=r"^joint_limits: 'warn' is not \"error\" or \"ignore\""):
         r.check([0, 0], [1, 0], obstacles, joint_limits="warn")
     # A wrong shape keeps its own message; a non-finite value is the chain's to report.
-    with pytest.raises(InputError, match=r"^q: expected 2 joint values"):
+    with pytest.raises(InputError, match=r"^q0: expected 2 joint values"):
         r.check([0], [0], obstacles)
     with pytest.raises(InputError, match=r"^q1\[0\] \(shoulder\): .*(finite|nan)"):
         r.check([0, 0], [float("nan"), 0], obstacles)

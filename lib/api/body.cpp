@@ -5,8 +5,10 @@
 #include <vector>
 
 #include "api/body_handle.h"
+#include "api/config.h"
 #include "api/guard.h"
 #include "bvh/hierarchy.h"
+#include "util/work_budget.h"
 
 using pccd::api::guard;
 using pccd::api::require;
@@ -22,9 +24,11 @@ using pccd::api::place;
 std::vector<Point3_q> points_d(const double *values, size_t n, const char *name) {
   if (n > 0) require(values, name);
   std::vector<Point3_q> out(n);
-  for (size_t i = 0; i < n; ++i)
+  for (size_t i = 0; i < n; ++i) {
+    if (i % 4096 == 0) pccd::util::work_step();  // a step per 4,096 points (body_cfg)
     for (size_t k = 0; k < 3; ++k)
       out[i][k] = pccd::arith::rational_from_double(values[3 * i + k], place(name, {i, k}));
+  }
   return out;
 }
 
@@ -36,8 +40,10 @@ Rational number_s(const char *text, const std::string &where) {
 std::vector<Point3_q> points_s(const char *const *values, size_t n, const char *name) {
   if (n > 0) require(values, name);
   std::vector<Point3_q> out(n);
-  for (size_t i = 0; i < n; ++i)
+  for (size_t i = 0; i < n; ++i) {
+    if (i % 4096 == 0) pccd::util::work_step();
     for (size_t k = 0; k < 3; ++k) out[i][k] = number_s(values[3 * i + k], place(name, {i, k}));
+  }
   return out;
 }
 
@@ -58,7 +64,7 @@ int new_mesh(pccd_body **out, std::vector<Point3_q> vertices,
                                                          std::move(triangles));
   body->data = pccd::narrow::make_body_data(body->mesh, nullptr);
   body->biggest = pccd::api::biggest_in(*body->mesh);
-  pccd::bvh::hierarchy(*body->data);  // built with the body, shared by every check
+  pccd::bvh::hierarchy(*body->data);  // built with the body, shared by every check (counts steps)
   *out = body.release();
   return PCCD_OK;
 }
@@ -70,6 +76,26 @@ int new_spheres(pccd_body **out, std::vector<Point3_q> centers, std::vector<Rati
   body->data = pccd::narrow::make_body_data(nullptr, body->spheres);
   body->biggest = pccd::api::biggest_in(*body->spheres);
   pccd::bvh::hierarchy(*body->data);
+  *out = body.release();
+  return PCCD_OK;
+}
+
+// Runs make() (a constructor's work) under the limits of cfg (the _cfg variants; cfg
+// NULL: none): the config's rules are checked as for any call, its work limits bound
+// the conversion, the edges and the hierarchy (each counts work steps), and its
+// max_number_bits the body's numbers ("vertices[3][1]: ..."), checked once built.
+template <class Make>
+int under_limits(pccd_body **out, const pccd_config *cfg, Make &&make) {
+  require(out, "out");
+  *out = nullptr;
+  const pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;
+  pccd_body *made = nullptr;
+  {
+    const pccd::api::Call_budget budget(limits.work);
+    make(&made);
+  }
+  std::unique_ptr<pccd_body> body(made);
+  if (cfg) limits.check(body->biggest);
   *out = body.release();
   return PCCD_OK;
 }
@@ -158,6 +184,30 @@ PCCD_API int pccd_body_new_solid(pccd_body **out, const pccd_body *mesh) {
 PCCD_API int pccd_body_solid(const pccd_body *b, int *solid) {
   return pccd::api::getter(__func__, b, "b", solid, "solid",
                            [&] { return !b->mesh || b->mesh->solid() ? 1 : 0; });
+}
+
+PCCD_API int pccd_body_new_mesh_cfg_d(pccd_body **out, const double *vertices, size_t nv,
+                                      const unsigned int *triangles, size_t nt,
+                                      const pccd_config *cfg) {
+  return guard(__func__, [&] {
+    return under_limits(out, cfg, [&](pccd_body **o) {
+      pccd::motion::check_body_size(nv, "vertices");
+      auto tris = triangles_of(triangles, nt);
+      new_mesh(o, points_d(vertices, nv, "vertices"), std::move(tris));
+    });
+  });
+}
+
+PCCD_API int pccd_body_new_mesh_cfg_s(pccd_body **out, const char *const *vertices, size_t nv,
+                                      const unsigned int *triangles, size_t nt,
+                                      const pccd_config *cfg) {
+  return guard(__func__, [&] {
+    return under_limits(out, cfg, [&](pccd_body **o) {
+      pccd::motion::check_body_size(nv, "vertices");
+      auto tris = triangles_of(triangles, nt);
+      new_mesh(o, points_s(vertices, nv, "vertices"), std::move(tris));
+    });
+  });
 }
 
 PCCD_API void pccd_body_free(pccd_body *b) { delete b; }

@@ -90,6 +90,23 @@ PCCD_API int pccd_step_add_mesh_d(pccd_step *s, const double *v_t0, const double
   });
 }
 
+PCCD_API int pccd_step_add_mesh_cfg_d(pccd_step *s, const double *v_t0, const double *v_t1,
+                                      size_t nv, const unsigned int *faces, size_t nf,
+                                      const unsigned int *edges, size_t ne,
+                                      const unsigned int *points, size_t np, size_t *index,
+                                      const pccd_config *cfg) {
+  return guard(__func__, [&] {
+    require(s, "s");
+    // the config's rules (struct_size, ...) as for any call; only its work limits are used
+    const pccd::api::Call_limits limits = pccd::api::read_call(cfg).limits;
+    const pccd::api::Call_budget budget(limits.work);
+    const size_t m = pccd::step::add_mesh(s->set, v_t0, v_t1, nv, faces, nf, edges, edges ? ne : 0,
+                                          points, np);
+    if (index) *index = m;
+    return PCCD_OK;
+  });
+}
+
 PCCD_API int pccd_step_set_positions_d(pccd_step *s, size_t mesh, const double *v_t0,
                                        const double *v_t1, size_t nv) {
   return guard(__func__, [&] {

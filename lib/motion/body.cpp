@@ -6,6 +6,7 @@
 
 #include "arith/errors.h"
 #include "motion/solid.h"
+#include "util/work_budget.h"
 
 namespace pccd::motion {
 
@@ -46,6 +47,9 @@ Mesh_body::Mesh_body(std::vector<Point3_q> vertices, std::vector<Triangle> trian
       if (a > b) std::swap(a, b);
       sides.push_back({a, b, static_cast<uint32_t>(t)});
     }
+  // A work step per 4,096 sides before the sort (util/work_budget.h: a body built under
+  // limits, pccd_body_new_mesh_cfg_d, ends here rather than after the sort).
+  util::work_step(1 + sides.size() / 4096);
   std::sort(sides.begin(), sides.end());
 
   edge_tri_start_.push_back(0);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bvh/hierarchy.h"
+#include "scene/delta_witness.h"
 #include "pred/static_contact.h"
 #include "util/work_budget.h"
 
@@ -191,21 +192,22 @@ bool triangles_touch(const narrow::Body_data &A, uint32_t ea, const enclose::Pos
 }  // namespace
 
 bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
-                 const enclose::Pose_piece &pb, Node_pairs front, size_t &budget, uint32_t &ea, uint32_t &eb) {
+                 const enclose::Pose_piece &pb, Node_pairs front, size_t &budget, uint32_t &ea, uint32_t &eb,
+                 double reach, double delta_lo) {
   if (!A.mesh || !B.mesh || !pa.finite || !pb.finite) return false;
   const bvh::Hierarchy &ha = bvh::hierarchy(A), &hb = bvh::hierarchy(B);
   for (; !front.empty() && budget > 0; --budget) {
     const auto [ka, kb] = front.back();
     front.pop_back();
-    if (!enclose::boxes_meet(enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h),
+    if (!enclose::boxes_meet(enclose::grow(enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h), reach),
                              enclose::frame_box(pb, hb.nodes[kb].c, hb.nodes[kb].h)))
       continue;
     const bool la = ha.nodes[ka].leaf(), lb = hb.nodes[kb].leaf();
     if (la && lb) {
       const Side_piece sa{&pa}, sb{&pb};
-      if (leaves_apart(A, ha, ka, sa, B, hb, kb, sb, 0)) continue;
+      if (leaves_apart(A, ha, ka, sa, B, hb, kb, sb, reach)) continue;
       const uint32_t a = ha.elems[ha.nodes[ka].first], b = hb.elems[hb.nodes[kb].first];
-      if (triangles_touch(A, a, pa, B, b, pb)) {
+      if (triangles_touch(A, a, pa, B, b, pb) || (reach > 0 && triangles_within(A, a, pa, B, b, pb, delta_lo))) {
         ea = a;
         eb = b;
         return true;
@@ -229,13 +231,25 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
   const narrow::Body_data &A = *SA.data, &B = *SB.data;
   const bvh::Hierarchy &ha = bvh::hierarchy(A), &hb = bvh::hierarchy(B);
   const double yna = norm_bound(A), ynb = norm_bound(B);
-  if (reach > 0 || !A.mesh || !B.mesh || !SA.instant || !SB.instant) w = nullptr;
+  if ((reach > 0 && !(lim.delta_lo > 0)) || !A.mesh || !B.mesh || !SA.instant || !SB.instant) w = nullptr;
   size_t witness_spent = 0;  // node pairs tested at midpoints
   struct Item {
     int d;
     long i;
     Front front;
   };
+  if (w && reach > 0 && until > 0) {
+    // Minimum separation: a pair within delta at t = 0 (a start pose closer than delta,
+    // common where the start is only checked for touching) has its first contact at 0;
+    // a witness there ends the search at once (kWitness_tests node pairs).
+    size_t budget = kWitness_tests;
+    if (touching_at(A, SA.instant(0, 0), B, SB.instant(0, 0), {{0, 0}}, budget, w->a, w->b, reach, lim.delta_lo)) {
+      w->found = true;
+      w->depth = 0;
+      w->index = 0;
+      return 0;
+    }
+  }
   std::vector<Item> stack;
   stack.push_back({0, 0, Front{{0, 0}}});
   Front next, work;
@@ -284,7 +298,8 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
       const size_t before = budget;
       const int md = it.d + 1;
       const long mi = 2 * it.i + 1;
-      bool hit = touching_at(A, SA.instant(md, mi), B, SB.instant(md, mi), next, budget, w->a, w->b);
+      bool hit = touching_at(A, SA.instant(md, mi), B, SB.instant(md, mi), next, budget, w->a, w->b, reach,
+                             lim.delta_lo);
       witness_spent += before - budget;
       if (hit) {
         w->found = true;
@@ -301,7 +316,8 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
   return kNever;
 }
 
-bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w) {
+bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w, double reach,
+                   double delta_lo) {
   if (!A.data->mesh || !B.data->mesh || !A.instant || !B.instant || !(lower >= 0 && lower < 1)) return false;
   const long base = std::lround(std::ldexp(lower, kMax_depth));  // exact: lower is on the grid
   for (int k = kMax_depth; k >= 1; k -= 2) {
@@ -309,7 +325,7 @@ bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Wit
     if (i >= (1L << kMax_depth)) break;
     size_t budget = kWitness_tests;
     if (touching_at(*A.data, A.instant(kMax_depth, i), *B.data, B.instant(kMax_depth, i), {{0, 0}}, budget, w.a,
-                    w.b)) {
+                    w.b, reach, delta_lo)) {
       w.found = true;
       w.depth = kMax_depth;
       w.index = i;

@@ -37,7 +37,8 @@
 // 2^(d + 1) (touching_at); a triangle pair found touching there ends the traversal (the
 // pair touches at m, exactly: the answer is certain) and the piece's start is returned.
 // Minimum separation: side A's boxes grow by reach (enclose::reach_of), so "touch" reads
-// "come within delta" throughout (no witness is looked for then).
+// "come within delta" throughout; a witness is then a triangle pair certainly within
+// delta at the midpoint (delta_witness.h; Filter_limits::delta_lo, issue 33).
 #pragma once
 #include <functional>
 #include <utility>
@@ -83,9 +84,11 @@ using Node_pairs = std::vector<std::pair<uint32_t, uint32_t>>;
 struct Filter_limits {
   double until = 1;               // pieces starting at or after it are not looked at
   size_t max_tests = kMax_tests;  // front pairs per body pair
+  double delta_lo = 0;            // with reach > 0: delta rounded down (witnesses within it)
 };
 
-// w: when not null (and reach is 0, both bodies meshes), witnesses are looked for.
+// w: when not null (both bodies meshes; with reach > 0 only when lim.delta_lo > 0),
+// witnesses are looked for.
 double first_uncleared(const Filter_side &A, const Filter_side &B, double reach, const Filter_limits &lim = {},
                        Witness *w = nullptr);
 
@@ -93,7 +96,9 @@ double first_uncleared(const Filter_side &A, const Filter_side &B, double reach,
 // below 1 (lower: a pair's first_uncleared, on the dyadic grid of kMax_depth): after
 // the first uncleared piece, where a contact that first_uncleared's midpoints missed
 // most likely overlaps. touching_at from the roots, kWitness_tests node pairs each.
-bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w);
+// reach, delta_lo: as first_uncleared's (0: touching witnesses only).
+bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w, double reach = 0,
+                   double delta_lo = 0);
 
 // Whether some element pair under the node pairs of front (e.g. {{0, 0}}: the roots)
 // certainly shares a point at the instant of the poses pa, pb (enclosures of the exact
@@ -101,8 +106,10 @@ bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Wit
 // interval arithmetic on the element boxes (a certain answer holds for every point of
 // the boxes, so for the exact one; an uncertain one is not a witness). Triangles of two
 // meshes only; each node pair tested takes one from budget, and none is tested once it
-// is 0 (then: none found).
+// is 0 (then: none found). reach > 0: A's boxes grow by reach and a leaf pair certainly
+// within delta_lo (delta_witness.h) is found too.
 bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
-                 const enclose::Pose_piece &pb, Node_pairs front, size_t &budget, uint32_t &ea, uint32_t &eb);
+                 const enclose::Pose_piece &pb, Node_pairs front, size_t &budget, uint32_t &ea, uint32_t &eb,
+                 double reach = 0, double delta_lo = 0);
 
 }  // namespace pccd::scene

@@ -243,7 +243,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
   const motion::Chain_path path(r.chain, q0, q1);  // Input_error for a rejected segment
   const std::vector<Moving_body> obst = prepare_bodies(obstacles, "obstacles");
   const size_t nr = r.bodies.size();
-  if (nr + obst.size() < 2) throw arith::Input_error("obstacles: nothing to check (one body, no obstacle)");
+  // No pair at all (a robot without geometry, a lone link without obstacles): nothing
+  // can touch, so no contact (issue 33: this was "nothing to check", an error).
   std::vector<Pair_plan> plans;
   for (size_t i = 0; i < nr; ++i) {
     if (ro.self_collision)
@@ -321,6 +322,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     // keeps those that may touch by then.
     constexpr size_t kAfter_tests = 1024;
     Filter_limits lim;
+    lim.delta_lo = reach > 0 ? opt.solve.delta_box.lo : 0;  // witnesses within delta
     double horizon = 1;  // first-contact mode: the witness's t_w
     for (Pair_plan p : plans) {
       Witness w;
@@ -347,7 +349,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
                      [](const Pair_plan &x, const Pair_plan &y) { return x.lower < y.lower; });
     // Decide mode: a witness just after a kept pair's bound, before any exact motion.
     for (size_t k = 0; k < kept.size() && decide && !found.found; ++k)
-      if (witness_after(side(kept[k].i, base_of(kept[k])), side(kept[k].j, base_of(kept[k])), kept[k].lower, found)) {
+      if (witness_after(side(kept[k].i, base_of(kept[k])), side(kept[k].j, base_of(kept[k])), kept[k].lower, found,
+                        reach, lim.delta_lo)) {
         found_i = kept[k].i;
         found_j = kept[k].j;
       }
@@ -359,10 +362,11 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         if (p.i == found_i && p.j == found_j) {
           Filter_limits upto;
           upto.until = horizon;
+          upto.delta_lo = lim.delta_lo;
           const long base = base_of(p);
           p.lower = std::max(p.lower, first_uncleared(side(p.i, base), side(p.j, base), reach, upto));
           Witness w;
-          if (p.lower < horizon && witness_after(side(p.i, base), side(p.j, base), p.lower, w)) {
+          if (p.lower < horizon && witness_after(side(p.i, base), side(p.j, base), p.lower, w, reach, lim.delta_lo)) {
             const double t = std::ldexp(static_cast<double>(w.index), -w.depth);
             if (t < horizon) horizon = t;
           }

@@ -52,8 +52,8 @@ struct Robot_options {
 };
 
 // Input_error: "q0[k]" / "q1[k]" as motion::Chain::segment_motions, "obstacles[k].motion"
-// for an obstacle motion whose quaternion vanishes, "obstacles: nothing to check" when
-// there is no pair at all.
+// for an obstacle motion whose quaternion vanishes. No pair at all (no geometry, or one
+// body and no obstacle) is no contact.
 Scene_report check_robot(const Robot_model &r, const double *q0, const double *q1,
                          const std::vector<Scene_body> &obstacles, const Scene_options &opt,
                          const Robot_options &ro);

@@ -54,6 +54,9 @@ class Driver {
     double u[3];
     frame_velocity(s, u);
     const size_t nv = s.x0.size() / 3;
+    // The boxes below: a work step per 4,096 vertices, faces and edges (tree.cpp counts
+    // the trees), so the limits hold while a big step is set up.
+    util::work_step(1 + (nv + s.faces.size() + s.edges.size()) / 4096);
     vb_.resize(nv);
     for (size_t v = 0; v < nv; ++v)
       for (int a = 0; a < 3; ++a) {

@@ -7,6 +7,7 @@
 #include "arith/errors.h"
 #include "arith/rational.h"
 #include "motion/body.h"
+#include "util/work_budget.h"
 
 namespace pccd::step {
 namespace {
@@ -47,7 +48,10 @@ size_t add_mesh(Step_set &s, const double *x0, const double *x1, size_t nv,
   if (nf && !faces) throw Input_error("faces: is NULL");
   if (ne && !edges) throw Input_error("edges: is NULL");
   if (np && !points) throw Input_error("points: is NULL");
-  // Everything is checked into locals first, so the set is unchanged on error.
+  // Everything is checked into locals first, so the set is unchanged on error. A work
+  // step per 4,096 elements before each pass (pccd_step_add_mesh_cfg_d's limits).
+  const uint64_t pass = 1 + (nv + nf + ne + np) / 4096;
+  util::work_step(pass);
   std::vector<std::array<uint32_t, 3>> f(nf);
   for (size_t i = 0; i < nf; ++i) {
     for (size_t k = 0; k < 3; ++k) check_index(faces[3 * i + k], nv, at("faces", i) + "[" + std::to_string(k) + "]");
@@ -74,8 +78,10 @@ size_t add_mesh(Step_set &s, const double *x0, const double *x1, size_t nv,
         e.push_back({std::min(a, b), std::max(a, b)});
       }
   }
+  util::work_step(pass);
   std::sort(e.begin(), e.end());
   e.erase(std::unique(e.begin(), e.end()), e.end());
+  util::work_step(pass);
   std::vector<uint32_t> p(np);
   for (size_t i = 0; i < np; ++i) {
     check_index(points[i], nv, at("points", i));

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "util/work_budget.h"
+
 namespace pccd::step {
 namespace {
 
@@ -20,6 +22,11 @@ uint32_t spread3(uint32_t x) {
 Box_tree::Box_tree(const std::vector<Box> &boxes) {
   const size_t n = boxes.size();
   if (n == 0) return;
+  // A work step per 4,096 boxes before each pass over them (util/work_budget.h): a
+  // step's trees are built by pccd_step_solve under its limits (issue 33: a 1M-triangle
+  // step ran 1 s past max_seconds building them).
+  const uint64_t pass = 1 + n / 4096;
+  util::work_step(pass);
   double lo[3], hi[3];
   for (int a = 0; a < 3; ++a) lo[a] = hi[a] = 0.5 * boxes[0].lo[a] + 0.5 * boxes[0].hi[a];
   std::vector<double> c(3 * n);
@@ -48,6 +55,7 @@ Box_tree::Box_tree(const std::vector<Box> &boxes) {
     }
     code[i] = m;
   }
+  util::work_step(pass);
   // Stable LSD radix sort of indices by code, 10 bits per pass.
   order_.resize(n);
   for (size_t i = 0; i < n; ++i) order_[i] = static_cast<uint32_t>(i);
@@ -58,6 +66,7 @@ Box_tree::Box_tree(const std::vector<Box> &boxes) {
     for (size_t d = 0; d < 1024; ++d) count[d + 1] += count[d];
     for (size_t i = 0; i < n; ++i) tmp[count[(code[order_[i]] >> shift) & 1023]++] = order_[i];
     order_.swap(tmp);
+    util::work_step(pass);
   }
   sorted_.resize(n);
   for (size_t k = 0; k < n; ++k) sorted_[k] = boxes[order_[k]];

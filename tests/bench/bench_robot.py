@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Benchmark: a planner-like workload on real arms. N random joint-space segments of the
 Franka Panda and of the UR5 (example-robot-data's URDFs, collision meshes and SRDFs)
-among a few fixed obstacles (boxes and 2 mm plates), each checked by
+among a few fixed obstacles (boxes and 2 mm plates), each checked by (--min-distance D: also
+with min_distance=D, in the same run, and the ratio of the means printed)
 
   polyccd decide  Robot.check(q0, q1, obstacles, first_contact=False): does anything touch
                   on [0, 1]? (pccd_robot_check in decide mode: the links' interval poses
@@ -90,6 +91,11 @@ def run_arm(P, load_urdf, example_robot_file, name, self_collision, args, summar
 
     res = args.resolution
     modes = {"decide": dict(first_contact=False), "first": dict()}
+    if args.min_distance:  # issue 33: the same segments with a minimum distance, same run
+        limit = P.Limits(max_seconds=args.md_max_seconds)
+        modes["decide md"] = dict(first_contact=False, min_distance=args.min_distance, limits=limit)
+        modes["first md"] = dict(min_distance=args.min_distance, limits=limit)
+    ended = {m: 0 for m in modes}
     times = {m: [] for m in modes}
     hits = {m: 0 for m in modes}
     disagree = []
@@ -107,9 +113,13 @@ def run_arm(P, load_urdf, example_robot_file, name, self_collision, args, summar
         out = {}
         for m, kw in modes.items():
             t0 = clock()
-            out[m] = robot.check(q0, q1, obstacles, **options, **kw)
+            try:
+                out[m] = robot.check(q0, q1, obstacles, **options, **kw)
+            except P.LimitError:  # --md-max-seconds: counted, its time kept
+                ended[m] += 1
+                out[m] = None
             times[m].append(clock() - t0)
-            hits[m] += out[m].collides
+            hits[m] += out[m] is not None and out[m].collides
         exact = out["first"]
         if out["decide"].collides != exact.collides:
             disagree.append(f"segment {s}: q0 = {q0.tolist()}, q1 = {q1.tolist()}")
@@ -136,7 +146,13 @@ def run_arm(P, load_urdf, example_robot_file, name, self_collision, args, summar
     print(f"{'method':<28} {'mean ms':>9} {'median':>9} {'max ms':>9} {'poses':>6} "
           f"{'colliding':>9} {'MISSES':>7} {'unreported':>10} {'earlier':>7}")
     for m in modes:
-        print(f"{f'polyccd {m}':<28} {ms(times[m])} {'-':>6} {hits[m]:>9} {'-':>7} {'-':>10} {'-':>7}")
+        print(f"{f'polyccd {m}':<28} {ms(times[m])} {'-':>6} {hits[m]:>9} {'-':>7} {'-':>10} {'-':>7}"
+              f"{f'  ({ended[m]} ended by the limit)' if ended[m] else ''}")
+    if args.min_distance:
+        mean = statistics.mean
+        print(f"min_distance {args.min_distance} / none, same segments: decide "
+              f"{mean(times['decide md']) / mean(times['decide']):.2f}x, first "
+              f"{mean(times['first md']) / mean(times['first']):.2f}x (means)")
     for r, run in runs.items():
         print(f"{f'FCL discrete @ {r} rad':<28} {ms(run['times'])} "
               f"{statistics.mean(run['poses']):6.1f} {run['hits']:>9} {len(run['misses']):>7} "
@@ -169,6 +185,10 @@ def main(argv=None):
                     help="time per check: process CPU time (default) or wall time")
     ap.add_argument("--arms", nargs="+", default=sorted(ARMS), choices=sorted(ARMS))
     ap.add_argument("--self-collision", nargs="+", default=["off", "on"], choices=["off", "on"])
+    ap.add_argument("--min-distance", type=float, default=0,
+                    help="also check every segment with this min_distance (issue 33), same run")
+    ap.add_argument("--md-max-seconds", type=float, default=60,
+                    help="max_seconds of each min_distance check (default 60)")
     args = ap.parse_args(argv)
     try:
         import fcl  # noqa: F401

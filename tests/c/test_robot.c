@@ -194,8 +194,11 @@ static void cases(void)
     const double t0[1] = {0}, t1[1] = {7};
     FAILS(pccd_robot_check(rr, t0, t1, 1, obst, NULL, 1, NULL, NULL, NULL, rep), PCCD_EINVAL,
           "q1[0]: the revolute segment from 0 to 7 turns by 2 pi or more");
-    FAILS(pccd_robot_check(rr, t0, t0, 1, NULL, NULL, 0, NULL, NULL, NULL, rep), PCCD_EINVAL,
-          "obstacles: nothing to check");
+    /* One body and no obstacle: no pair, so no contact (issue 33: was an error). */
+    int hit = -1;
+    OK(pccd_robot_check(rr, t0, t0, 1, NULL, NULL, 0, NULL, NULL, NULL, rep));
+    OK(pccd_report_collides(rep, &hit));
+    CHECK(hit == 0);
     (void)turn;
     pccd_robot_free(rr);
     pccd_chain_free(rc);

@@ -35,8 +35,8 @@ def _exact_float64(a, place):
     """a converted to float64 when every value converts exactly, else InputError
     (NotDouble for a number that is not exactly a double)."""
     if a.dtype.kind not in "fiuO":
-        raise InputError(f"{place}: expected float64 coordinates, got dtype {a.dtype} "
-                         "(exact rationals go through polyccd.solve)")
+        raise InputError(f"{place}: expected real numbers (float64 values), got dtype "
+                         f"{a.dtype}")
     b = np.empty(a.shape, dtype=np.float64)
     for index in np.ndindex(a.shape):  # rare path (not float64 input): check each value
         x = a[index]
@@ -59,6 +59,16 @@ def _exact_float64(a, place):
     return b
 
 
+def _no_bools(x, shape, place):
+    """InputError naming the first bool of the nested sequence x (True is not a number)."""
+    flat = np.empty(shape, dtype=object)
+    flat[...] = x if shape else np.asarray(x, dtype=object)
+    for i, v in enumerate(flat.ravel().tolist()):
+        if isinstance(v, (bool, np.bool_)):
+            where = "".join(f"[{k}]" for k in np.unravel_index(i, shape)) if shape else ""
+            raise InputError(f"{place}{where}: {v!r} is not a number")
+
+
 def _float64_array(x, place, shape_text, fits):
     """A C-contiguous float64 array of x when fits(shape), or InputError naming place and
     the expected shape_text."""
@@ -68,6 +78,8 @@ def _float64_array(x, place, shape_text, fits):
             a = np.asarray(x)
         except (ValueError, TypeError) as e:
             raise InputError(f"{place}: not an array of shape {shape_text}: {e}") from None
+        if a.dtype.kind in "iubf":  # numpy reads True as 1 in a list of numbers: refused
+            _no_bools(x, a.shape, place)
     if a.dtype != _F64:
         a = _exact_float64(a, place)
     if not fits(a.shape):

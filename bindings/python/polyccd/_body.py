@@ -26,7 +26,10 @@ from typing import Any, Optional, Sequence, Tuple
 
 from ._types import Indices, Number, Points, Vector
 from . import _handles as handles
+from . import _limits
+from ._limits import Limits
 from ._errors import InputError, check
+from ._flags import real
 from ._numbers import exact_fraction, number_text, show
 from ._pccd import ffi, lib
 from ._solve import _items, _texts
@@ -153,21 +156,27 @@ class Mesh(_Body):
 
     __slots__ = ()
 
-    def __init__(self, vertices: Points, triangles: Indices, solid: bool = False) -> None:
+    def __init__(self, vertices: Points, triangles: Indices, solid: bool = False, *,
+                 limits: Optional[Limits] = None) -> None:
+        """limits: a polyccd.Limits bounding the building (pccd_body_new_mesh_cfg_d:
+        the conversion, the edges, the hierarchy), LimitError when reached; None: none."""
         nv, doubles, texts = _points(vertices, "vertices")
         nt, tris = _indices(triangles)
         if not isinstance(solid, (bool, np.bool_)):
             raise InputError(f"solid: expected True or False, got {show(solid)}")
-        self._build(nv, doubles, None if texts is None else tuple(texts), tris, bool(solid))
+        cfg = None if limits is None else _limits.config(limits)
+        self._build(nv, doubles, None if texts is None else tuple(texts), tris, bool(solid), cfg)
 
-    def _build(self, nv, doubles, texts, tris, solid=False):
+    def _build(self, nv, doubles, texts, tris, solid=False, cfg=None):
         t = ffi.from_buffer("unsigned int[]", tris)
+        tail, cfg_ = ("", ()) if cfg is None else ("cfg_", (cfg,))
         if doubles is not None:
             handle = handles.new("body", ffi.from_buffer("double[]", doubles), nv, t,
-                                 len(tris) // 3, via="new_mesh_d")
+                                 len(tris) // 3, *cfg_, via=f"new_mesh_{tail}d")
         else:
             array, _keep = _texts(texts)
-            handle = handles.new("body", array, nv, t, len(tris) // 3, via="new_mesh_s")
+            handle = handles.new("body", array, nv, t, len(tris) // 3, *cfg_,
+                                 via=f"new_mesh_{tail}s")
         if solid:
             handle = handles.new("body", handle, via="new_solid")
         object.__setattr__(self, "_handle", handle)
@@ -190,7 +199,7 @@ class Mesh(_Body):
         centred at the origin of its body frame (place it with a Motion or Body's pose),
         as 12 outward-facing triangles; halving a double is exact, so its corners are
         exactly +-extents/2. solid: as for Mesh (the box is closed)."""
-        e = [float(x) for x in _items(extents, "extents", "3 numbers")]
+        e = [real(x, f"extents[{k}]") for k, x in enumerate(_items(extents, "extents", "3 numbers"))]
         if len(e) != 3 or not all(np.isfinite(x) and x > 0 for x in e):
             raise InputError(f"extents: expected 3 positive finite numbers, got {show(extents)}")
         h = [x / 2 for x in e]
@@ -207,11 +216,11 @@ class Mesh(_Body):
         the cylinder; its distance from the cylinder is at most radius (1 / cos(pi /
         sections) - 1), 2 % for 16 sections. Collisions are those of the prism. solid: as
         for Mesh (the prism is closed)."""
-        r, hgt = float(radius), float(height)
-        if not (np.isfinite(r) and r > 0 and np.isfinite(hgt) and hgt > 0):
-            raise InputError(f"radius, height: expected positive finite numbers, got "
-                             f"{show(radius)}, {show(height)}")
-        if not isinstance(sections, numbers.Integral) or sections < 3:
+        r, hgt = real(radius, "radius"), real(height, "height")
+        for name, x in (("radius", r), ("height", hgt)):
+            if not (np.isfinite(x) and x > 0):
+                raise InputError(f"{name}: expected a positive finite number, got {show(x)}")
+        if isinstance(sections, bool) or not isinstance(sections, numbers.Integral) or sections < 3:
             raise InputError(f"sections: expected an integer >= 3, got {show(sections)}")
         big = r / np.cos(np.pi / sections) * (1 + 1e-12)
         a = 2 * np.pi * (np.arange(sections) + 0.5) / sections
@@ -341,7 +350,7 @@ class Spheres(_Body):
         n, c_doubles, c_texts = _points(centers, "centers")
         nr, r_doubles, r_texts = _points(radii, "radii", width=None)
         if nr != n:
-            raise InputError(f"radii: expected {n} radii (one per center), got {nr}")
+            raise InputError(f"centers, radii: {n} centers but {nr} radii (one radius per center)")
         self._build(n, c_doubles, c_texts, r_doubles, r_texts)
 
     def _build(self, n, c_doubles, c_texts, r_doubles, r_texts):

@@ -18,6 +18,7 @@ if TYPE_CHECKING:
     from ._motion import Motion
 from . import _handles as handles
 from . import _limits
+from ._arrays import _float64_array
 from ._errors import InputError, check
 from ._motion import RECIPE_BUILDERS, Motion, _number
 from ._numbers import show
@@ -29,10 +30,7 @@ JOINTS = {"fixed": lib.PCCD_JOINT_FIXED, "revolute": lib.PCCD_JOINT_REVOLUTE,
 
 def _doubles(value, place, size):
     """A float64 array of `size` numbers (floats are taken as their exact value)."""
-    try:
-        a = np.ascontiguousarray(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise InputError(f"{place}: expected {size} numbers, got {show(value)}") from None
+    a = _float64_array(value, place, f"({size},)", lambda s: True)  # types, bools, exactness
     if a.shape != (size,):
         raise InputError(f"{place}: expected {size} numbers, got shape {a.shape}")
     return a

@@ -6,8 +6,8 @@ from typing import Optional, Tuple
 
 import numpy as np
 
-from ._errors import InternalError, check
-from ._numbers import fraction_from_text
+from ._errors import InputError, InternalError, check
+from ._numbers import fraction_from_text, show
 from ._pccd import ffi, lib
 
 KINDS = ("vertex-face", "edge-edge", "vertex-edge", "vertex-vertex", "sphere-sphere")
@@ -143,7 +143,11 @@ class Answers:
 def answers(results):
     """The Answers of a sequence of Result or SceneResult objects (nothing computed:
     the results' own values, gathered into arrays)."""
-    results = list(results)
+    from ._solve import _items  # _solve imports this module
+    results = _items(results, "results", "a sequence of Result or SceneResult objects")
+    for k, r in enumerate(results):
+        if not (hasattr(r, "collides") and hasattr(r, "first_contact")):
+            raise InputError(f"results[{k}]: expected a Result or SceneResult, got {show(r)}")
     n = len(results)
     collides = np.fromiter((r.collides for r in results), dtype=bool, count=n)
     firsts = [r.first_contact for r in results]

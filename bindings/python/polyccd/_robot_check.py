@@ -14,8 +14,10 @@ import numpy as np
 from . import _handles as handles
 from . import _limits
 from ._errors import InputError, check
+from ._path import file_path
 from ._pccd import ffi, lib
 from ._scene import Body, _options, _read, _scratch
+from ._solve import _items
 
 
 # Robot -> (shapes key, (pccd_robot, bodies, groups, last allowed), shapes): kept beside
@@ -27,12 +29,13 @@ def read_srdf(path, robot):
     """The link pairs of an SRDF file's <disable_collisions link1= link2=/> elements, as
     a set of frozensets of URDF link names. InputError for a missing or unreadable file
     or a link the robot does not have."""
-    if not os.path.isfile(str(path)):
-        raise InputError(f"srdf: file {str(path)!r} not found")
+    path = file_path(path, "srdf")
+    if not os.path.isfile(path):
+        raise InputError(f"srdf: file {path!r} not found")
     try:
-        root = ET.parse(str(path)).getroot()
+        root = ET.parse(path).getroot()
     except ET.ParseError as e:
-        raise InputError(f"srdf: {str(path)!r} is not readable XML ({e})") from None
+        raise InputError(f"srdf: {path!r} is not readable XML ({e})") from None
     out = set()
     for k, d in enumerate(root.iter("disable_collisions")):
         a, b = d.get("link1"), d.get("link2")
@@ -91,8 +94,11 @@ def _set_allowed(robot, made, allowed):
 def _validated(robot, allowed):
     """The allowed link pairs as a set of frozensets; InputError naming a bad one."""
     allowed_set = set()
-    for k, pair in enumerate(allowed):
-        pair = tuple(pair)
+    pairs = list(allowed) if isinstance(allowed, (set, frozenset)) else \
+        _items(allowed, "allowed", "an iterable of link-name pairs")  # a set of pairs: as good
+    for k, pair in enumerate(pairs):
+        pair = tuple(pair) if isinstance(pair, frozenset) else \
+            tuple(_items(pair, f"allowed[{k}]", "a pair of link names"))
         if len(pair) != 2 or any(x not in robot.tree for x in pair):
             raise InputError(f"allowed[{k}]: {pair!r} is not a pair of link names")
         allowed_set.add(frozenset(pair))
@@ -131,12 +137,12 @@ def check_robot(robot, q0, q1, obstacles, *, self_collision, allowed, time_toler
                 all_contacts, threads, broad_phase, min_distance, limits, first_contact,
                 filter):
     """(SceneResult, free_until) of one segment (Robot.check)."""
-    obstacles = list(obstacles)
+    obstacles = _items(obstacles, "obstacles", "an iterable of polyccd.Body")
     for i, o in enumerate(obstacles):
         if not isinstance(o, Body):
             raise InputError(f"obstacles[{i}]: expected a polyccd.Body, got {type(o).__name__}")
-    a0 = np.ascontiguousarray(robot.chain_values(q0))
-    a1 = np.ascontiguousarray(robot.chain_values(q1))
+    a0 = np.ascontiguousarray(robot.chain_values(q0, "q0"))
+    a1 = np.ascontiguousarray(robot.chain_values(q1, "q1"))
     made = _handle(robot)
     _set_allowed(robot, made, allowed)
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, True, limits,

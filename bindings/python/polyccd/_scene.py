@@ -17,6 +17,7 @@ from . import _limits
 from ._body import Mesh, Spheres
 from ._contact import ContactGeometry, contact_geometry as _contact_geometry
 from ._errors import InputError, check
+from ._flags import flag
 from ._motion import Motion
 from ._numbers import fraction_from_text, show
 from ._pccd import ffi, lib
@@ -103,9 +104,15 @@ class SceneResult:
         touch, sorted and unique, kind in "vertex", "edge", "triangle", "sphere", "solid" (only the
         kinds present). pairs="first": the contacts of the scene's first pairs;
         "all": of every pair in contact."""
-        source = {"first": self.first, "all": self.pairs}.get(pairs)
+        source = {"first": self.first, "all": self.pairs}.get(pairs) if isinstance(pairs, str) else None
         if source is None:
             raise InputError(f'pairs: expected "first" or "all", got {show(pairs)}')
+        names = _names(self.bodies)  # () for a result without its bodies: any index or name
+        if isinstance(body, (bool, np.bool_)) or not isinstance(body, (str, int, np.integer)) or \
+                (self.bodies and (body not in names if isinstance(body, str)
+                                  else not 0 <= body < len(self.bodies))):
+            raise InputError(f"body: expected the index or the name of a body of this result, "
+                             f"got {show(body)}")
         found = {}
         for p in source:
             for c in p.contacts:
@@ -123,12 +130,18 @@ class SceneResult:
         pccd_contact_geometry_compute has the definitions; a result of a solve with
         min_distance > 0 is refused when its features are apart. bodies: default the
         ones this result was solved from."""
-        bodies = self.bodies if bodies is None else list(bodies)
+        bodies = self.bodies if bodies is None else _items(bodies, "bodies", "a list of polyccd.Body")
+        for k, b in enumerate(bodies):
+            if not isinstance(b, Body):
+                raise InputError(f"bodies[{k}]: expected a polyccd.Body, got {show(b)}")
         if not bodies:
             raise InputError("bodies: this result does not hold its bodies (it was "
                              "pickled or made elsewhere); pass bodies=[...]")
         p = _item(self.pairs, pair, "pair")
         c = _item(p.contacts, contact, "contact")
+        if max(p.bodies) >= len(bodies):
+            raise InputError(f"bodies: pair {pair} is of bodies {p.bodies}, but {len(bodies)} "
+                             f"bodies were given")
         return _contact_geometry(bodies[p.bodies[0]], c.a, bodies[p.bodies[1]], c.b, c.first_contact)
 
 
@@ -210,15 +223,14 @@ def _options(time_tolerance, all_contacts, threads, broad_phase, want_exact, lim
 
 def _new_options(time_tolerance, all_contacts, threads, broad_phase, want_exact, limits=None,
                  min_distance=None, want_time=True):
-    if broad_phase not in BROAD_PHASES:
+    if not isinstance(broad_phase, str) or broad_phase not in BROAD_PHASES:
         raise InputError("broad_phase: expected \"auto\", \"boxes\", \"brute\", \"bvh\" or \"range\", "
                          f"got {show(broad_phase)}")
     threads = _limits.thread_count(threads)
     _limits.warn_threads(threads)
-    if all_contacts not in (True, False):
-        raise InputError(f"all_contacts: expected True or False, got {show(all_contacts)}")
-    if want_time not in (True, False):
-        raise InputError(f"first_contact: expected True or False, got {show(want_time)}")
+    all_contacts = flag(all_contacts, "all_contacts")
+    want_time = flag(want_time, "first_contact")
+    want_exact = flag(want_exact, "want_exact")
     cfg, keep = _config(time_tolerance, want_time, want_exact, limits, min_distance)
     opt = ffi.new("pccd_scene_options *")
     check(lib.pccd_scene_options_init(opt))
@@ -285,6 +297,7 @@ def check_scene(bodies: Iterable[Body], *, time_tolerance: Number = "1e-12",
     ``polyccd.check([polyccd.Body(box, polyccd.Motion.linear((-3, 0, 0), (3, 0, 0))),
     polyccd.Body(box)]).first_contact.exact == Fraction(1, 3)``."""
     bodies = _bodies_list(bodies)  # fewer than 2: pccd_scene_solve says so
+    skip_pairs = _items(skip_pairs, "skip_pairs", "a list of body pairs")
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, want_exact,
                                limits, min_distance, first_contact)
     rep = _scratch.report
@@ -300,7 +313,7 @@ def check_scene(bodies: Iterable[Body], *, time_tolerance: Number = "1e-12",
     for b in bodies:
         check(lib.pccd_scene_add(scene, b.shape._handle, _motion_handle(b.motion), ffi.NULL))
     names = _names(bodies)
-    for k, pair in enumerate(_items(skip_pairs, "skip_pairs", "a list of body pairs")):
+    for k, pair in enumerate(skip_pairs):
         items = _items(pair, f"skip_pairs[{k}]", "a pair (i, j)")
         if len(items) != 2:
             raise InputError(f"skip_pairs[{k}]: expected a pair (i, j), got {show(pair)}")

@@ -21,6 +21,7 @@ from ._arrays import NotDouble, linear_coords, linear_trajectories
 from . import _handles as handles
 from . import _limits
 from ._errors import InputError, check
+from ._flags import flag
 from ._numbers import number_text, show
 from ._pccd import ffi, lib
 from ._results import KINDS, read_result
@@ -61,7 +62,7 @@ def kind_code(kind):
 
 def _items(value, place, what):
     """The items of a list-like value, or InputError."""
-    if isinstance(value, (str, bytes, dict)):
+    if isinstance(value, (str, bytes, dict, set, frozenset)):  # a set has no order
         raise InputError(f"{place}: expected {what}, got {show(value)}")
     try:
         return list(value)
@@ -91,10 +92,10 @@ class _Thread(threading.local):
 
 def _cached_config(time_tolerance, want_time, want_exact, min_distance=None):
     try:
-        key = (type(time_tolerance), time_tolerance, bool(want_time), bool(want_exact),
+        key = (type(time_tolerance), time_tolerance, type(want_time), want_time, type(want_exact), want_exact,
                type(min_distance), min_distance)
         hit = _thread.cache.get(key)
-    except TypeError:  # an unhashable tolerance: no caching
+    except TypeError:  # an unhashable argument: no caching (checked there)
         return _config(time_tolerance, want_time, want_exact, min_distance=min_distance)
     if hit is None:
         hit = _config(time_tolerance, want_time, want_exact, min_distance=min_distance)
@@ -120,8 +121,8 @@ def _config(time_tolerance, want_time, want_exact, limits=None, min_distance=Non
         text = number_text(time_tolerance, "config.time_tolerance")
         keep.append(ffi.new("char[]", text.encode("utf-8", "replace")))
         cfg.time_tolerance = keep[-1]
-    cfg.want_time = 1 if want_time else 0
-    cfg.want_exact = 1 if want_exact else 0
+    cfg.want_time = 1 if flag(want_time, "want_time") else 0
+    cfg.want_exact = 1 if flag(want_exact, "want_exact") else 0
     return cfg, keep
 
 

@@ -11,12 +11,13 @@ import numpy as np
 
 from . import _handles as handles
 from . import _limits
-from ._arrays import _float64_array
+from ._arrays import _float64_array, _no_bools
 from ._body import _indices
 from ._errors import InputError, check
+from ._flags import flag
 from ._pccd import ffi, lib
 from ._results import ContactTime
-from ._solve import _config
+from ._solve import _config, _items
 from ._types import Indices, Number, Points
 
 KIND_NAMES = {0: "vertex-face", 1: "edge-edge", 2: "vertex-edge", 3: "vertex-vertex"}
@@ -75,25 +76,31 @@ def _checked(where, rc):
     check(rc)
 
 
-def _mesh(step, where, v0, v1, faces, edges, points):
+def _mesh(step, where, v0, v1, faces, edges, points, cfg):
     """Adds one mesh to the step handle; InputError names its place with `where`."""
     a0, a1 = _positions(where, v0, v1)
     nf, f = _indices(np.zeros((0, 3), np.uint32) if faces is None else faces, f"{where}faces", 3)
     ne, e = (0, None) if edges is None else _indices(edges, f"{where}edges", 2)
     n_p, p = (0, None) if points is None else _points(points, f"{where}points")
     out = ffi.new("size_t *")
-    rc = lib.pccd_step_add_mesh_d(step, ffi.from_buffer("double[]", a0), ffi.from_buffer("double[]", a1),
-                                  len(a0), ffi.from_buffer("unsigned int[]", f), nf,
-                                  ffi.NULL if e is None else ffi.from_buffer("unsigned int[]", e), ne,
-                                  ffi.NULL if p is None else ffi.from_buffer("unsigned int[]", p), n_p,
-                                  out)
+    rc = _limits.run(cfg, lib.pccd_step_add_mesh_cfg_d, step, ffi.from_buffer("double[]", a0),
+                     ffi.from_buffer("double[]", a1), len(a0), ffi.from_buffer("unsigned int[]", f),
+                     nf, ffi.NULL if e is None else ffi.from_buffer("unsigned int[]", e), ne,
+                     ffi.NULL if p is None else ffi.from_buffer("unsigned int[]", p), n_p, out, cfg)
     _checked(where, rc)
     return out[0]
 
 
 def _points(points, where):
     """(n, uint32 array) of a 1-D sequence of vertex indices, or InputError naming the entry."""
-    a = np.asarray(points)
+    if isinstance(points, (str, bytes, dict, set, frozenset)):
+        raise InputError(f"{where}: expected a 1-D sequence of integer vertex indices")
+    try:
+        a = np.asarray(points)
+    except (ValueError, TypeError):  # ragged
+        raise InputError(f"{where}: expected a 1-D sequence of integer vertex indices") from None
+    if a.ndim == 1 and a.dtype.kind in "iub" and not isinstance(points, np.ndarray):
+        _no_bools(points, a.shape, where)
     if a.ndim != 1 or (a.size and a.dtype.kind not in "iu"):
         raise InputError(f"{where}: expected a 1-D sequence of integer vertex indices")
     bad = np.flatnonzero((a < 0) | (a > 2 ** 32 - 1)) if a.size else []
@@ -121,10 +128,11 @@ def _topology(faces, edges, points, sizes, obs_faces):
 _cache = threading.local()  # the last step handle of this thread, by topology
 
 
-def _build(V0, V1, faces, edges, points, obstacles):
+def _build(V0, V1, faces, edges, points, obstacles, cfg):
     """A step handle of the mesh and obstacles. A simulator calls with the same
     connectivity every step: then the last handle of this thread is reused, only its
     positions replaced (pccd_step_set_positions_d checks them as adding would)."""
+    obstacles = _items(obstacles, "obstacles", "a sequence of (V, faces) or (V0, V1, faces)")
     obs = [_obstacle(k, ob) for k, ob in enumerate(obstacles)]
     try:
         sizes = [len(V0)] + [len(o[0]) for o in obs]
@@ -141,9 +149,9 @@ def _build(V0, V1, faces, edges, points, obstacles):
                                                           ffi.from_buffer("double[]", a1), len(a0)))
         return step, len(obs) + 1
     step = handles.new("step")
-    _mesh(step, "", V0, V1, faces, edges, points)
+    _mesh(step, "", V0, V1, faces, edges, points, cfg)  # under the call's limits
     for k, (o0, o1, of) in enumerate(obs):
-        _mesh(step, f"obstacles[{k}].", o0, o1, of, None, None)
+        _mesh(step, f"obstacles[{k}].", o0, o1, of, None, None, cfg)
     for i in range(1, len(obs) + 1):  # obstacles: against the mesh only
         for j in range(i, len(obs) + 1):
             check(lib.pccd_step_set_pair_check(step, i, j, 0))
@@ -209,11 +217,12 @@ def _solve(V0, V1, faces, edges, points, obstacles, min_distance, mode, threads,
     c = None if paths is None else _paths(paths, V0, V1)
     if c is not None:
         V0 = V1 = c[0]  # the topology's mesh; its paths are set below
-    step, nmeshes = _build(V0, V1, faces, edges, points, obstacles)
+    cfg, _keep = _config(time_tolerance, True, True, limits,
+                         None if min_distance is None or (type(min_distance) in (int, float)
+                                                          and min_distance == 0) else min_distance)
+    step, nmeshes = _build(V0, V1, faces, edges, points, obstacles, cfg)
     if c is not None:
         check(lib.pccd_step_set_paths_d(step, 0, ffi.from_buffer("double[]", c), c.shape[0], c.shape[1]))
-    cfg, _keep = _config(time_tolerance, True, True, limits,
-                         None if not min_distance else min_distance)
     opt = ffi.new("pccd_step_options *")
     check(lib.pccd_step_options_init(opt))
     opt.threads, opt.mode = threads, mode
@@ -242,7 +251,7 @@ def check_step(V0: Points, V1: Points, faces: Indices, edges: Optional[Indices] 
     solved by the general exact solver. Errors name V0, V1, paths as v_t0, v_t1, coeffs
     (the C arguments), e.g. "obstacles[0].v_t1[4][2]: NaN is not a finite number".
     Returns a StepResult."""
-    mode = 2 if all_contacts else (0 if first_contact else 1)
+    mode = 2 if flag(all_contacts, "all_contacts") else (0 if flag(first_contact, "first_contact") else 1)
     step, nmeshes, rep = _solve(V0, V1, faces, edges, points, obstacles, min_distance, mode,
                                 threads, limits, paths=paths)
     hit = ffi.new("int *")

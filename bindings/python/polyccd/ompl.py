@@ -57,7 +57,12 @@ from fractions import Fraction
 
 import numpy as np
 
+from . import _ompl_args as _a
 from ._errors import InputError
+from ._flags import real
+from ._solve import _items
+
+__all__ = ["RobotSpace", "joint_path", "joint_space", "simplify", "BACKOFF"]
 
 # The public names (the generated reference lists each: tests/test_docs.py);
 # MotionValidator and StateValidityChecker are made when first used (__getattr__).
@@ -82,8 +87,11 @@ def joint_path(revolute, q0, q1, t):
     joints): 2 atan2 of the linearly interpolated half-angle (cos, sin), chain.h. Floats:
     within a few ulps of Robot.joint_values, which evaluates the exact path. Shape
     (len(t), n) for an array t, (n,) for a scalar."""
-    q0, q1 = np.asarray(q0, dtype=np.float64), np.asarray(q1, dtype=np.float64)
-    t = np.asarray(t, dtype=np.float64)
+    revolute = _a.mask(revolute, "revolute")
+    q0, q1 = _a.vector(q0, "q0"), _a.vector(q1, "q1")
+    if not len(revolute) == len(q0) == len(q1):
+        raise InputError(f"revolute, q0, q1: lengths {len(revolute)}, {len(q0)}, {len(q1)} differ")
+    t = _a.times(t)
     tt = t[..., None] if t.ndim else t
     c0, s0, c1, s1 = np.cos(q0 / 2), np.sin(q0 / 2), np.cos(q1 / 2), np.sin(q1 / 2)
     c, s = (1 - tt) * c0 + tt * c1, (1 - tt) * s0 + tt * s1
@@ -95,6 +103,10 @@ def joint_space(names, bounds):
     """An ompl.base.RealVectorStateSpace with one dimension per joint name, bounds
     [(lo, hi)] (OMPL interpolates it linearly: see the module comment)."""
     ob, _ = _ompl()
+    names = _a.names(names, "names")
+    bounds = [_a.interval(b, f"bounds[{i}]") for i, b in enumerate(_items(bounds, "bounds", "(lo, hi) pairs"))]
+    if len(bounds) != len(names):
+        raise InputError(f"names, bounds: {len(names)} names but {len(bounds)} (lo, hi) pairs")
     space = ob.RealVectorStateSpace(len(names))
     b = ob.RealVectorBounds(len(names))
     for i, (lo, hi) in enumerate(bounds):
@@ -110,7 +122,10 @@ def simplify(si, path, rounds=3):
     """Shortens an OMPL PathGeometric in place with the simplifications that check every
     new edge with si's motion validator and create no state by interpolation
     (reduceVertices, then collapseCloseVertices, up to `rounds` times); returns it."""
-    _, og = _ompl()
+    ob, og = _ompl()
+    _a.instance(si, "si", ob.SpaceInformation, "an ompl.base.SpaceInformation")
+    _a.instance(path, "path", og.PathGeometric, "an ompl.geometric.PathGeometric")
+    rounds = _a.count(rounds, "rounds")
     simplifier = og.PathSimplifier(si)
     for _ in range(rounds):
         changed = simplifier.reduceVertices(path)
@@ -132,11 +147,16 @@ class RobotSpace:
     def __init__(self, robot, obstacles=(), *, joints=None, fixed=None, bounds=None,
                  **check_options):
         ob, _ = _ompl()
-        self.robot, self.obstacles = robot, list(obstacles)
+        from .robot import Robot
+        from ._scene import Body
+        _a.instance(robot, "robot", Robot, "a polyccd.robot.Robot")
+        self.robot, self.obstacles = robot, _items(obstacles, "obstacles", "a list of polyccd.Body")
+        for k, o in enumerate(self.obstacles):
+            _a.instance(o, f"obstacles[{k}]", Body, "a polyccd.Body")
         self.check_options = dict(check_options)
-        fixed, bounds = dict(fixed or {}), dict(bounds or {})
+        fixed, bounds = _a.joint_map(fixed, "fixed", real), _a.joint_map(bounds, "bounds", _a.interval)
         self.joints = ([n for n in robot.joints if n not in fixed] if joints is None
-                       else list(joints))
+                       else _a.names(joints, "joints"))
         for place, names in (("joints", self.joints), ("fixed", fixed), ("bounds", bounds)):
             for name in names:
                 if name not in robot.joints:
@@ -175,8 +195,9 @@ class RobotSpace:
 
     # ---- states and joint vectors
 
-    def q(self, state):
+    def q(self, state, place="state"):
         """The robot's actuated joint values (robot.joints order) of an OMPL state."""
+        _a.state(state, place, _ompl()[0])
         q = self._q.copy()
         for i, j in enumerate(self._index):
             q[j] = state[i]
@@ -185,7 +206,8 @@ class RobotSpace:
     def state(self, q, out=None):
         """An OMPL state (allocated by si unless out is given) of joint values: the planned
         joints' values (len(joints)) or every actuated joint's (len(robot.joints))."""
-        q = np.asarray(q, dtype=np.float64)
+        q = _a.vector(q, "q")
+        out = _a.optional_state(out, "out", _ompl()[0])
         if q.shape == (len(self.robot.joints),) and len(self.joints) != len(self.robot.joints):
             q = q[self._index]
         if q.shape != (len(self.joints),):
@@ -203,23 +225,27 @@ class RobotSpace:
     def interpolate(self, s1, s2, t, out=None):
         """The state at time t of polyccd's joint path from s1 to s2 (OMPL's interpolate
         signature; out: a state to fill, else a new one)."""
-        return self.state(self.joint_path(self.q(s1), self.q(s2), float(t)), out)
+        return self.state(self.joint_path(self.q(s1, "s1"), self.q(s2, "s2"), _a.time(t)), out)
 
     # ---- paths
 
     def waypoints(self, path):
         """The joint vectors (robot.joints order) of an OMPL PathGeometric, or of a list
         of states or joint vectors."""
+        ob, og = _ompl()
         states = ([path.getState(i) for i in range(path.getStateCount())]
-                  if hasattr(path, "getStateCount") else list(path))
-        return [self.q(s) if not isinstance(s, (list, tuple, np.ndarray)) else
-                np.asarray(s, dtype=np.float64) for s in states]
+                  if isinstance(path, og.PathGeometric) else _items(path, "path", "a path or joint vectors"))
+        return [self.q(s, f"path[{k}]") if isinstance(s, ob.State) else
+                _a.vector(s, f"path[{k}]", len(self.robot.joints)) for k, s in enumerate(states)]
 
     def interpolate_path(self, path, step=0.01):
         """Joint vectors along polyccd's joint path through the waypoints of path (a
         PathGeometric or joint vectors), each segment cut into ceil(largest joint change /
         step) pieces (both ends included once): the poses a controller executes."""
+        step = _a.positive(step, "step")
         w = self.waypoints(path)
+        if not w:
+            raise InputError("path: expected at least one waypoint")
         out = [w[0]]
         for a, b in zip(w, w[1:]):
             n = max(1, math.ceil(float(np.max(np.abs(b - a))) / step))

@@ -43,11 +43,16 @@ from typing import (TYPE_CHECKING, Any, Dict, FrozenSet, Iterable, List, Optiona
 
 import numpy as np
 
-from ._body import Mesh, Spheres
+from ._arrays import _float64_array
+from . import _limits
 from ._chain import Chain
 from ._errors import InputError
 from ._extras import need
 from ._types import Number
+from ._path import file_path
+from ._solve import _items
+from ._urdf_check import check_urdf
+from ._urdf_geometry import _floats, _geometry, _origin
 
 if TYPE_CHECKING:
     from ._limits import Limits
@@ -59,43 +64,6 @@ __all__ = ["load_urdf", "Robot", "RobotResult", "RobotContact", "PathResult", "S
 
 #: The URDF joint types load_urdf reads (floating and planar joints are refused).
 SUPPORTED = ("fixed", "revolute", "continuous", "prismatic")
-
-def _floats(text, place, n=3):
-    try:
-        values = [float(x) for x in (text or "").split()]
-    except ValueError:
-        raise InputError(f"{place}: {text!r} is not {n} numbers") from None
-    if len(values) != n:
-        raise InputError(f"{place}: {text!r} is not {n} numbers")
-    return values
-
-
-def _origin(element, place):
-    """(xyz, rpy) of an element's <origin> child (URDF defaults: zeros)."""
-    o = element.find("origin") if element is not None else None
-    if o is None:
-        return [0.0] * 3, [0.0] * 3
-    return (_floats(o.get("xyz", "0 0 0"), place + ".origin.xyz"),
-            _floats(o.get("rpy", "0 0 0"), place + ".origin.rpy"))
-
-
-def _mesh_file(filename, scale, place):
-    trimesh = need("polyccd.robot.load_urdf (mesh files)", "robot", "trimesh")
-    if not os.path.isfile(filename):
-        raise InputError(f"{place}: mesh file {filename!r} not found")
-    try:
-        m = trimesh.load(filename, force="mesh", process=False)
-    except Exception as e:  # trimesh raises many kinds
-        raise InputError(f"{place}: mesh file {filename!r} could not be read ({e})") from None
-    vertices = np.asarray(m.vertices, dtype=np.float64)
-    faces = np.asarray(m.faces, dtype=np.int64)
-    if len(faces) == 0:
-        raise InputError(f"{place}: mesh file {filename!r} has no triangles")
-    if scale is not None:
-        vertices = vertices * np.asarray(scale, dtype=np.float64)
-    vertices, inverse = np.unique(vertices, axis=0, return_inverse=True)
-    return Mesh(vertices, inverse.reshape(-1)[faces])._as_solid(required=False)
-
 
 class Robot:
     """A robot read from URDF (load_urdf). Attributes: name; links (URDF link names, in
@@ -116,11 +84,14 @@ class Robot:
         self.limits = limits            # joint name -> (lower, upper) or None
         self.link_index = {n: i for i, n in enumerate(links)}  # URDF link -> chain index
 
-    def chain_values(self, q: Sequence[float]) -> np.ndarray:
-        """The chain's joint values (by chain link) of the actuated joint values q."""
-        q = np.asarray(q, dtype=np.float64)
+    def chain_values(self, q: Sequence[float], place: str = "q") -> np.ndarray:
+        """The chain's joint values (by chain link) of the actuated joint values q (real
+        numbers, each exactly a double; InputError naming place otherwise)."""
+        if not isinstance(place, str):
+            raise InputError(f"place: expected a string, got {place!r}"[:120])
+        q = _float64_array(q, place, f"({len(self.joints)},)", lambda s: True)
         if q.shape != (len(self.joints),):
-            raise InputError(f"q: expected {len(self.joints)} joint values "
+            raise InputError(f"{place}: expected {len(self.joints)} joint values "
                              f"({', '.join(self.joints)}), got shape {q.shape}")
         out = np.zeros(len(self.chain), dtype=np.float64)
         for j, name in enumerate(self.joints):
@@ -133,7 +104,7 @@ class Robot:
         """The exact world Motion of every chain link over the segment q0 -> q1. A bad
         joint value is named by the C library in q's terms ("q1[2] (elbow): ...": load_urdf
         gives the chain each value's place, Chain.set_value_place)."""
-        return self.chain.motions(self.chain_values(q0), self.chain_values(q1))
+        return self.chain.motions(self.chain_values(q0, "q0"), self.chain_values(q1, "q1"))
 
     def link_motions(self, q0: Sequence[float], q1: Sequence[float]) -> Dict[str, Motion]:
         """{URDF link name: Motion} over the segment q0 -> q1."""
@@ -142,7 +113,7 @@ class Robot:
 
     def joint_values(self, q0: Sequence[float], q1: Sequence[float], t: Number) -> Dict[str, float]:
         """{actuated joint name: value at time t} of the segment (floats; outputs)."""
-        v = self.chain.joint_values(self.chain_values(q0), self.chain_values(q1), t)
+        v = self.chain.joint_values(self.chain_values(q0, "q0"), self.chain_values(q1, "q1"), t)
         return {name: float(v[self._joint_link[name]]) for name in self.joints}
 
     def check_joint_limits(self, q0: Sequence[float], q1: Sequence[float],
@@ -155,8 +126,8 @@ class Robot:
         if joint_limits != "error":
             raise InputError(f'joint_limits: {joint_limits!r} is not "error" or "ignore"')
         for place, q in (("q0", q0), ("q1", q1)):
-            self.chain_values(q)  # the shape check and its message
-            q = np.asarray(q, dtype=np.float64)
+            self.chain_values(q, place)  # the type and shape checks and their messages
+            q = _float64_array(q, place, "", lambda s: True)
             for j, name in enumerate(self.joints):
                 lim = self.limits.get(name)
                 x = float(q[j])
@@ -245,7 +216,14 @@ class Robot:
         """Checks the segments waypoints[0] -> waypoints[1] -> ... in order and stops at
         the first that collides: a PathResult (segment index and its RobotResult, or
         segment None when no segment collides). Options as check()."""
-        w = [np.asarray(q, dtype=np.float64) for q in waypoints]
+        w = list(_items(waypoints, "waypoints", "a list of joint vectors"))
+        for k, q in enumerate(w):
+            self.chain_values(q, f"waypoints[{k}]")  # the type and shape checks
+        obstacles = _items(obstacles, "obstacles", "an iterable of polyccd.Body")
+        from ._scene import Body
+        for k, o in enumerate(obstacles):
+            if not isinstance(o, Body):
+                raise InputError(f"obstacles[{k}]: expected a polyccd.Body, got {type(o).__name__}")
         if len(w) < 2:
             raise InputError(f"waypoints: a path needs at least 2 waypoints, got {len(w)}")
         for s in range(len(w) - 1):
@@ -298,18 +276,26 @@ class PathResult:
     result: Optional[RobotResult]
 
 def load_urdf(path: Union[str, os.PathLike], *, geometry: str = "collision",
-              srdf: Optional[Union[str, os.PathLike]] = None) -> Robot:
+              srdf: Optional[Union[str, os.PathLike]] = None,
+              limits: Optional[Limits] = None) -> Robot:
     """A Robot from the URDF file at path; geometry: "collision" (default) or "visual";
     srdf: an SRDF file whose disable_collisions pairs Robot.check allows by default (with
     the adjacent pairs).
     Mesh file names ("package://...", relative) are resolved by yourdfpy's default
     handler (relative to the URDF file and its parent folders). InputError for a
-    missing or unreadable file, an unsupported joint type, a zero axis, a bad number."""
+    missing or unreadable file, an unsupported joint type, a zero axis, a bad number,
+    and for a file that is not a tree as urdfdom requires (_urdf_check: a duplicate link
+    or joint name, a link with two parents, a cycle, parent == child, a missing link),
+    naming the element and its line. limits: a polyccd.Limits for the building (the
+    collision bodies, pccd_body_new_mesh_cfg_*), LimitError when reached."""
     yourdfpy = need("polyccd.robot.load_urdf", "robot", "yourdfpy")
     if geometry not in ("collision", "visual"):
         raise InputError(f'geometry: {geometry!r} is not "collision" or "visual"')
+    path = file_path(path, "path")
+    _limits.config(limits)  # InputError for a limits that is not a polyccd.Limits
     if not os.path.isfile(path):
         raise InputError(f"path: URDF file {str(path)!r} not found")
+    check_urdf(path)
     try:
         urdf = yourdfpy.URDF.load(str(path), load_meshes=False, build_scene_graph=False,
                                   load_collision_meshes=False)
@@ -333,7 +319,7 @@ def load_urdf(path: Union[str, os.PathLike], *, geometry: str = "collision",
         raise InputError(f"path: the URDF has {len(roots)} root links ({', '.join(roots)}), "
                          f"not one")
 
-    chain, names, joint_link, mimic, limits = Chain(), [], {}, {}, {}
+    chain, names, joint_link, mimic, joint_limits = Chain(), [], {}, {}, {}
     mimic_joint = {}  # chain index -> the mimic joint's name
     geometry_at = []  # (URDF link, geometry index, chain index, xml element, yourdfpy geometry)
 
@@ -363,7 +349,7 @@ def load_urdf(path: Union[str, os.PathLike], *, geometry: str = "collision",
                 else:
                     joint_link[j.name] = k
                     lim = j.limit
-                    limits[j.name] = (None if lim is None or j.type == "continuous"
+                    joint_limits[j.name] = (None if lim is None or j.type == "continuous"
                                       else (lim.lower, lim.upper))
         names.append(link_name)
         items = links_xml[link_name].findall(geometry)
@@ -390,38 +376,14 @@ def load_urdf(path: Union[str, os.PathLike], *, geometry: str = "collision",
         if any(xyz) or any(rpy):
             k = add(k, "fixed", None, xyz, rpy, place)
             names.append(f"{link_name}#{i}")
-        shape = _geometry(g.find("geometry"), urdf, place)
+        shape = _geometry(g.find("geometry"), urdf, place, limits)
         shapes.append((link_name, i, k, shape))
     tree = {j.child: (j.parent, j.type) for j in robot.joints}
     tree[roots[0]] = None
-    out = Robot(robot.name, names, actuated, chain, shapes, joint_link, mimic, limits, tree)
+    out = Robot(robot.name, names, actuated, chain, shapes, joint_link, mimic, joint_limits, tree)
     out.joint_types = {j.name: j.type for j in robot.joints}
     out.mimic_joints = {j.name: (j.mimic.joint, float(j.mimic.multiplier if j.mimic.multiplier is not None else 1),
                                  float(j.mimic.offset or 0)) for j in robot.joints if j.mimic is not None}
     if srdf is not None:
         out.srdf_pairs = out.allowed_from_srdf(srdf)
     return out
-
-
-def _geometry(g, urdf, place):
-    """The Mesh or Spheres of a URDF <geometry> element."""
-    if g is None or len(g) == 0:
-        raise InputError(f"{place}.geometry: missing")
-    e = g[0]
-    if e.tag == "box":
-        return Mesh.box(_floats(e.get("size"), place + ".geometry.box.size"), solid=True)
-    if e.tag == "sphere":
-        r = _floats(e.get("radius"), place + ".geometry.sphere.radius", 1)[0]
-        return Spheres([[0, 0, 0]], [r])
-    if e.tag == "cylinder":
-        r = _floats(e.get("radius"), place + ".geometry.cylinder.radius", 1)[0]
-        h = _floats(e.get("length"), place + ".geometry.cylinder.length", 1)[0]
-        return Mesh.cylinder(r, h, solid=True)
-    if e.tag == "mesh":
-        name = e.get("filename")
-        if not name:
-            raise InputError(f"{place}.geometry.mesh: no filename")
-        scale = e.get("scale")
-        scale = _floats(scale, place + ".geometry.mesh.scale") if scale else None
-        return _mesh_file(urdf._filename_handler(name), scale, place + ".geometry.mesh")
-    raise InputError(f"{place}.geometry: unknown shape <{e.tag}>")
