@@ -10,6 +10,7 @@ one list of documented acceptances: public names whose arguments are not checked
 why.
 """
 from dataclasses import dataclass, field
+from fractions import Fraction
 from math import inf
 from typing import Any, Callable, Dict, Tuple
 
@@ -63,6 +64,7 @@ ACCEPTED_VALUES = {
     ("joint_path", "t"): (lambda v: _times(v), "t may be an array of times (empty: none)"),
     ("RobotSpace.joint_path", "t"): (lambda v: _times(v), "t may be an array of times (empty: none)"),
     ("RobotSpace.waypoints", "path"): (lambda v: isinstance(v, list) and not v, "an empty path: no waypoint"),
+    ("Motion.translation", "coeffs_xyz"): (lambda v: _constants(v), "a number is a constant coordinate"),
     ("Robot.check_joint_limits", "q0"): (lambda v: _non_finite(v), "non-finite values: the chain's to report"),
     ("Robot.check_joint_limits", "q1"): (lambda v: _non_finite(v), "non-finite values: the chain's to report"),
     # polyccd.ompl's validators never raise (polyccd/ompl.py: an exception inside a check
@@ -77,6 +79,22 @@ ACCEPTED_VALUES = {
 def _non_finite(v):
     """A list of real numbers, one of them a NaN or an infinity (check_joint_limits' docstring)."""
     return isinstance(v, list) and all(type(x) in (int, float) for x in v) and any(x != x or abs(x) == inf for x in v)
+
+
+def _constants(v):
+    """3 coordinates, each a coefficient list or an exact number (Motion.translation's
+    docstring: [0.5, 0, 0.4] stands still at that offset)."""
+    def number(x):
+        if isinstance(x, bool):
+            return False
+        if isinstance(x, (int, Fraction)) or (isinstance(x, float) and x == x and abs(x) != inf):
+            return True
+        try:
+            return isinstance(x, str) and Fraction(x) is not None
+        except (ValueError, ZeroDivisionError):
+            return False
+    return (isinstance(v, list) and len(v) == 3 and all(isinstance(c, list) or number(c) for c in v)
+            and not all(isinstance(c, list) for c in v))
 
 
 def _times(v):
@@ -169,6 +187,7 @@ CASES = [
          {"p0": "vector", "v0": "vector", "p1": "vector", "v1": "vector"}),
     Case("Motion.linear", P.Motion.linear, lambda: {"p0": [0, 0, 0], "p1": [1, 0, 0]},
          {"p0": "vector", "p1": "vector"}),
+    Case("Motion.fixed", P.Motion.fixed, lambda: {"pose": ([1, 0, 0], [0, 0, 0, 1])}, {"pose": "vector"}),
     Case("Motion.translation", P.Motion.translation, lambda: {"coeffs_xyz": [[0, 1], [0], [0]]},
          {"coeffs_xyz": "translation"}, {"coeffs_xyz": ("translation",)}),
     Case("Motion.compose", MOTION.compose, lambda: {"quat": [1, 0, 0, 0], "offset": [0, 0, 1], "side": "world"},

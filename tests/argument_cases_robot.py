@@ -66,6 +66,7 @@ def ompl_cases(robot):
     for q in (Q0, Q1):
         path.append(space.state(q))
     state = {"space": space, "states": (space.state(Q0), space.state(Q1))}
+    checker, validator = O.StateValidityChecker(space), O.MotionValidator(space)
     return [
         Case("joint_path", O.joint_path, lambda: {"revolute": [True, False], "q0": Q0, "q1": Q1, "t": 0.5},
              {"revolute": "numbers", "q0": "numbers", "q1": "numbers", "t": "number"},
@@ -77,6 +78,16 @@ def ompl_cases(robot):
         Case("RobotSpace", O.RobotSpace, lambda: {"robot": robot, "obstacles": [POST], "joints": ["shoulder"],
                                                   "fixed": {"elbow": 0.1}, "bounds": {"shoulder": (-1, 1)}},
              {"robot": "body", "obstacles": "bodies", "joints": "bodies", "fixed": "body", "bounds": "body"}),
+        Case("StateValidityChecker", O.StateValidityChecker, lambda: {"space": space}, {"space": "body"}),
+        Case("StateValidityChecker.isValid", checker.isValid, lambda: {"state": state["states"][0]},
+             {"state": "body"}),
+        Case("MotionValidator", O.MotionValidator, lambda: {"space": space}, {"space": "body"}),
+        Case("MotionValidator.checkMotion", validator.checkMotion,
+             lambda: {"s1": state["states"][0], "s2": state["states"][1], "last_valid": [None, 0.0]},
+             {"s1": "body", "s2": "body", "last_valid": "body"}),
+        Case("MotionValidator.checkMotionWithLastValid", validator.checkMotionWithLastValid,
+             lambda: {"s1": state["states"][0], "s2": state["states"][1], "state": space.state(Q0)},
+             {"s1": "body", "s2": "body", "state": "motion"}),
         Case("RobotSpace.q", space.q, lambda: {"state": state["states"][0]}, {"state": "body"}),
         Case("RobotSpace.state", space.state, lambda: {"q": Q1, "out": None}, {"q": "numbers", "out": "motion"}),
         Case("RobotSpace.joint_path", space.joint_path, lambda: {"q0": Q0, "q1": Q1, "t": 0.25},

@@ -61,6 +61,24 @@ def optional_state(value, place, ob):
     return None if value is None else state(value, place, ob)
 
 
+def space(value, place, robot_space):
+    """A polyccd.ompl.RobotSpace (what the OMPL validator classes are made for)."""
+    if not isinstance(value, robot_space):
+        raise InputError(f"{place}: expected a polyccd.ompl.RobotSpace, got {show(value)}")
+    return value
+
+
+def last_valid(value, place, ob):
+    """OMPL's last-valid pair for MotionValidator.checkMotion: None, or a list
+    [state or None, fraction] that the check fills in."""
+    if value is None:
+        return None
+    if not isinstance(value, list) or len(value) != 2:
+        raise InputError(f"{place}: expected None or a list [state or None, fraction], got {show(value)}")
+    optional_state(value[0], f"{place}[0]", ob)
+    return value
+
+
 def names(value, place):
     """A list of joint names (strings)."""
     out = _items(value, place, "a list of joint names")

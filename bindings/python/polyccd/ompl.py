@@ -62,12 +62,11 @@ from ._errors import InputError
 from ._flags import real
 from ._solve import _items
 
-__all__ = ["RobotSpace", "joint_path", "joint_space", "simplify", "BACKOFF"]
-
-# The public names (the generated reference lists each: tests/test_docs.py);
-# MotionValidator and StateValidityChecker are made when first used (__getattr__).
+# The public names (the generated reference lists each: tests/test_docs.py; the typed
+# argument tests call each); MotionValidator and StateValidityChecker are made when first
+# used (__getattr__).
 __all__ = ["RobotSpace", "MotionValidator", "StateValidityChecker", "joint_path", "joint_space",
-           "simplify"]
+           "simplify", "BACKOFF"]
 
 # last_valid's candidate fractions: ContactTime.lo times these, each tried until the
 # path from s1 to its state is contact-free (exactly); then s1 itself.
@@ -328,24 +327,25 @@ def _classes():
         """Valid: the robot standing still at the state touches nothing (exact)."""
 
         def __init__(self, space):
-            super().__init__(space.si)
+            super().__init__(_a.space(space, "space", RobotSpace).si)
             self.space = weakref.proxy(space)  # the space owns si, which owns this
 
         def isValid(self, state):
-            return self.space.is_valid(self.space.q(state))
+            return self.space.is_valid(self.space.q(state, "state"))
 
     class MotionValidator(ob.MotionValidator):
         """Valid: polyccd's exact check of the joint path s1 -> s2 finds no contact."""
 
         def __init__(self, space):
-            super().__init__(space.si)
+            super().__init__(_a.space(space, "space", RobotSpace).si)
             self.space = weakref.proxy(space)  # the space owns si, which owns this
 
         def checkMotion(self, s1, s2, last_valid=None):
             sp = self.space
-            if last_valid is None:
-                return sp.motion_valid(sp.q(s1), sp.q(s2))
-            valid, fraction, q = sp.last_valid(sp.q(s1), sp.q(s2))
+            q1, q2 = sp.q(s1, "s1"), sp.q(s2, "s2")
+            if _a.last_valid(last_valid, "last_valid", ob) is None:
+                return sp.motion_valid(q1, q2)
+            valid, fraction, q = sp.last_valid(q1, q2)
             if not valid:
                 if last_valid[0] is not None:
                     sp.state(q, last_valid[0])
@@ -353,7 +353,7 @@ def _classes():
             return valid
 
         def checkMotionWithLastValid(self, s1, s2, state):
-            last = [state, 0.0]
+            last = [_a.optional_state(state, "state", ob), 0.0]
             valid = self.checkMotion(s1, s2, last)
             return valid, last[1]
 
