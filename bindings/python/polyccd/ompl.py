@@ -68,8 +68,8 @@ from ._solve import _items
 __all__ = ["RobotSpace", "MotionValidator", "StateValidityChecker", "joint_path", "joint_space",
            "simplify", "BACKOFF"]
 
-# last_valid's candidate fractions: ContactTime.lo times these, each tried until the
-# path from s1 to its state is contact-free (exactly); then s1 itself.
+#: last_valid's candidate fractions: ContactTime.lo times these, each tried until the
+#: path from s1 to its state is contact-free (exactly); then s1 itself.
 BACKOFF = (Fraction(15, 16), Fraction(3, 4), Fraction(1, 2), Fraction(1, 8))
 
 
