@@ -24,11 +24,16 @@
 //   near-parallel    EE, not parallel, but |(a1 - a0) x (b1 - b0)|^2 <= 2^-80 |a1 - a0|^2
 //                    |b1 - b0|^2 at t = 0 or at t = 1 (the sine of the angle <= 2^-40)
 //   general          none of these
+// Input width: the bits of the integers the query's 24 coordinates become on one common
+// scale (highest set bit of any minus lowest set bit of any, plus 1; exact, from the
+// doubles' binary forms): what a fixed-size integer exact stage would have to hold
+// (issue 34, item 2), shown for all queries and for those decided by the exact stage.
 // A query can be in several families. The "slowest 1 %" column counts each family in
 // the 1 % slowest queries of polyccd-decide.
 #include "bench_linear_tail.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -152,6 +157,21 @@ std::array<bool, kFamilies> families_of(const Linear_query &q, pccd_result *res)
   return f;
 }
 
+// The input width of q (above); 0 when every coordinate is 0.
+int input_width(const Linear_query &q) {
+  int hi = INT32_MIN, lo = INT32_MAX;
+  for (int k = 0; k < 24; ++k) {
+    const double x = k < 12 ? q.t0[k] : q.t1[k - 12];
+    if (x == 0) continue;
+    int e = 0;
+    const double m = std::frexp(std::fabs(x), &e);  // |x| = m 2^e, m in [1/2, 1)
+    const auto bits = static_cast<unsigned long long>(std::ldexp(m, 53));  // exact: 53 bits
+    hi = std::max(hi, e - 1);
+    lo = std::min(lo, e - 53 + __builtin_ctzll(bits));
+  }
+  return hi == INT32_MIN ? 0 : hi - lo + 1;
+}
+
 struct Dist {
   std::size_t n = 0;
   double mean = NAN, median = NAN, p90 = NAN, p99 = NAN, max = NAN, sum = 0;  // us
@@ -252,6 +272,27 @@ void report_tail(const std::vector<Linear_query> &qs, const std::array<Method_ru
     const char *kind = k == 0 ? "vertex-face" : "edge-edge";
     json.open(kind, '{');
     for (int m : {DECIDE, TIME}) stage_table(kind, k == 0 ? vf : ee, runs[m], m, json);
+    json.close('}');
+  }
+  json.close('}');
+  json.open("input_width_bits", '{');
+  for (int k = 0; k < 2; ++k) {
+    const char *kind = k == 0 ? "vertex-face" : "edge-edge";
+    std::vector<double> all, exact;
+    for (std::size_t i : k == 0 ? vf : ee) {
+      all.push_back(input_width(qs[i]));
+      if (runs[DECIDE].stage[i] == PCCD_STAGE_EXACT) exact.push_back(all.back());
+    }
+    json.open(kind, '{');
+    for (int e = 0; e < 2; ++e) {
+      Dist d = dist_of(e == 0 ? all : exact);
+      std::printf("      %s input width in bits, %s (%zu): median %.0f, p90 %.0f, p99 %.0f, max %.0f\n", kind,
+                  e == 0 ? "all" : "decided by exact", d.n, d.median, d.p90, d.p99, d.max);
+      json.open(e == 0 ? "all" : "exact_stage", '{');
+      json.num("count", static_cast<double>(d.n)), json.num("median", d.median), json.num("p90", d.p90);
+      json.num("p99", d.p99), json.num("max", d.max);
+      json.close('}');
+    }
     json.close('}');
   }
   json.close('}');
