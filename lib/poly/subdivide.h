@@ -13,11 +13,14 @@
 //     simple, so H_i has at most that root there; the ends are not roots of F). The
 //     exact path supplies H_i; with intervals there is no gcd and the rule is off;
 //   - otherwise halve the piece (de Casteljau at 1/2) and decide the midpoint itself.
-// Every step is exact (Rational) or certified (Interval). A piece that stays
+// Every step is exact (Rational) or certified (Interval). The exact path halves on
+// integers (de_casteljau_halves_scaled: each vector up to a positive factor, which no
+// test above can see, since each reads the signs of one vector only). A piece that stays
 // undecided after the budget (a multiple root, a condition vanishing at a root, a
 // cluster of roots) makes the whole attempt fail, and the caller counts with the
 // Hermite method instead, which needs no separation at all.
 #pragma once
+#include <type_traits>
 #include <vector>
 
 #include "poly/bernstein.h"
@@ -36,6 +39,24 @@ void de_casteljau_halves(const std::vector<NT> &b, std::vector<NT> &left, std::v
     left[r] = w[0];
     right[n - 1 - r] = w[n - 1 - r];
   }
+}
+
+// The same halves as de_casteljau_halves times one positive constant c (c = 2^(n-1) L,
+// L the least common multiple of b's denominators), computed on integers: no rational
+// halving, no gcd per step; the outputs are Rationals with denominator 1. Only for
+// users that read nothing but signs within each vector (Subdivision_counter below).
+void de_casteljau_halves_scaled(const std::vector<Rational> &b, std::vector<Rational> &left,
+                                std::vector<Rational> &right);
+
+// Halves for the counter: exact coefficients up to one positive factor per vector (its
+// tests read signs only: all of one sign, sign variations, the ends, the midpoint);
+// intervals as they are (halving is exact there and keeps the enclosures tight).
+template <class NT>
+void halves_for_signs(const std::vector<NT> &b, std::vector<NT> &left, std::vector<NT> &right) {
+  if constexpr (std::is_same_v<NT, Rational>)
+    de_casteljau_halves_scaled(b, left, right);
+  else
+    de_casteljau_halves(b, left, right);
 }
 
 template <class NT>
@@ -93,14 +114,14 @@ class Subdivision_counter {
     }
     if (--budget_ < 0) return false;
     std::vector<NT> fl, fr;
-    de_casteljau_halves(fb, fl, fr);
+    halves_for_signs(fb, fl, fr);
     std::vector<std::vector<NT>> gl(left_g.size()), gr(left_g.size());
     std::vector<std::vector<NT>> hl(left_h.size()), hr(left_h.size());
     for (size_t i = 0; i < left_g.size(); ++i) {
-      de_casteljau_halves(left_g[i], gl[i], gr[i]);
-      if (!left_h[i].empty()) de_casteljau_halves(left_h[i], hl[i], hr[i]);
+      halves_for_signs(left_g[i], gl[i], gr[i]);
+      if (!left_h[i].empty()) halves_for_signs(left_h[i], hl[i], hr[i]);
     }
-    // The midpoint: F(1/2) = fl.back(), G_i(1/2) = gl[i].back().
+    // The midpoint: F(1/2) = fl.back(), G_i(1/2) = gl[i].back() (up to positive factors).
     if (arith::sign(fl.back()) == 0) {
       bool ok = true;
       for (const auto &g : gl) ok = ok && arith::sign(g.back()) > 0;
