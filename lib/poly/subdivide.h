@@ -13,9 +13,9 @@
 //     simple, so H_i has at most that root there; the ends are not roots of F). The
 //     exact path supplies H_i; with intervals there is no gcd and the rule is off;
 //   - otherwise halve the piece (de Casteljau at 1/2) and decide the midpoint itself.
-// Every step is exact (Rational) or certified (Interval). The exact path halves on
-// integers (de_casteljau_halves_scaled: each vector up to a positive factor, which no
-// test above can see, since each reads the signs of one vector only). A piece that stays
+// Every step is exact (Rational) or certified (Interval). The exact path runs on
+// integers (integer_multiple, de_casteljau_halves_scaled: each vector up to a positive
+// factor, which no test above can see, since each reads the signs of one vector only). A piece that stays
 // undecided after the budget (a multiple root, a condition vanishing at a root, a
 // cluster of roots) makes the whole attempt fail, and the caller counts with the
 // Hermite method instead, which needs no separation at all.
@@ -41,19 +41,23 @@ void de_casteljau_halves(const std::vector<NT> &b, std::vector<NT> &left, std::v
   }
 }
 
-// The same halves as de_casteljau_halves times one positive constant c (c = 2^(n-1) L,
-// L the least common multiple of b's denominators), computed on integers: no rational
-// halving, no gcd per step; the outputs are Rationals with denominator 1. Only for
-// users that read nothing but signs within each vector (Subdivision_counter below).
-void de_casteljau_halves_scaled(const std::vector<Rational> &b, std::vector<Rational> &left,
-                                std::vector<Rational> &right);
+// b times the least common multiple of its denominators (a positive factor), as integers.
+std::vector<arith::Integer> integer_multiple(const std::vector<Rational> &b);
 
-// Halves for the counter: exact coefficients up to one positive factor per vector (its
-// tests read signs only: all of one sign, sign variations, the ends, the midpoint);
-// intervals as they are (halving is exact there and keeps the enclosures tight).
+// The same halves as de_casteljau_halves, each half times its own positive factor, on
+// integers: no rational halving, no gcd per step (w[i] + w[i + 1] instead of their mean,
+// each entry shifted to the common factor 2^(n-1), then the power of two common to the
+// half's entries divided out to keep the numbers short). Only for users that read
+// nothing but signs within each vector (Subdivision_counter below).
+void de_casteljau_halves_scaled(const std::vector<arith::Integer> &b, std::vector<arith::Integer> &left,
+                                std::vector<arith::Integer> &right);
+
+// Halves for the counter: integers up to one positive factor per vector (its tests read
+// signs only: all of one sign, sign variations, the ends, the midpoint); intervals as
+// they are (halving is exact there and keeps the enclosures tight).
 template <class NT>
 void halves_for_signs(const std::vector<NT> &b, std::vector<NT> &left, std::vector<NT> &right) {
-  if constexpr (std::is_same_v<NT, Rational>)
+  if constexpr (std::is_same_v<NT, arith::Integer>)
     de_casteljau_halves_scaled(b, left, right);
   else
     de_casteljau_halves(b, left, right);
@@ -66,10 +70,20 @@ class Subdivision_counter {
 
   // Adds to `count` the qualifying roots in the open piece; false when undecided.
   // hbs: Bernstein coefficients of gcd(F, G_i) for each condition (empty: unknown).
+  // Rational input runs on integer multiples of each vector (integer_multiple).
   bool count(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs, long &count,
              std::vector<std::vector<NT>> hbs = {}) {
     try {
       if (hbs.size() != gbs.size()) hbs.assign(gbs.size(), {});
+      if constexpr (std::is_same_v<NT, Rational>) {
+        Subdivision_counter<arith::Integer> on_integers(budget_);
+        std::vector<std::vector<arith::Integer>> gz, hz;
+        for (const auto &g : gbs) gz.push_back(integer_multiple(g));
+        for (const auto &h : hbs) hz.push_back(integer_multiple(h));
+        const bool ok = on_integers.run(integer_multiple(fb), std::move(gz), std::move(hz), count);
+        budget_ = on_integers.budget_;
+        return ok;
+      }
       return run(fb, std::move(gbs), std::move(hbs), count);
     } catch (const arith::Uncertain &) {
       return false;
@@ -131,6 +145,8 @@ class Subdivision_counter {
            run(fr, std::move(gr), std::move(hr), count);
   }
 
+  template <class>
+  friend class Subdivision_counter;
   int budget_;
 };
 

@@ -1,13 +1,14 @@
-// poly::de_casteljau_halves_scaled (the exact root counter's halving on integers) against
-// the rational halving poly::de_casteljau_halves, which divides by 2 at every step:
-// for each input, the scaled halves must be c times the rational halves with ONE c > 0
-// shared by every entry of both halves (the counter reads signs within a vector only,
-// which such a c keeps) and c = 2^(n-1) L, L the lcm of the input's denominators; the
-// outputs are integers. Inputs: random rationals of mixed signs, sizes 1 to 8, with
-// zeros, big and tiny magnitudes, and a case whose midpoint value is exactly 0.
-// Then the counter itself: exact root counts of products of distinct linear factors
-// with known roots (inside and outside (0, 1), and at 1/2 itself).
+// poly::integer_multiple and poly::de_casteljau_halves_scaled (the exact root counter's
+// halving on integers) against the rational halving poly::de_casteljau_halves, which
+// divides by 2 at every step: integer_multiple(b) must be L b (L the lcm of b's
+// denominators); each scaled half must be c times the rational half of b with ONE c > 0
+// for all of its entries (the counter reads signs within a vector only, which such a c
+// keeps), be integers, and have no power of two common to all its entries left. Inputs:
+// random rationals of mixed signs, sizes 1 to 8, with zeros, big and tiny magnitudes,
+// and a case whose midpoint value is exactly 0. Then the counter itself: exact root
+// counts of products of distinct linear factors with known roots.
 // Prints "N passed, N failed".
+#include <algorithm>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -36,18 +37,35 @@ static std::string show(const std::vector<Rational> &v) {
   return s;
 }
 
+// Whether s = c r for one rational c > 0 (both all zero counts), s of integers with no
+// common factor 2.
+static bool positive_multiple(const std::vector<Integer> &s, const std::vector<Rational> &r) {
+  if (s.size() != r.size()) return false;
+  Rational c = 0;
+  bool odd = false;
+  for (size_t i = 0; i < r.size(); ++i) {
+    if (sgn(r[i]) != 0 && sgn(c) == 0) c = Rational(s[i]) / r[i];
+    odd = odd || mpz_odd_p(s[i].get_mpz_t());
+  }
+  if (sgn(c) == 0) return std::all_of(s.begin(), s.end(), [](const Integer &x) { return sgn(x) == 0; });
+  if (sgn(c) < 0 || !odd) return false;
+  for (size_t i = 0; i < r.size(); ++i)
+    if (Rational(s[i]) != c * r[i]) return false;
+  return true;
+}
+
 static void check(const std::vector<Rational> &b, const std::string &name) {
-  std::vector<Rational> l, r, sl, sr;
+  std::vector<Rational> l, r;
+  std::vector<Integer> sl, sr;
   pccd::poly::de_casteljau_halves(b, l, r);
-  pccd::poly::de_casteljau_halves_scaled(b, sl, sr);
+  const std::vector<Integer> z = pccd::poly::integer_multiple(b);
   Integer L = 1;
   for (const Rational &x : b) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t());
-  Rational c = L;
-  mpq_mul_2exp(c.get_mpq_t(), c.get_mpq_t(), b.size() - 1);
-  bool ok = sl.size() == b.size() && sr.size() == b.size();
-  for (size_t i = 0; ok && i < b.size(); ++i)
-    ok = sl[i] == c * l[i] && sr[i] == c * r[i] && sl[i].get_den() == 1 && sr[i].get_den() == 1;
-  expect(ok, name + ": " + show(b) + "-> " + show(sl) + "| " + show(sr));
+  bool ok = z.size() == b.size();
+  for (size_t i = 0; ok && i < b.size(); ++i) ok = Rational(z[i]) == Rational(L) * b[i];
+  expect(ok, name + ": integer_multiple of " + show(b));
+  pccd::poly::de_casteljau_halves_scaled(z, sl, sr);
+  expect(positive_multiple(sl, l) && positive_multiple(sr, r), name + ": halves of " + show(b));
 }
 
 // The Bernstein coefficients on [0, 1] of prod (t - roots[k]).
