@@ -38,22 +38,25 @@ void drop_common_twos(std::vector<Integer> &v) {
 }  // namespace
 
 // w[i] <- w[i] + w[i + 1] is 2 (w[i] + w[i + 1]) / 2, so after r passes the row holds
-// 2^r times de Casteljau's row r. The halves' entry from row r is shifted left by
-// n - 1 - r bits, which brings every entry to the one factor 2^(n - 1).
-void de_casteljau_halves_scaled(const std::vector<Integer> &b, std::vector<Integer> &left,
+// 2^r times de Casteljau's row r. The left half's entry from row r is shifted left by
+// n - 1 - r bits, which brings every entry to the one factor 2^(n - 1). The right half
+// is w itself at the end (pass r last writes w[n - 1 - r], its entry from row r): w[j]
+// shifted left by j bits.
+void de_casteljau_halves_scaled(std::vector<Integer> w, std::vector<Integer> &left,
                                 std::vector<Integer> &right) {
-  const size_t n = b.size();
-  left.assign(n, Integer(0));
-  right.assign(n, Integer(0));
-  if (n == 0) return;
-  std::vector<Integer> w = b;
+  const size_t n = w.size();
+  left.resize(n);
+  if (n == 0) {
+    right.clear();
+    return;
+  }
   mpz_mul_2exp(left[0].get_mpz_t(), w[0].get_mpz_t(), n - 1);
-  mpz_mul_2exp(right[n - 1].get_mpz_t(), w[n - 1].get_mpz_t(), n - 1);
   for (size_t r = 1; r < n; ++r) {
     for (size_t i = 0; i + r < n; ++i) w[i] += w[i + 1];
     mpz_mul_2exp(left[r].get_mpz_t(), w[0].get_mpz_t(), n - 1 - r);
-    mpz_mul_2exp(right[n - 1 - r].get_mpz_t(), w[n - 1 - r].get_mpz_t(), n - 1 - r);
   }
+  for (size_t j = 1; j < n; ++j) mpz_mul_2exp(w[j].get_mpz_t(), w[j].get_mpz_t(), j);
+  right = std::move(w);
   drop_common_twos(left);
   drop_common_twos(right);
 }

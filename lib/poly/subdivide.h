@@ -21,6 +21,7 @@
 // Hermite method instead, which needs no separation at all.
 #pragma once
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "poly/bernstein.h"
@@ -49,16 +50,16 @@ std::vector<arith::Integer> integer_multiple(const std::vector<Rational> &b);
 // each entry shifted to the common factor 2^(n-1), then the power of two common to the
 // half's entries divided out to keep the numbers short). Only for users that read
 // nothing but signs within each vector (Subdivision_counter below).
-void de_casteljau_halves_scaled(const std::vector<arith::Integer> &b, std::vector<arith::Integer> &left,
+void de_casteljau_halves_scaled(std::vector<arith::Integer> b, std::vector<arith::Integer> &left,
                                 std::vector<arith::Integer> &right);
 
 // Halves for the counter: integers up to one positive factor per vector (its tests read
 // signs only: all of one sign, sign variations, the ends, the midpoint); intervals as
 // they are (halving is exact there and keeps the enclosures tight).
 template <class NT>
-void halves_for_signs(const std::vector<NT> &b, std::vector<NT> &left, std::vector<NT> &right) {
+void halves_for_signs(std::vector<NT> b, std::vector<NT> &left, std::vector<NT> &right) {
   if constexpr (std::is_same_v<NT, arith::Integer>)
-    de_casteljau_halves_scaled(b, left, right);
+    de_casteljau_halves_scaled(std::move(b), left, right);
   else
     de_casteljau_halves(b, left, right);
 }
@@ -105,7 +106,7 @@ class Subdivision_counter {
     return v;
   }
 
-  bool run(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs,
+  bool run(std::vector<NT> fb, std::vector<std::vector<NT>> gbs,
            std::vector<std::vector<NT>> hbs, long &count) {
     if (all_positive(fb) || all_negative(fb)) return true;
     std::vector<std::vector<NT>> left_g, left_h;
@@ -128,12 +129,12 @@ class Subdivision_counter {
     }
     if (--budget_ < 0) return false;
     std::vector<NT> fl, fr;
-    halves_for_signs(fb, fl, fr);
+    halves_for_signs(std::move(fb), fl, fr);  // fb, left_g, left_h are not read again
     std::vector<std::vector<NT>> gl(left_g.size()), gr(left_g.size());
     std::vector<std::vector<NT>> hl(left_h.size()), hr(left_h.size());
     for (size_t i = 0; i < left_g.size(); ++i) {
-      halves_for_signs(left_g[i], gl[i], gr[i]);
-      if (!left_h[i].empty()) halves_for_signs(left_h[i], hl[i], hr[i]);
+      halves_for_signs(std::move(left_g[i]), gl[i], gr[i]);
+      if (!left_h[i].empty()) halves_for_signs(std::move(left_h[i]), hl[i], hr[i]);
     }
     // The midpoint: F(1/2) = fl.back(), G_i(1/2) = gl[i].back() (up to positive factors).
     if (arith::sign(fl.back()) == 0) {
@@ -141,8 +142,8 @@ class Subdivision_counter {
       for (const auto &g : gl) ok = ok && arith::sign(g.back()) > 0;
       if (ok) ++count;
     }
-    return run(fl, std::move(gl), std::move(hl), count) &&
-           run(fr, std::move(gr), std::move(hr), count);
+    return run(std::move(fl), std::move(gl), std::move(hl), count) &&
+           run(std::move(fr), std::move(gr), std::move(hr), count);
   }
 
   template <class>
