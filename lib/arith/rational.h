@@ -36,5 +36,10 @@ inline bool certainly_negative(const Rational &q) { return sgn(q) < 0; }
 inline bool certainly_nonneg(const Rational &q) { return sgn(q) >= 0; }
 inline bool certainly_nonpos(const Rational &q) { return sgn(q) <= 0; }
 inline bool is_zero(const Rational &q) { return sgn(q) == 0; }
+// The same for integers (the exact root counter's subdivision runs on them).
+inline int sign(const Integer &z) { return sgn(z); }
+inline bool certainly_positive(const Integer &z) { return sgn(z) > 0; }
+inline bool certainly_negative(const Integer &z) { return sgn(z) < 0; }
+inline bool certainly_nonpos(const Integer &z) { return sgn(z) <= 0; }
 
 }  // namespace pccd::arith

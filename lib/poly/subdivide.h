@@ -13,11 +13,15 @@
 //     simple, so H_i has at most that root there; the ends are not roots of F). The
 //     exact path supplies H_i; with intervals there is no gcd and the rule is off;
 //   - otherwise halve the piece (de Casteljau at 1/2) and decide the midpoint itself.
-// Every step is exact (Rational) or certified (Interval). A piece that stays
+// Every step is exact (Rational) or certified (Interval). The exact path runs on
+// integers (integer_multiple, de_casteljau_halves_scaled: each vector up to a positive
+// factor, which no test above can see, since each reads the signs of one vector only). A piece that stays
 // undecided after the budget (a multiple root, a condition vanishing at a root, a
 // cluster of roots) makes the whole attempt fail, and the caller counts with the
 // Hermite method instead, which needs no separation at all.
 #pragma once
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "poly/bernstein.h"
@@ -38,6 +42,28 @@ void de_casteljau_halves(const std::vector<NT> &b, std::vector<NT> &left, std::v
   }
 }
 
+// b times the least common multiple of its denominators (a positive factor), as integers.
+std::vector<arith::Integer> integer_multiple(const std::vector<Rational> &b);
+
+// The same halves as de_casteljau_halves, each half times its own positive factor, on
+// integers: no rational halving, no gcd per step (w[i] + w[i + 1] instead of their mean,
+// each entry shifted to the common factor 2^(n-1), then the power of two common to the
+// half's entries divided out to keep the numbers short). Only for users that read
+// nothing but signs within each vector (Subdivision_counter below).
+void de_casteljau_halves_scaled(std::vector<arith::Integer> b, std::vector<arith::Integer> &left,
+                                std::vector<arith::Integer> &right);
+
+// Halves for the counter: integers up to one positive factor per vector (its tests read
+// signs only: all of one sign, sign variations, the ends, the midpoint); intervals as
+// they are (halving is exact there and keeps the enclosures tight).
+template <class NT>
+void halves_for_signs(std::vector<NT> b, std::vector<NT> &left, std::vector<NT> &right) {
+  if constexpr (std::is_same_v<NT, arith::Integer>)
+    de_casteljau_halves_scaled(std::move(b), left, right);
+  else
+    de_casteljau_halves(b, left, right);
+}
+
 template <class NT>
 class Subdivision_counter {
  public:
@@ -45,10 +71,20 @@ class Subdivision_counter {
 
   // Adds to `count` the qualifying roots in the open piece; false when undecided.
   // hbs: Bernstein coefficients of gcd(F, G_i) for each condition (empty: unknown).
+  // Rational input runs on integer multiples of each vector (integer_multiple).
   bool count(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs, long &count,
              std::vector<std::vector<NT>> hbs = {}) {
     try {
       if (hbs.size() != gbs.size()) hbs.assign(gbs.size(), {});
+      if constexpr (std::is_same_v<NT, Rational>) {
+        Subdivision_counter<arith::Integer> on_integers(budget_);
+        std::vector<std::vector<arith::Integer>> gz, hz;
+        for (const auto &g : gbs) gz.push_back(integer_multiple(g));
+        for (const auto &h : hbs) hz.push_back(integer_multiple(h));
+        const bool ok = on_integers.run(integer_multiple(fb), std::move(gz), std::move(hz), count);
+        budget_ = on_integers.budget_;
+        return ok;
+      }
       return run(fb, std::move(gbs), std::move(hbs), count);
     } catch (const arith::Uncertain &) {
       return false;
@@ -70,7 +106,7 @@ class Subdivision_counter {
     return v;
   }
 
-  bool run(const std::vector<NT> &fb, std::vector<std::vector<NT>> gbs,
+  bool run(std::vector<NT> fb, std::vector<std::vector<NT>> gbs,
            std::vector<std::vector<NT>> hbs, long &count) {
     if (all_positive(fb) || all_negative(fb)) return true;
     std::vector<std::vector<NT>> left_g, left_h;
@@ -93,23 +129,25 @@ class Subdivision_counter {
     }
     if (--budget_ < 0) return false;
     std::vector<NT> fl, fr;
-    de_casteljau_halves(fb, fl, fr);
+    halves_for_signs(std::move(fb), fl, fr);  // fb, left_g, left_h are not read again
     std::vector<std::vector<NT>> gl(left_g.size()), gr(left_g.size());
     std::vector<std::vector<NT>> hl(left_h.size()), hr(left_h.size());
     for (size_t i = 0; i < left_g.size(); ++i) {
-      de_casteljau_halves(left_g[i], gl[i], gr[i]);
-      if (!left_h[i].empty()) de_casteljau_halves(left_h[i], hl[i], hr[i]);
+      halves_for_signs(std::move(left_g[i]), gl[i], gr[i]);
+      if (!left_h[i].empty()) halves_for_signs(std::move(left_h[i]), hl[i], hr[i]);
     }
-    // The midpoint: F(1/2) = fl.back(), G_i(1/2) = gl[i].back().
+    // The midpoint: F(1/2) = fl.back(), G_i(1/2) = gl[i].back() (up to positive factors).
     if (arith::sign(fl.back()) == 0) {
       bool ok = true;
       for (const auto &g : gl) ok = ok && arith::sign(g.back()) > 0;
       if (ok) ++count;
     }
-    return run(fl, std::move(gl), std::move(hl), count) &&
-           run(fr, std::move(gr), std::move(hr), count);
+    return run(std::move(fl), std::move(gl), std::move(hl), count) &&
+           run(std::move(fr), std::move(gr), std::move(hr), count);
   }
 
+  template <class>
+  friend class Subdivision_counter;
   int budget_;
 };
 

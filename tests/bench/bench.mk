@@ -15,7 +15,7 @@ BENCH_DIR   := $(BUILD)/bench
 BENCH_OPT   := -O3 -march=native -std=c++17 -DNDEBUG
 TI_OBJS     := $(patsubst %,$(BENCH_DIR)/ti_%.o,avx ccd interval interval_root_finder)
 BENCH_LINEAR_OBJS := $(patsubst %,$(BENCH_DIR)/%.o,bench_linear bench_linear_input \
-                       bench_linear_report bench_linear_batch)
+                       bench_linear_report bench_linear_tail bench_linear_batch)
 # The batch hook (bench_linear_batch.cpp) is compiled in once polyccd.h declares the call.
 BENCH_BATCH_DEF := $(shell grep -q 'pccd_solve_linear_batch_d' include/polyccd.h && echo -DPCCD_HAVE_LINEAR_BATCH)
 
@@ -33,7 +33,7 @@ $(BENCH_DIR)/%.o: tests/bench/%.cpp | deps
 	  $(BENCH_BATCH_DEF) -MMD -MP -c $< -o $@
 
 $(BUILD)/bench_linear: $(BENCH_LINEAR_OBJS) $(TI_OBJS) $(PCCD_LIBDIR)/libpolyccd.so
-	$(CXX) -o $@ $(BENCH_LINEAR_OBJS) $(TI_OBJS) -L$(PCCD_LIBDIR) -lpolyccd \
+	$(CXX) -o $@ $(BENCH_LINEAR_OBJS) $(TI_OBJS) -L$(PCCD_LIBDIR) -lpolyccd -lgmpxx -lgmp \
 	  -Wl,-rpath,$(abspath $(PCCD_LIBDIR)) -pthread
 
 bench-linear: $(BUILD)/bench_linear

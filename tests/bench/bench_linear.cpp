@@ -31,7 +31,9 @@
 // on speed or on answers; exit status 2 only for bad input or a failed library call setup.
 //
 // Usage: bench_linear [--workloads LIST] [--seed S] [--n N] [--repeat R] [--warmup W]
-//                     [--json FILE] [--examples K]
+//                     [--json FILE] [--examples K] [--ti 0|1]
+// --ti 0 skips Tight Inclusion (its rows read 0): the polyccd-only runs of the tail
+// comparisons (docs/benchmarks-tail.md), where TI's seconds-long queries only add noise.
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -47,6 +49,7 @@
 
 #include "bench_linear_input.h"
 #include "bench_linear_report.h"
+#include "bench_linear_tail.h"
 #include "polyccd.h"
 
 namespace bench {
@@ -61,13 +64,14 @@ struct Options {
   int repeat = 3;
   std::size_t warmup = 1000;
   std::size_t examples = 3;
+  bool ti = true;  // --ti 0: skip Tight Inclusion (its rows then read 0; for polyccd-only runs)
   std::string json;
 };
 
 [[noreturn]] void usage(const char *msg) {
   std::fprintf(stderr,
                "bench_linear: %s\nusage: bench_linear [--workloads sim,public,batch] [--seed S] "
-               "[--n N] [--repeat R] [--warmup W] [--examples K] [--json FILE]\n",
+               "[--n N] [--repeat R] [--warmup W] [--examples K] [--json FILE] [--ti 0|1]\n",
                msg);
   std::exit(2);
 }
@@ -102,6 +106,8 @@ Options parse_options(int argc, char **argv) {
       o.repeat = static_cast<int>(std::max(1ULL, num));
     } else if (a == "--warmup") {
       o.warmup = num;
+    } else if (a == "--ti") {
+      o.ti = num != 0;
     } else if (a == "--examples") {
       o.examples = num;
     } else {
@@ -213,10 +219,12 @@ struct Runner {
   std::array<Method_run, kMethods> run(const Options &o) {
     std::array<Method_run, kMethods> runs;
     for (Method_run &r : runs) r.resize(qs.size());
-    for (int m = 0; m < kMethods; ++m) round(m, std::min(o.warmup, qs.size()), nullptr, false);
+    for (int m = 0; m < kMethods; ++m)
+      if (m != TI || o.ti) round(m, std::min(o.warmup, qs.size()), nullptr, false);
     for (int rd = 0; rd < o.repeat; ++rd)
       for (int j = 0; j < kMethods; ++j) {
         int m = (j + rd) % kMethods;  // rotate the order of the methods every round
+        if (m == TI && !o.ti) continue;
         round(m, qs.size(), &runs[m], rd == 0);
       }
     return runs;
@@ -232,6 +240,7 @@ void run_workload(const Options &o, const char *name, const std::vector<Linear_q
   double secs = elapsed_ns(a, Clock::now()) * 1e-9;
   std::printf("   (%d round(s) of 3 methods in %.1f s)\n", o.repeat, secs);
   report_workload(qs, runs, o.examples, json);
+  report_tail(qs, runs, json);
   for (const std::string &e : runner.first_errors) std::printf("   error: %s\n", e.c_str());
   std::printf("\n");
 }

@@ -214,8 +214,11 @@ void report_kind(const char *kind, const std::vector<std::size_t> &idx, const st
     json.close('}');
   }
   json.close('}');
+  // TI skipped (bench_linear --ti 0): its times are all 0; no ratios, no TI answers.
+  const bool have_ti = st[TI].max > 0;
   json.open("ratio_to_ti", '{');
   for (int m : {DECIDE, TIME}) {
+    if (!have_ti) break;
     double rmed = st[m].median / st[TI].median, rmean = st[m].mean / st[TI].mean;
     std::printf("      %s/TI: median %.3gx, mean %.3gx\n", method_name(m), rmed, rmean);
     json.open(method_name(m), '{');
@@ -247,11 +250,12 @@ void report_kind(const char *kind, const std::vector<std::size_t> &idx, const st
 
   // answers
   Mismatch dt = compare(runs[DECIDE].answer, runs[TIME].answer, idx, examples);
-  Mismatch ti = compare(runs[TI].answer, exact, idx, examples);
+  Mismatch ti = compare(runs[TI].answer, exact, idx, have_ti ? examples : 0);
   std::printf("      answers: polyccd-decide vs polyccd-time: %zu disagreements (%zu failed calls)\n",
               dt.yes_no + dt.no_yes, dt.errors);
-  std::printf("      answers: TI vs polyccd (exact): %zu false positives, %zu false negatives\n", ti.yes_no,
-              ti.no_yes);
+  if (have_ti)
+    std::printf("      answers: TI vs polyccd (exact): %zu false positives, %zu false negatives\n", ti.yes_no,
+                ti.no_yes);
   json.open("answers", '{');
   json.num("decide_vs_time_disagreements", static_cast<double>(dt.yes_no + dt.no_yes));
   json.num("failed_calls", static_cast<double>(dt.errors));
@@ -262,7 +266,7 @@ void report_kind(const char *kind, const std::vector<std::size_t> &idx, const st
   if (truth_known) {
     std::printf("      answers vs the truth column (false pos / false neg):");
     json.open("vs_truth", '{');
-    for (int m = 0; m < kMethods; ++m) {
+    for (int m = have_ti ? 0 : 1; m < kMethods; ++m) {
       Mismatch t = compare(runs[m].answer, truth, idx, 0);
       std::printf(" %s %zu / %zu%s", method_name(m), t.yes_no, t.no_yes, m + 1 < kMethods ? "," : "\n");
       json.open(method_name(m), '{');
