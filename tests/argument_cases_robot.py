@@ -7,18 +7,9 @@ from hypothesis import strategies as st
 import polyccd as P
 from argument_cases import SCENE_OPTIONS, THREADS, Case
 from argument_values import choices
+from arm_urdf import arm_urdf
 
-ARM = """<?xml version="1.0"?>
-<robot name="arm">
-  <link name="base"><collision><geometry><box size="0.4 0.4 0.2"/></geometry></collision></link>
-  <link name="upper"><collision><origin xyz="0.5 0 0"/><geometry><box size="1 0.2 0.2"/></geometry></collision></link>
-  <link name="lower"><collision><origin xyz="0.4 0 0"/><geometry><box size="0.8 0.1 0.1"/></geometry></collision></link>
-  <joint name="shoulder" type="revolute"><parent link="base"/><child link="upper"/>
-    <origin xyz="0 0 0.2"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
-  <joint name="elbow" type="revolute"><parent link="upper"/><child link="lower"/>
-    <origin xyz="1 0 0"/><axis xyz="0 0 1"/><limit lower="-3" upper="3" effort="1" velocity="1"/></joint>
-</robot>
-"""
+ARM = arm_urdf(3)
 SRDF = '<robot name="arm"><disable_collisions link1="base" link2="lower" reason="x"/></robot>'
 POST = P.Body(P.Mesh.box([0.1, 0.1, 1]), P.Motion.linear([1.5, 0.5, 0], [1.5, 0.5, 0]), name="post")
 Q0, Q1 = [0.0, 0.0], [0.5, 0.3]

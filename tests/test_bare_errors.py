@@ -7,6 +7,7 @@ import pytest
 
 import polyccd as P
 from polyccd import InputError
+from arm_urdf import arm_urdf
 
 V0 = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0.25, 0.25, 1]], dtype=np.float64)
 V1 = V0 + np.array([0, 0, 0.5])
@@ -27,20 +28,7 @@ def test_check_step_obstacle_that_is_not_a_pair():
         P.check_step(V0, V1, F, obstacles=[5])
 
 
-ARM = """<?xml version="1.0"?>
-<robot name="arm">
-  <link name="base"><collision><geometry><box size="0.4 0.4 0.2"/></geometry></collision></link>
-  <link name="upper"><collision><origin xyz="0.5 0 0"/><geometry><box size="1 0.2 0.2"/></geometry></collision></link>
-  <link name="lower"><collision><origin xyz="0.4 0 0"/><geometry><box size="0.8 0.1 0.1"/></geometry></collision></link>
-  <joint name="shoulder" type="revolute"><parent link="base"/><child link="upper"/>
-    <origin xyz="0 0 0.2"/><axis xyz="0 0 1"/><limit lower="-6" upper="6" effort="1" velocity="1"/></joint>
-  <joint name="elbow" type="revolute"><parent link="upper"/><child link="lower"/>
-    <origin xyz="1 0 0"/><axis xyz="0 0 1"/><limit lower="-6" upper="6" effort="1" velocity="1"/></joint>
-  <joint name="wrist" type="continuous"><parent link="lower"/><child link="hand"/>
-    <origin xyz="0.8 0 0"/><axis xyz="1 0 0"/></joint>
-  <link name="hand"/>
-</robot>
-"""
+ARM = arm_urdf(6, wrist=True)
 
 
 @pytest.fixture(scope="module")
