@@ -44,7 +44,9 @@ APT_PKGS := $(strip $(shell sed 's/\#.*//' .ci/apt-packages.txt))
 
 # Parallel by default: the entry points below build with -j<number of CPUs> unless the
 # command line gave its own -j (seen in MAKEFLAGS only inside recipes, hence `=`).
-NPROC    := $(shell nproc 2>/dev/null || echo 2)
+# GNU nproc also honours OMP_NUM_THREADS / OMP_THREAD_LIMIT (set to 1 by dask's nanny and
+# by many HPC shells): the build's job count is the CPU count, not an OpenMP setting.
+NPROC    := $(shell env -u OMP_NUM_THREADS -u OMP_THREAD_LIMIT nproc 2>/dev/null || echo 2)
 PAR       = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(NPROC))
 
 .PHONY: all deps lib venv wheel docs install install-dirs-absolute uninstall check test test-c test-py check-header check-symbols bench demo clean sanitize valgrind tsan

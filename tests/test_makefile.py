@@ -12,10 +12,11 @@ import pytest
 ROOT = Path(__file__).resolve().parent.parent
 
 
-def _make_n(*args):
+def _make_n(*args, **extra_env):
     """What `make -n ARGS` would run, with no make jobserver or flags of a make running
-    this test."""
+    this test (extra_env: variables set for it)."""
     env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS", "MAKELEVEL")}
+    env.update(extra_env)
     out = subprocess.run(["make", "-n", "--no-print-directory", "-C", str(ROOT), *args],
                          capture_output=True, text=True, env=env, timeout=300)
     assert out.returncode == 0, out.stdout + out.stderr
@@ -30,8 +31,11 @@ def _build_command(out):
 
 
 def test_builds_in_parallel_unless_told():
-    jobs = f"-j{os.cpu_count()}"
+    jobs = f"-j{len(os.sched_getaffinity(0))}"    # the CPUs this process may use, as nproc
     assert jobs in _build_command(_make_n("check")).split()
+    # An OpenMP setting (dask's nanny sets OMP_NUM_THREADS=1 in the test process) is not a
+    # CPU count: nproc alone would take it.
+    assert jobs in _build_command(_make_n("check", OMP_NUM_THREADS="1", OMP_THREAD_LIMIT="1")).split()
     line = _build_command(_make_n("-j3", "check"))
     assert not re.search(r"(^|\s)-j\d", line), line       # the command line's -j3 governs
 
