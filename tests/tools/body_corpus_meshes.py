@@ -273,3 +273,17 @@ case(MM, "rotation-arc-crosses-triangle-twice",
       body("B", mesh([[1, 0, 0], [F(1, 2), 0, 0], [F(1, 2), F(-1, 4), 0]], [[0, 1, 2]]),
            rotation=about([0, 0, 1], 0, 4))],
      F(1, 12), feat=vt("A", "B", ("triangle", 0), ("vertex", 0)))
+
+# Issue 31 (the range phase's static pass at t = 0 searches the query side's edges only
+# against stored triangles near a query triangle: lib/range/range_index.cpp,
+# near_at_zero): three parallel needles (long thin triangles in the planes x = z + 2k,
+# k = 0, 1, 2) and a spike whose edge Q0 Q1 passes through (4, 1/4, 2), inside needle 1
+# (x = z + 2, 0 <= y <= 1 - z/10) at t = 0; the needles' edges miss the spike, so only the search
+# over the spike's edges finds the contact. First contact t = 0.
+NEEDLES3 = mesh([[0, 0, 0], [10, 0, 10], [0, 1, 0], [2, 0, 0], [12, 0, 10], [2, 1, 0],
+                 [4, 0, 0], [14, 0, 10], [4, 1, 0]], [[0, 1, 2], [3, 4, 5], [6, 7, 8]])
+SPIKE = mesh([["4.5", "0.25", "1.5"], ["3.5", "0.25", "2.5"], ["3.5", "0.3125", "2.5"]],
+             [[0, 1, 2]])
+case(MM, "range-static-pass-spike-through-needle",
+     [body("needles", NEEDLES3), body("spike", SPIKE, translation=[[0, 0], [0, 1], [0, 0]])],
+     F(0))
