@@ -55,6 +55,7 @@ class Driver final : public narrow::Candidate_sink {
   // A piece starting after the best upper bound, or after the caller's solve.until (a
   // scene's bound from other pairs: scene.h, solve_planned), holds no contact to report.
   bool pruned(double a) const override {
+    if (opt_.witness && witness_done()) return true;  // Search_options::witness: nothing more to report
     if (opt_.all_contacts || (!have_best_ && !(opt_.solve.until < 1))) return false;
     Rational ra;
     mpq_set_d(ra.get_mpq_t(), a);
@@ -92,8 +93,10 @@ class Driver final : public narrow::Candidate_sink {
   // 75k-triangle bunnies turning (bench_bvh.py, rot) this kept 170 of 293 solved pairs,
   // none touching, from the solver.
   void piece(double a, double b, std::vector<Prim_pair> cand) override {
+    if (opt_.witness && witness_done()) return;
     std::vector<Prim_pair> fresh = fresh_of(std::move(cand), b);
     if (fresh.empty()) return;
+    if (a == 0 && within_at_zero(fresh, b)) return;
     constexpr size_t kBatch = 64;
     const std::vector<Part> sub = parts(a, b);
     std::vector<std::pair<int, Prim_pair>> order;  // (first sub-piece where boxes meet, pair)
@@ -158,6 +161,31 @@ class Driver final : public narrow::Candidate_sink {
   Thread_pool &pool_;
   Pair_outcome &out_;
   const double reach_;  // opt_.reach: 0 without a minimum separation
+  // Search_options::witness with a minimum separation: a pair within delta at t = 0 is a
+  // first contact and ends the search, so the candidates of a piece starting at 0 are
+  // first tested there alone (Pair_ctx::within_at_zero: exact, from the positions at
+  // t = 0, no trajectories), in key order, chunk by chunk in parallel, and the first
+  // one within delta is solved (its report is the solver's) as the only pair. Without
+  // this a robot's start pose within delta of an obstacle solved every candidate near
+  // t = 0 (issue 33: 1,261 pairs, first contact 30-70x the time without min_distance).
+  bool within_at_zero(const std::vector<Prim_pair> &fresh, double b) {
+    if (!opt_.witness || opt_.all_contacts || opt_.apart_at_zero || !opt_.solve.min_distance()) return false;
+    constexpr size_t kChunk = 64;
+    for (size_t i = 0; i < fresh.size(); i += kChunk) {
+      util::work_step();
+      const size_t n = std::min(kChunk, fresh.size() - i);
+      std::vector<char> within(n, 0);
+      pool_.parallel_for(n, [&](size_t k) { within[k] = ctx_.within_at_zero(fresh[i + k], opt_.solve); });
+      out_.stats.static_tests += n;
+      for (size_t k = 0; k < n; ++k)
+        if (within[k]) {
+          solve_batch({fresh[i + k]}, b);
+          if (witness_done()) return true;
+        }
+    }
+    return false;
+  }
+
   // Per feature pair solved: a time c such that it has no contact in [0, c] (+inf: it
   // touches, with its result kept, or has no contact at all). A pair of a piece [a, b] is
   // solved only for contacts up to min(best, b) (much cheaper for a pair whose boxes
