@@ -118,7 +118,8 @@ void project(const double n[3], const enclose::Box *b, int count, double &lo, do
 // project to disjoint intervals separates them at every t of the piece. Axes (any
 // double vectors serve: the projections are certified): the difference of the two
 // sets' box centres, each triangle's normal and, for two triangles, the cross products
-// of their edges, directions taken at the piece's pose midpoints.
+// of their edges, directions taken at the piece's pose midpoints. reach > 0: apart
+// when the gap on an axis exceeds reach |n| (below).
 bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t ka, const Side_piece &pa,
                   const narrow::Body_data &B, const bvh::Hierarchy &hb, uint32_t kb, const Side_piece &pb,
                   double reach) {
