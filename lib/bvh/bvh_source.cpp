@@ -73,9 +73,9 @@ class Bvh_source final : public narrow::Candidate_source {
   Candidate_sink *sink_ = nullptr;
   Search_stats *stats_ = nullptr;
   util::Thread_pool *pool_ = nullptr;
-  // Side A's node, triangle, vertex and edge boxes grow by reach_ (enclose/enclose.h, reach_of:
-  // a double >= the minimum separation delta, 0 without one) in run(), so every
-  // feature pair within delta at t keeps meeting boxes, with its ancestors', on every
+  // Node, triangle, vertex and edge boxes are kept when within reach_ (enclose::boxes_within;
+  // reach_of: a double >= the minimum separation delta, 0 without one) in run(), so
+  // every feature pair within delta at t keeps them, with its ancestors', on every
   // piece holding t (bvh_source.h, "Coverage").
   const double reach_;
   double feature_ = 0;  // the bodies' typical feature size (final-piece test)
@@ -100,13 +100,13 @@ class Bvh_source final : public narrow::Candidate_source {
   }
 
   // One level on pairs p[0 .. n): final pieces split every pair down to leaves; other
-  // pieces only split nodes larger than thresh (the motion's spread). Side A's boxes
-  // grow by reach.
+  // pieces only split nodes larger than thresh (the motion's spread). Node pairs are
+  // kept when within reach (enclose::boxes_within).
   void step(const Pose_piece pose[2], bool final, double thresh, double reach, const Node_pair *p,
             size_t n, Step_out &out) const {
     for (size_t i = 0; i < n; ++i) {
       const uint32_t x = p[i].x, y = p[i].y;
-      if (!enclose::boxes_meet(node_box(0, pose[0], x, reach), node_box(1, pose[1], y, 0.0))) continue;
+      if (!enclose::boxes_within(node_box(0, pose[0], x, 0.0), node_box(1, pose[1], y, 0.0), reach)) continue;
       const Node &nx = H_[0]->nodes[x], &ny = H_[1]->nodes[y];
       if (nx.leaf() && ny.leaf()) {
         out.leaves.push_back(p[i]);
@@ -211,21 +211,20 @@ class Bvh_source final : public narrow::Candidate_source {
       const auto &t = side[s]->mesh->triangles()[tri[s]];
       for (int k = 0; k < 3; ++k) {
         vb[s][k] = enclose::point_box(pose[s], side[s]->data->pts[t[k]], side[s]->data->pt_err);
-        if (s == 0 && reach_ > 0) vb[s][k] = enclose::grow(vb[s][k], reach_);  // A's grow
       }
       tb[s] = enclose::hull(enclose::hull(vb[s][0], vb[s][1]), vb[s][2]);
     }
     const auto &TA = A.mesh->triangles()[ea], &TB = B.mesh->triangles()[eb];
     for (int k = 0; k < 3; ++k) {
-      if (enclose::boxes_meet(vb[0][k], tb[1])) out.push_back({narrow::VF, TA[k], eb});
-      if (enclose::boxes_meet(tb[0], vb[1][k])) out.push_back({narrow::FV, ea, TB[k]});
+      if (enclose::boxes_within(vb[0][k], tb[1], reach_)) out.push_back({narrow::VF, TA[k], eb});
+      if (enclose::boxes_within(tb[0], vb[1][k], reach_)) out.push_back({narrow::FV, ea, TB[k]});
     }
     const auto &EA = A.data->tri_edges[ea], &EB = B.data->tri_edges[eb];
     for (int i = 0; i < 3; ++i) {
       if (EA[i] < 0) continue;
       const Box ba = enclose::hull(vb[0][i], vb[0][(i + 1) % 3]);
       for (int j = 0; j < 3; ++j)
-        if (EB[j] >= 0 && enclose::boxes_meet(ba, enclose::hull(vb[1][j], vb[1][(j + 1) % 3])))
+        if (EB[j] >= 0 && enclose::boxes_within(ba, enclose::hull(vb[1][j], vb[1][(j + 1) % 3]), reach_))
           out.push_back({narrow::EE, uint32_t(EA[i]), uint32_t(EB[j])});
     }
   }

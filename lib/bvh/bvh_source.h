@@ -26,12 +26,14 @@
 // piece holding t unless the sink pruned it. A far-apart pair ends with the two roots:
 // their boxes over [0, 1] miss, which also holds at t = 0, so the static candidates
 // (the triangle pairs meeting at t = 0) are none without a traversal.
-// Minimum separation delta > 0 (pccd_config.min_distance): every box of side A (node,
-// triangle, vertex, edge) is grown by reach, a double >= delta (enclose/enclose.h, reach_of), in
-// run(); a feature pair within distance delta at t has points at most delta apart on
-// every axis (L_inf <= L_2), so its grown boxes, and those of its elements and their
-// ancestors, meet on every piece holding t, and the argument above holds for "within
-// delta" in place of "touching". The static test (triangles sharing a point at t = 0)
+// Minimum separation delta > 0 (pccd_config.min_distance): in run() "boxes meet" reads
+// "boxes within reach" (enclose::boxes_within: Euclidean box distance <= reach, a double
+// >= delta, enclose/enclose.h, reach_of) for nodes, triangles, vertices and edges; a
+// feature pair within distance delta at t has points at most delta apart, so its
+// boxes, and those of its elements and their ancestors, are within reach on every
+// piece holding t, and the argument above holds for "within delta" in place of
+// "touching". (Growing A's boxes by reach on every axis, as before issue 33, also kept
+// pairs up to sqrt(3) delta apart: a robot's near misses solved 3x the pairs.) The static test (triangles sharing a point at t = 0)
 // keeps ungrown boxes: with delta, pairs within delta at t = 0 come from run() (the
 // driver solves them with delta from t = 0). A far-apart pair still ends with the
 // roots (grown): one box test when the bodies stay more than delta apart per axis.

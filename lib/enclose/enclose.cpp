@@ -1,5 +1,6 @@
 #include "enclose/enclose.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -52,6 +53,20 @@ Box grow(const Box &a, double r) {
     g.hi[i] = a.hi[i] + r + s;
   }
   return g;
+}
+
+bool boxes_within(const Box &a, const Box &b, double r) {
+  // Each gap is a difference of doubles (relative error <= u = 2^-53 in any rounding
+  // mode), squared and summed in three more operations: the computed sum is at most
+  // (1 + u)^5 times the exact one, and r^2 at least (1 - u)^2 of its own; 2^-48 covers
+  // both, 1e-300 underflow. A NaN gap counts as 0 (std::max keeps 0): kept.
+  if (!(r > 0)) return boxes_meet(a, b);  // r = 0: exactly boxes_meet
+  double d2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double g = std::max({0.0, b.lo[i] - a.hi[i], a.lo[i] - b.hi[i]});
+    d2 += g * g;
+  }
+  return !(d2 * (1 - 0x1p-48) - 1e-300 > r * r * (1 + 0x1p-48));
 }
 
 double reach_of(const arith::Rational &delta) {

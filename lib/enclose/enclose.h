@@ -43,6 +43,13 @@ inline Box hull(const Box &a, const Box &b) {
   return h;
 }
 Box grow(const Box &a, double r);  // r >= 0 (+inf allowed), outward-safe
+// Whether the closed boxes may be within Euclidean distance r >= 0 (+inf allowed): false
+// only when their distance, sqrt of the sum of the squared gaps per axis, is certainly
+// > r. A box pair that boxes_meet(grow(a, r), b) keeps may be up to sqrt(3) r apart (a
+// cube's corner); this test keeps none farther than r: a pair of features at a distance
+// in (delta, sqrt(3) delta] is separated (issue 33, near misses of a robot). r = 0:
+// boxes_meet.
+bool boxes_within(const Box &a, const Box &b, double r);
 Box empty_box();                    // hull identity
 
 // Minimum separation (pred::Solve_options::delta, pccd_config.min_distance): the growth

@@ -238,6 +238,40 @@ bool Pair_ctx::edge_meets_triangle_at_zero(int s, uint32_t e, uint32_t t) const 
   }
 }
 
+bool Pair_ctx::within_at_zero(const Prim_pair &p, const pred::Solve_options &opt) const {
+  if (p.type != VF && p.type != FV && p.type != EE) return false;
+  const Common &c = init();
+  auto test = [&](auto zero) {
+    using NT = decltype(zero);
+    // The positions are D(0) times the true ones (at_zero), so delta enters as
+    // delta^2 D(0)^2 (pred/static_contact.h), as in pred::solve's static test.
+    NT d0 = zero, r = zero;
+    if constexpr (std::is_same_v<NT, Rational>) {
+      if (!c.D.c.empty()) d0 = c.D.c[0];
+      r = opt.delta;
+    } else {
+      if (!c.Di.c.empty()) d0 = c.Di.c[0];
+      r = opt.delta_box;
+    }
+    const NT r2d2 = r * r * d0 * d0;
+    if (p.type == EE) {
+      const auto &ea = A_.mesh->edges()[p.a], &eb = B_.mesh->edges()[p.b];
+      const auto x = at_zero<NT>(0, std::array<uint32_t, 2>{ea[0], ea[1]});
+      const auto y = at_zero<NT>(1, std::array<uint32_t, 2>{eb[0], eb[1]});
+      return pred::segments_within(x[0], x[1], y[0], y[1], r2d2);
+    }
+    const int vs = p.type == VF ? 0 : 1;
+    const uint32_t v = p.type == VF ? p.a : p.b, t = p.type == VF ? p.b : p.a;
+    const auto x = at_zero<NT>(vs, std::array<uint32_t, 1>{v});
+    return pred::ball_meets_triangle(x[0], r2d2, at_zero<NT>(1 - vs, triangle(1 - vs, t)));
+  };
+  try {
+    return test(Interval(0.0));
+  } catch (const arith::Uncertain &) {
+    return test(Rational(0));
+  }
+}
+
 std::vector<std::pair<Feature_ref, Feature_ref>> Pair_ctx::contacts(
     const Prim_pair &p, const pred::Contact_result &r) const {
   std::vector<std::pair<Feature_ref, Feature_ref>> out;

@@ -65,6 +65,11 @@ class Pair_ctx {
   // The closed edge e of side s (a mesh) and the closed triangle t of side 1 - s share a
   // point at t = 0 (exact; the static pass of the range phase, range/range_index.h).
   bool edge_meets_triangle_at_zero(int s, uint32_t e, uint32_t t) const;
+  // VF, FV, EE (other types: false): the closed primitives are within distance
+  // opt.delta at t = 0, decided exactly (interval filter, then rationals): the static
+  // test pred::solve makes of such a pair with a minimum separation, without building
+  // the pair's trajectories (the witness pass of scene/pair_search.h).
+  bool within_at_zero(const Prim_pair &p, const pred::Solve_options &opt) const;
 
   // The feature pairs a result reports, as features of the two bodies (deduplicated).
   std::vector<std::pair<Feature_ref, Feature_ref>> contacts(const Prim_pair &p,

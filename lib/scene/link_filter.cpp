@@ -118,12 +118,13 @@ void project(const double n[3], const enclose::Box *b, int count, double &lo, do
 // project to disjoint intervals separates them at every t of the piece. Axes (any
 // double vectors serve: the projections are certified): the difference of the two
 // sets' box centres, each triangle's normal and, for two triangles, the cross products
-// of their edges, directions taken at the piece's pose midpoints.
+// of their edges, directions taken at the piece's pose midpoints. reach > 0: apart
+// when the gap on an axis exceeds reach |n| (below).
 bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t ka, const Side_piece &pa,
                   const narrow::Body_data &B, const bvh::Hierarchy &hb, uint32_t kb, const Side_piece &pb,
                   double reach) {
   enclose::Box ba[6], bb[6];
-  const int na = element_boxes(A, ha, ka, pa, reach, ba), nb = element_boxes(B, hb, kb, pb, 0, bb);
+  const int na = element_boxes(A, ha, ka, pa, 0, ba), nb = element_boxes(B, hb, kb, pb, 0, bb);
   double axes[12][3];
   int n_axes = 0;
   double edges[2][3][3];  // world edge directions at the pose midpoints (triangles)
@@ -163,7 +164,17 @@ bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t
     double xl, xh, yl, yh;
     project(axes[k], ba, na, xl, xh);
     project(axes[k], bb, nb, yl, yh);
-    if (xh < yl || yh < xl) return true;
+    if (reach == 0) {
+      if (xh < yl || yh < xl) return true;
+      continue;
+    }
+    // Within reach: points x, y with |x - y| <= reach project within reach |n| of each
+    // other, so a gap > reach |n| separates (sharper than A's boxes grown by reach on
+    // every axis, which adds reach |n|_1). Each gap, a difference of doubles, errs by at
+    // most u of itself; |n| and the product by a few u: 2^-48 covers them.
+    const double *n = axes[k];
+    const double m = reach * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * (1 + 0x1p-48) + 1e-300;
+    if ((yl - xh) * (1 - 0x1p-48) > m || (xl - yh) * (1 - 0x1p-48) > m) return true;
   }
   return false;
 }
@@ -199,8 +210,8 @@ bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, cons
   for (; !front.empty() && budget > 0; --budget) {
     const auto [ka, kb] = front.back();
     front.pop_back();
-    if (!enclose::boxes_meet(enclose::grow(enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h), reach),
-                             enclose::frame_box(pb, hb.nodes[kb].c, hb.nodes[kb].h)))
+    if (!enclose::boxes_within(enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h),
+                               enclose::frame_box(pb, hb.nodes[kb].c, hb.nodes[kb].h), reach))
       continue;
     const bool la = ha.nodes[ka].leaf(), lb = hb.nodes[kb].leaf();
     if (la && lb) {
@@ -269,9 +280,9 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
     while (!work.empty()) {
       const auto [ka, kb] = work.back();
       work.pop_back();
-      enclose::Box x = box_of(pa, ha.nodes[ka].c, ha.nodes[ka].h, yna);
-      if (reach > 0) x = enclose::grow(x, reach);
-      if (!enclose::boxes_meet(x, box_of(pb, hb.nodes[kb].c, hb.nodes[kb].h, ynb))) continue;
+      if (!enclose::boxes_within(box_of(pa, ha.nodes[ka].c, ha.nodes[ka].h, yna),
+                                 box_of(pb, hb.nodes[kb].c, hb.nodes[kb].h, ynb), reach))
+        continue;
       const bool la = ha.nodes[ka].leaf(), lb = hb.nodes[kb].leaf();
       const double sa = la ? -1 : ha.size(ka), sb = lb ? -1 : hb.size(kb);
       if (la && lb && leaves_apart(A, ha, ka, pa, B, hb, kb, pb, reach)) continue;

@@ -36,8 +36,9 @@
 // tested at the piece's midpoint, an instant m = (2i + 1) /
 // 2^(d + 1) (touching_at); a triangle pair found touching there ends the traversal (the
 // pair touches at m, exactly: the answer is certain) and the piece's start is returned.
-// Minimum separation: side A's boxes grow by reach (enclose::reach_of), so "touch" reads
-// "come within delta" throughout; a witness is then a triangle pair certainly within
+// Minimum separation: boxes are kept when within reach (enclose::boxes_within, reach_of;
+// the leaves' separating axes take a margin reach |n|), so "touch" reads "come within
+// delta" throughout; a witness is then a triangle pair certainly within
 // delta at the midpoint (delta_witness.h; Filter_limits::delta_lo, issue 33).
 #pragma once
 #include <functional>

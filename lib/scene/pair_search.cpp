@@ -50,11 +50,13 @@ class Driver final : public narrow::Candidate_sink {
       }
     }
     source->run(*this, out_.stats, pool_);
+    if (zero_) solve_batch({*zero_}, 1.0);  // the witness pass's pair (within_at_zero)
   }
 
   // A piece starting after the best upper bound, or after the caller's solve.until (a
   // scene's bound from other pairs: scene.h, solve_planned), holds no contact to report.
   bool pruned(double a) const override {
+    if (zero_) return a > 0 || !opt_.solve.want_time;  // within_at_zero: a contact at t = 0
     if (opt_.all_contacts || (!have_best_ && !(opt_.solve.until < 1))) return false;
     Rational ra;
     mpq_set_d(ra.get_mpq_t(), a);
@@ -63,6 +65,7 @@ class Driver final : public narrow::Candidate_sink {
 
   void whole(std::vector<Prim_pair> cand) override {
     std::vector<Prim_pair> fresh = fresh_of(std::move(cand), 1.0);
+    if (within_at_zero(fresh)) return;
     bool all_tt = true;  // the static pass (a contact at t = 0 is first)
     for (const Prim_pair &p : fresh) all_tt = all_tt && p.type == narrow::TT;
     if (!opt_.witness || opt_.all_contacts || (opt_.solve.want_time && !all_tt)) return solve_batch(fresh, 1.0);
@@ -94,6 +97,7 @@ class Driver final : public narrow::Candidate_sink {
   void piece(double a, double b, std::vector<Prim_pair> cand) override {
     std::vector<Prim_pair> fresh = fresh_of(std::move(cand), b);
     if (fresh.empty()) return;
+    if (a == 0 && within_at_zero(fresh)) return;
     constexpr size_t kBatch = 64;
     const std::vector<Part> sub = parts(a, b);
     std::vector<std::pair<int, Prim_pair>> order;  // (first sub-piece where boxes meet, pair)
@@ -141,14 +145,14 @@ class Driver final : public narrow::Candidate_sink {
     }
     return out;
   }
-  // The first part on which the pair's two feature boxes meet (kSub: none), side A's
-  // grown by the minimum separation's reach (enclose/enclose.h, reach_of: features within delta
-  // have meeting grown boxes, so the bound stays a lower bound of their contacts).
+  // The first part on which the pair's two feature boxes are within the minimum
+  // separation's reach (kSub: none; enclose::boxes_within, reach_of: features within delta
+  // have boxes within reach, so the bound stays a lower bound of their contacts).
   int first_meeting(const Prim_pair &p, const std::vector<Part> &part) const {
     for (int k = 0; k < kSub; ++k) {
-      enclose::Box a = enclose::feature_box(ctx_.side(0), 0, p, part[k].pose[0]);
-      if (reach_ > 0) a = enclose::grow(a, reach_);
-      if (enclose::boxes_meet(a, enclose::feature_box(ctx_.side(1), 1, p, part[k].pose[1]))) return k;
+      if (enclose::boxes_within(enclose::feature_box(ctx_.side(0), 0, p, part[k].pose[0]),
+                                enclose::feature_box(ctx_.side(1), 1, p, part[k].pose[1]), reach_))
+        return k;
     }
     return kSub;
   }
@@ -158,6 +162,41 @@ class Driver final : public narrow::Candidate_sink {
   Thread_pool &pool_;
   Pair_outcome &out_;
   const double reach_;  // opt_.reach: 0 without a minimum separation
+  // Search_options::witness with a minimum separation: a feature pair within delta at
+  // t = 0 is a first contact, and the report lists the pairs found, not every pair in
+  // contact (scene.h). So the candidates of a piece starting at 0 (or of the whole
+  // interval) are tested at t = 0 alone before any solve (Pair_ctx::within_at_zero:
+  // exact, from the positions at t = 0, no trajectories); once one is within delta, the
+  // pieces starting after 0 are pruned, those starting at 0 are only tested, and after
+  // the source's run the pair of least key within delta is solved (its report is the
+  // solver's) as the body pair's only contact at t = 0: every source lists every pair
+  // within delta at t = 0 in a piece starting at 0, so that pair does not depend on
+  // the broad phase (as the static pass's touching pair of least key). Decide mode
+  // stops at the first. Without this a robot's start pose within delta of an obstacle
+  // solved every candidate near t = 0 (issue 33: 1,261 pairs, first contact 30x the
+  // time without min_distance). Returns whether a pair within delta is known.
+  std::optional<Prim_pair> zero_;
+  bool within_at_zero(const std::vector<Prim_pair> &fresh) {
+    if (!opt_.witness || opt_.all_contacts || opt_.apart_at_zero || !opt_.solve.min_distance()) return false;
+    if (fresh.empty() || fresh.front().type > narrow::EE) return zero_.has_value();  // sorted: TT last
+    constexpr size_t kChunk = 256;
+    bool found = false;
+    for (size_t i = 0; i < fresh.size() && !found; i += kChunk) {
+      if (zero_ && (!opt_.solve.want_time || !(fresh[i] < *zero_))) break;  // in key order
+      util::work_step();
+      const size_t n = std::min(kChunk, fresh.size() - i);
+      std::vector<char> within(n, 0);
+      pool_.parallel_for(n, [&](size_t k) { within[k] = ctx_.within_at_zero(fresh[i + k], opt_.solve); });
+      out_.stats.static_tests += n;
+      for (size_t k = 0; k < n && !found; ++k)
+        if (within[k] && (!zero_ || fresh[i + k] < *zero_)) {
+          zero_ = fresh[i + k];
+          found = true;
+        }
+    }
+    return zero_.has_value();
+  }
+
   // Per feature pair solved: a time c such that it has no contact in [0, c] (+inf: it
   // touches, with its result kept, or has no contact at all). A pair of a piece [a, b] is
   // solved only for contacts up to min(best, b) (much cheaper for a pair whose boxes

@@ -10,14 +10,18 @@
 //  - The source's candidates of a piece [a, b] get the start of the first of 8 equal
 //    sub-pieces on which the two features' boxes meet (a lower bound of their contacts
 //    in [a, b]; none: no contact in [a, b], so the pair is left for a later piece; with
-//    a minimum separation delta, side A's box grows by enclose::reach_of(delta), so that
-//    "contact" reads "within delta"). They
+//    a minimum separation delta, "meet" reads "within enclose::reach_of(delta)",
+//    enclose::boxes_within, so that "contact" reads "within delta"). They
 //    are solved in order of that bound, in batches of 4, 8, ..., 64 pairs; a batch
 //    starts only with pairs whose bound is <= the best upper bound so far, and each pair
 //    is asked only for contacts up to that bound and the piece's end b
 //    (pred::Solve_options::until; with all_contacts or without times: all of [0, 1]).
 //    A pair found apart up to b that a later piece reports again (it may touch there)
 //    is solved again, then up to the best bound alone.
+//  - Search_options::witness with a minimum separation delta: the candidates of a piece
+//    starting at 0 are first tested at t = 0 alone (Pair_ctx::within_at_zero); once a
+//    pair is within delta then, later pieces are pruned and only the pair of least key
+//    within delta at t = 0 is solved (the same for every broad phase).
 //  - A piece that starts after the best upper bound found so far is pruned: a pair
 //    first met there can only touch later than that bound.
 // The set of pairs solved, and so the answer, does not depend on the number of threads
