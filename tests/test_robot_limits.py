@@ -1,4 +1,4 @@
-"""The joint-limit policy of Robot.check / check_path (polyccd/robot.py, docs/python.md "Robots"):
+"""The joint-limit policy of Robot.check / check_path (polyccd/robot.py, docs/robots.md):
 q0 or q1 outside an actuated joint's URDF limits [lower, upper] is an InputError naming
 the waypoint, the joint and the value (default joint_limits="error"); the closed bounds
 themselves are inside; joint_limits="ignore" checks the segment as it is, with the same

@@ -18,7 +18,7 @@
 //          stops once it makes bvh the dearer (at most kCap).
 // auto takes range when its estimate is lower, bvh otherwise. The constants are CPU
 // seconds measured on the on-line families (tests/bench/bench_adversarial.py: terrain,
-// molecules, translated needles, nested shells, turned blades; docs/benchmarks.md, "auto
+// molecules, translated needles, nested shells, turned blades; docs/benchmarks-broad.md, "auto
 // by estimated cost"); only their ratios matter, and an estimate off by 2x moves the
 // choice only where the two phases cost about the same. The estimate costs
 // O(kSamples pieces + kCap log n) float operations. Floats and samples: it decides a speed,

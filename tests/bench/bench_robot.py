@@ -42,7 +42,7 @@ each method, segments each reports colliding, MISSES (polyccd collides, discrete
 and counts that must be 0, printed loudly when not: decide and first-contact modes
 disagreeing, discrete collisions polyccd does not report, and discrete first colliding
 poses earlier than polyccd's first contact. At the end a markdown table of the ratios
-(docs/benchmarks.md). A benchmark: it never asserts and is not in make test. `make
+(docs/benchmarks-robots.md). A benchmark: it never asserts and is not in make test. `make
 bench` runs it; alone: .venv/bin/python tests/bench/bench_robot.py --n 200
 """
 import argparse

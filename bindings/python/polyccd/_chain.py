@@ -38,7 +38,7 @@ def _doubles(value, place, size):
 
 class Chain:
     """Links joined by fixed / revolute / continuous / prismatic joints (URDF's
-    conventions); see docs/python.md, "Kinematic chains"."""
+    conventions); see docs/robots.md, "Kinematic chains"."""
 
     __slots__ = ("_handle", "_links")
 

@@ -6,7 +6,7 @@ names), meshes by trimesh; both are imported when a URDF is loaded, never by
 `import polyccd`. The origins (xyz, rpy) are read from the URDF's own text, each number
 the double nearest its decimal, which the chain then takes exactly (yourdfpy keeps only
 a 4x4 matrix computed in floats). Every kinematic computation is the C library's
-(pccd_chain_*, pccd_motion_*, pccd_scene_*). See docs/python.md, "Robots".
+(pccd_chain_*, pccd_motion_*, pccd_scene_*). See docs/robots.md.
 
 Policies (stated once, checked here or by the C library):
   - joints: fixed, revolute, continuous (a revolute joint without limits), prismatic;
