@@ -15,62 +15,11 @@ import pytest
 
 import polyccd as P
 from helpers import box
+from oracle_distance import point_segment, point_triangle, segment_segment
 
 DELTA = F(1, 20)
 TINY = F(1, 2 ** 40)
 GAPS = [DELTA, DELTA - TINY, DELTA + TINY, 2 * DELTA, DELTA / 2]
-
-
-def sub(a, b):
-    return [x - y for x, y in zip(a, b)]
-
-
-def dot(a, b):
-    return sum(x * y for x, y in zip(a, b))
-
-
-def cross(a, b):
-    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
-
-
-def point_segment2(p, a, b):
-    """Squared distance of p to the closed segment [a, b] (exact)."""
-    d = sub(b, a)
-    dd = dot(d, d)
-    u = min(F(1), max(F(0), dot(sub(p, a), d) / dd)) if dd else F(0)
-    c = [x + u * y for x, y in zip(a, d)]
-    return dot(sub(p, c), sub(p, c))
-
-
-def point_triangle2(p, t):
-    """Squared distance of p to the closed triangle t: the plane's when p projects inside
-    (barycentric signs), else the nearest side's."""
-    a, b, c = t
-    n = cross(sub(b, a), sub(c, a))
-    nn = dot(n, n)
-    h = dot(sub(p, a), n)
-    q = [x - h * y / nn for x, y in zip(p, n)]  # the projection on the plane
-    inside = all(dot(cross(sub(v1, v0), sub(q, v0)), n) >= 0 for v0, v1 in ((a, b), (b, c), (c, a)))
-    if inside:
-        return h * h / nn
-    return min(point_segment2(p, a, b), point_segment2(p, b, c), point_segment2(p, c, a))
-
-
-def segment_segment2(p, q, a, b):
-    """Squared distance of two closed segments: the lines' closest points when both lie
-    inside the segments, else an endpoint against the other segment."""
-    best = min(point_segment2(p, a, b), point_segment2(q, a, b),
-               point_segment2(a, p, q), point_segment2(b, p, q))
-    d1, d2, r = sub(q, p), sub(b, a), sub(p, a)
-    A, B, E = dot(d1, d1), dot(d1, d2), dot(d2, d2)
-    den = A * E - B * B
-    if den:
-        C, G = dot(d1, r), dot(d2, r)
-        s, t = (B * G - C * E) / den, (A * G - B * C) / den
-        if 0 <= s <= 1 and 0 <= t <= 1:
-            x, y = [u + s * v for u, v in zip(p, d1)], [u + t * v for u, v in zip(a, d2)]
-            best = min(best, dot(sub(x, y), sub(x, y)))
-    return best
 
 
 def edges(tris):
@@ -86,18 +35,18 @@ def feature_distance2(va, ta, fa, vb, tb, fb):
                 "triangle": lambda: [v[k] for k in t[i]]}[kind]()
     x, y = points(va, ta, fa), points(vb, tb, fb)
     if len(x) == 1:
-        return point_triangle2(x[0], y) if len(y) == 3 else point_segment2(x[0], *y)
+        return point_triangle(x[0], *y) if len(y) == 3 else point_segment(x[0], *y)
     if len(y) == 1:
-        return point_triangle2(y[0], x) if len(x) == 3 else point_segment2(y[0], *x)
-    return segment_segment2(*x, *y)
+        return point_triangle(y[0], *x) if len(x) == 3 else point_segment(y[0], *x)
+    return segment_segment(*x, *y)
 
 
 def mesh_distance2(va, ta, vb, tb):
     """Squared distance of two disjoint closed triangle meshes: brute force."""
-    d = min(point_triangle2(p, [vb[k] for k in t]) for p, t in product(va, tb))
-    d = min(d, min(point_triangle2(p, [va[k] for k in t]) for p, t in product(vb, ta)))
+    d = min(point_triangle(p, *[vb[k] for k in t]) for p, t in product(va, tb))
+    d = min(d, min(point_triangle(p, *[va[k] for k in t]) for p, t in product(vb, ta)))
     ea, eb = edges(ta), edges(tb)
-    return min(d, min(segment_segment2(va[i], va[j], vb[k], vb[m]) for (i, j), (k, m) in product(ea, eb)))
+    return min(d, min(segment_segment(va[i], va[j], vb[k], vb[m]) for (i, j), (k, m) in product(ea, eb)))
 
 
 TETRA = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
