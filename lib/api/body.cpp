@@ -100,6 +100,19 @@ int under_limits(pccd_body **out, const pccd_config *cfg, Make &&make) {
   return PCCD_OK;
 }
 
+// A mesh body from nv vertices (points() converts them, doubles or texts) and nt
+// triangles, under cfg's limits (NULL: none): every pccd_body_new_mesh_* entry point. The
+// size check runs before any allocation.
+template <class Points>
+int mesh_under_limits(pccd_body **out, const pccd_config *cfg, size_t nv, Points &&points,
+                      const unsigned int *triangles, size_t nt) {
+  return under_limits(out, cfg, [&](pccd_body **o) {
+    pccd::motion::check_body_size(nv, "vertices");
+    auto tris = triangles_of(triangles, nt);
+    new_mesh(o, points(), std::move(tris));
+  });
+}
+
 const pccd::motion::Mesh_body &edge_owner(const pccd_body *b, size_t i) {
   require(b, "b");
   const size_t n = b->mesh ? b->mesh->edges().size() : 0;
@@ -116,22 +129,16 @@ extern "C" {
 PCCD_API int pccd_body_new_mesh_d(pccd_body **out, const double *vertices, size_t nv,
                                   const unsigned int *triangles, size_t nt) {
   return guard(__func__, [&] {
-    require(out, "out");
-    *out = nullptr;
-    pccd::motion::check_body_size(nv, "vertices");
-    auto tris = triangles_of(triangles, nt);
-    return new_mesh(out, points_d(vertices, nv, "vertices"), std::move(tris));
+    return mesh_under_limits(out, nullptr, nv, [&] { return points_d(vertices, nv, "vertices"); },
+                             triangles, nt);
   });
 }
 
 PCCD_API int pccd_body_new_mesh_s(pccd_body **out, const char *const *vertices, size_t nv,
                                   const unsigned int *triangles, size_t nt) {
   return guard(__func__, [&] {
-    require(out, "out");
-    *out = nullptr;
-    pccd::motion::check_body_size(nv, "vertices");
-    auto tris = triangles_of(triangles, nt);
-    return new_mesh(out, points_s(vertices, nv, "vertices"), std::move(tris));
+    return mesh_under_limits(out, nullptr, nv, [&] { return points_s(vertices, nv, "vertices"); },
+                             triangles, nt);
   });
 }
 
@@ -190,11 +197,8 @@ PCCD_API int pccd_body_new_mesh_cfg_d(pccd_body **out, const double *vertices, s
                                       const unsigned int *triangles, size_t nt,
                                       const pccd_config *cfg) {
   return guard(__func__, [&] {
-    return under_limits(out, cfg, [&](pccd_body **o) {
-      pccd::motion::check_body_size(nv, "vertices");
-      auto tris = triangles_of(triangles, nt);
-      new_mesh(o, points_d(vertices, nv, "vertices"), std::move(tris));
-    });
+    return mesh_under_limits(out, cfg, nv, [&] { return points_d(vertices, nv, "vertices"); },
+                             triangles, nt);
   });
 }
 
@@ -202,11 +206,8 @@ PCCD_API int pccd_body_new_mesh_cfg_s(pccd_body **out, const char *const *vertic
                                       const unsigned int *triangles, size_t nt,
                                       const pccd_config *cfg) {
   return guard(__func__, [&] {
-    return under_limits(out, cfg, [&](pccd_body **o) {
-      pccd::motion::check_body_size(nv, "vertices");
-      auto tris = triangles_of(triangles, nt);
-      new_mesh(o, points_s(vertices, nv, "vertices"), std::move(tris));
-    });
+    return mesh_under_limits(out, cfg, nv, [&] { return points_s(vertices, nv, "vertices"); },
+                             triangles, nt);
   });
 }
 
