@@ -80,11 +80,13 @@ def same_first(got, ref, what):
         assert a.lo <= b.hi and b.lo <= a.hi, (what, a, b)
 
 
-def check_all_ways(robot, q0, q1, obstacles, self_collision, what, brute_force=True):
+def check_all_ways(robot, q0, q1, obstacles, self_collision, what, brute_force=True,
+                   min_distance=None):
     """Filtered first contact and decide mode against the unfiltered exact check (and
     brute force without self-collision): same answers; decide's witness pair touches
-    alone and its free_until is no later than the first contact."""
-    opts = dict(self_collision=self_collision, time_tolerance="1e-9")
+    alone (comes within min_distance, when given) and its free_until is no later than
+    the first contact."""
+    opts = dict(self_collision=self_collision, time_tolerance="1e-9", min_distance=min_distance)
     plain = robot.check(q0, q1, obstacles, filter=False, **opts)
     if brute_force and not self_collision:
         same_first(robot.check(q0, q1, obstacles, filter=False, broad_phase="brute", **opts), plain, what)
@@ -96,20 +98,20 @@ def check_all_ways(robot, q0, q1, obstacles, self_collision, what, brute_force=T
         assert decide.free_until <= plain.first_contact.lo, what
         assert first.free_until == first.first_contact.lo, what
         (witness,) = decide.scene.pairs
-        assert pair_touches(robot, q0, q1, obstacles, witness.names), what
+        assert pair_touches(robot, q0, q1, obstacles, witness.names, min_distance), what
     else:
         assert decide.free_until == first.free_until == 1, what
     return plain.collides
 
 
-def pair_touches(robot, q0, q1, obstacles, names):
+def pair_touches(robot, q0, q1, obstacles, names, min_distance=None):
     """The two bodies of a reported pair, checked alone as a polyccd scene (the links on
-    robot.motions, pccd_scene_solve): do they touch?"""
+    robot.motions, pccd_scene_solve): do they touch (come within min_distance)?"""
     motions = robot.motions(q0, q1)
     from polyccd._robot_check import _names
     own = {n: P.Body(s, motions[k]) for n, (_, _, k, s) in zip(_names(robot), robot.shapes)}
     own.update({o.name: o for o in obstacles})
-    return P.check([own[names[0]], own[names[1]]]).collides
+    return P.check([own[names[0]], own[names[1]]], min_distance=min_distance).collides
 
 
 def arm(name):

@@ -15,17 +15,9 @@ import polyccd as P  # noqa: E402
 from helpers import box  # noqa: E402
 from polyccd.robot import load_urdf  # noqa: E402
 from test_robot_arm import ARM, write  # noqa: E402
-from test_robot_filter import same_first  # noqa: E402
+from test_robot_filter import check_all_ways  # noqa: E402
 
 SEED = 3300
-
-
-def witness_within(robot, q0, q1, obstacles, names, delta):
-    motions = robot.motions(q0, q1)
-    from polyccd._robot_check import _names
-    own = {n: P.Body(s, motions[k], name=n) for n, (_, _, k, s) in zip(_names(robot), robot.shapes)}
-    own.update({o.name: o for o in obstacles})
-    return P.check([own[names[0]], own[names[1]]], min_distance=delta).collides
 
 
 @pytest.mark.parametrize("delta", [F(1, 20), F(1, 8)])
@@ -38,17 +30,6 @@ def test_filtered_min_distance_equals_exact(tmp_path, delta):
         q1 = [x + rng.uniform(-2, 2) for x in q0]
         c = [rng.uniform(-1.5, 1.5), rng.uniform(-1.5, 1.5)]
         posts = [P.Body(box([c[0], c[1], 0], [c[0] + 0.1, c[1] + 0.1, 0.5]), name="post")]
-        opts = dict(self_collision=False, time_tolerance="1e-9", min_distance=delta)
-        what = (case, q0, q1, c, delta)
-        plain = robot.check(q0, q1, posts, filter=False, **opts)
-        same_first(robot.check(q0, q1, posts, filter=False, broad_phase="brute", **opts), plain, what)
-        first = robot.check(q0, q1, posts, **opts)
-        same_first(first, plain, what)
-        decide = robot.check(q0, q1, posts, first_contact=False, **opts)
-        assert decide.collides == plain.collides, what
-        if plain.collides:
-            hits += 1
-            assert decide.free_until <= plain.first_contact.lo, what
-            (witness,) = decide.scene.pairs
-            assert witness_within(robot, q0, q1, posts, witness.names, delta), what
+        hits += check_all_ways(robot, q0, q1, posts, False, (case, q0, q1, c, delta),
+                               min_distance=delta)
     assert hits >= 2
