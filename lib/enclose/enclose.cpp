@@ -56,10 +56,11 @@ Box grow(const Box &a, double r) {
 }
 
 bool boxes_within(const Box &a, const Box &b, double r) {
-  // Each gap is a difference of doubles (relative error <= u = 2^-53 in any rounding
-  // mode), squared and summed in three more operations: the computed sum is at most
-  // (1 + u)^5 times the exact one, and r^2 at least (1 - u)^2 of its own; 2^-48 covers
-  // both, 1e-300 underflow. A NaN gap counts as 0 (std::max keeps 0): kept.
+  // Each gap is a difference of doubles (relative error <= 2^-53 rounding to nearest,
+  // <= 2^-52 in a directed mode: e = 2^-52 serves every mode), squared and summed in
+  // three more operations: the computed sum is within a factor (1 + e)^5 of the exact
+  // one, and the computed r^2 within (1 + e)^2 of its own; 2^-48 > 5e covers both, and
+  // 1e-300 underflow. A NaN gap counts as 0 (std::max keeps 0): kept.
   if (!(r > 0)) return boxes_meet(a, b);  // r = 0: exactly boxes_meet
   double d2 = 0;
   for (int i = 0; i < 3; ++i) {
