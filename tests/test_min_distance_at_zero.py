@@ -118,8 +118,11 @@ def test_robot_first_contact_within_delta_at_zero(tmp_path, gap):
     for kw in (dict(), dict(filter=False), dict(first_contact=False)):
         r = robot.check([0], [-1], obstacles, min_distance=DELTA, self_collision=False, **kw)
         assert r.collides == want, (gap, kw)
-        if want:  # the witness pass: the one pair within delta solved, then done
-            assert r.scene.stats["solved"] == 1, (gap, kw, r.scene.stats)
+        if want:  # the witness pass: the one pair within delta solved, then done (in
+            # decide mode the robot filter's own witness may answer first: edge to edge
+            # within delta, lib/scene/delta_witness.h, nothing solved)
+            solved = r.scene.stats["solved"]
+            assert solved == 1 or (solved == 0 and kw.get("first_contact") is False), (gap, kw, r.scene.stats)
         if want and kw.get("first_contact", True):
             assert r.first_contact.exact == 0, (gap, kw)
             (pair,) = r.scene.pairs

@@ -3,6 +3,7 @@
 #include "poly/earliest.h"
 #include "poly/integer.h"
 #include "poly/rational_root.h"
+#include "pred/delta_axis.h"
 #include "pred/delta_filter.h"
 #include "pred/filters.h"
 #include "pred/static_contact.h"
@@ -242,14 +243,16 @@ Contact_result solve(const Query_data<Interval> &iq,
   if (!opt.min_distance()) return solve_at(iq, exact_points, opt);
   // A plain linear query: first the separating-direction filter (delta_filter.h), which
   // pccd_solve_linear_d and the batch run on the same enclosures before building iq.
+  // Any other query: first the nearest-point axis filter (delta_axis.h).
   Linear_points lp;
-  if (linear_points_of(iq, lp) && delta_separated(iq.kind, lp, opt.delta_box)) {
+  const bool linear = linear_points_of(iq, lp);
+  const Query_data<Interval> dq = with_delta(iq, opt.delta_box);
+  if (linear ? delta_separated(iq.kind, lp, opt.delta_box) : delta_axis_separated(dq)) {
     util::work_step();  // one query, as in solve_at
     Contact_result out;
     out.stage = STAGE_BOUNDS;
     return out;
   }
-  const Query_data<Interval> dq = with_delta(iq, opt.delta_box);
   return solve_at(dq, [&] { return with_delta(exact_points(), opt.delta); }, opt);
 }
 
@@ -279,6 +282,13 @@ Contact_result solve_at(const Query_data<Interval> &iq,
       }
       if (bernstein_excludes(r)) {
         out.stage = STAGE_BERNSTEIN;
+        return out;
+      }
+      // With a minimum distance, the axis filter too (delta_axis.h: polynomial queries
+      // only, as in solve; most feature pairs after the first contact end here).
+      Linear_points lp;
+      if (r.has_delta && !linear_points_of(iq, lp) && delta_axis_separated(r)) {
+        out.stage = STAGE_BOUNDS;
         return out;
       }
     }

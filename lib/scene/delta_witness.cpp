@@ -65,6 +65,37 @@ bool near_point(const ITriangle &T, const IPoint &q, IPoint &out) {
   return true;
 }
 
+// The points of edges [a0, a1] and [b0, b1] nearest in doubles (parameters clamped to
+// [0, 1], each in turn), enclosed as (1 - s) a0 + s a1 and (1 - u) b0 + u b1: points of
+// the exact edges (s, u in [0, 1] exactly, so 1 - s >= 0 certainly). Edge pairs are
+// where two triangles approach edge to edge, when no vertex is as close as the edges.
+void nearest_of_edges(const IPoint &a0, const IPoint &a1, const IPoint &b0, const IPoint &b1, IPoint &p, IPoint &q) {
+  double d1[3], d2[3], r[3];
+  for (int i = 0; i < 3; ++i) {
+    d1[i] = mid(a1[i]) - mid(a0[i]);
+    d2[i] = mid(b1[i]) - mid(b0[i]);
+    r[i] = mid(a0[i]) - mid(b0[i]);
+  }
+  auto dot = [](const double *x, const double *y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  auto clamp = [](double x) { return x > 0 ? (x < 1 ? x : 1.0) : 0.0; };  // NaN: 0
+  const double a = dot(d1, d1), e = dot(d2, d2), b = dot(d1, d2), c = dot(d1, r), f = dot(d2, r);
+  const double den = a * e - b * b;
+  double s = den > 0 ? clamp((b * f - c * e) / den) : 0;
+  double u = e > 0 ? (b * s + f) / e : 0;
+  if (!(u >= 0)) {
+    u = 0;
+    s = a > 0 ? clamp(-c / a) : 0;
+  } else if (u > 1) {
+    u = 1;
+    s = a > 0 ? clamp((b - c) / a) : 0;
+  }
+  const Interval s1 = Interval(1.0) - Interval(s), u1 = Interval(1.0) - Interval(u);
+  for (int i = 0; i < 3; ++i) {
+    p[i] = s1 * a0[i] + Interval(s) * a1[i];
+    q[i] = u1 * b0[i] + Interval(u) * b1[i];
+  }
+}
+
 }  // namespace
 
 bool triangles_within(const narrow::Body_data &A, uint32_t ea, const enclose::Pose_piece &pa,
@@ -79,6 +110,12 @@ bool triangles_within(const narrow::Body_data &A, uint32_t ea, const enclose::Po
       if (near_point(onto, from[v], p) && dist2(p, from[v]).hi <= d.lo) return true;
     }
   }
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      IPoint p, q;
+      nearest_of_edges(ta[i], ta[(i + 1) % 3], tb[j], tb[(j + 1) % 3], p, q);
+      if (dist2(p, q).hi <= d.lo) return true;
+    }
   return false;
 }
 

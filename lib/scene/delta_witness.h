@@ -10,8 +10,11 @@
 // and p is enclosed with interval arithmetic as (1 - b1 - b2) V0 + b1 V1 + b2 V2: it
 // holds a point of the exact triangle. If the squared distance of the two enclosures
 // is certainly <= delta_lo^2 (delta_lo <= delta, a double) the triangles are within
-// delta: a contact in the min_distance sense at that instant. A choice of p made in
-// doubles only costs witnesses missed, never a wrong one.
+// delta: a contact in the min_distance sense at that instant. Then each edge of one
+// against each edge of the other the same way: the edges' nearest parameters s, u in
+// doubles, clamped to [0, 1], the points (1 - s) V0 + s V1 enclosed (edge to edge is
+// how a link first comes within delta of a plate's edge: no vertex is that close). A
+// choice of p made in doubles only costs witnesses missed, never a wrong one.
 #pragma once
 #include <cstdint>
 

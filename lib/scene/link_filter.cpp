@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "bvh/hierarchy.h"
+#include "pred/closest_axis.h"
 #include "scene/delta_witness.h"
 #include "pred/static_contact.h"
 #include "util/work_budget.h"
@@ -118,16 +119,20 @@ void project(const double n[3], const enclose::Box *b, int count, double &lo, do
 // project to disjoint intervals separates them at every t of the piece. Axes (any
 // double vectors serve: the projections are certified): the difference of the two
 // sets' box centres, each triangle's normal and, for two triangles, the cross products
-// of their edges, directions taken at the piece's pose midpoints. reach > 0: apart
-// when the gap on an axis exceeds reach |n| (below).
+// of their edges, directions taken at the piece's pose midpoints; reach > 0: also the
+// direction of the elements' nearest points there (pred/closest_axis.h: the axis on
+// which the gap is the distance). reach > 0: apart when the gap on an axis exceeds
+// reach |n| (below).
 bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t ka, const Side_piece &pa,
                   const narrow::Body_data &B, const bvh::Hierarchy &hb, uint32_t kb, const Side_piece &pb,
                   double reach) {
   enclose::Box ba[6], bb[6];
   const int na = element_boxes(A, ha, ka, pa, 0, ba), nb = element_boxes(B, hb, kb, pb, 0, bb);
-  double axes[12][3];
+  double axes[13][3];
   int n_axes = 0;
   double edges[2][3][3];  // world edge directions at the pose midpoints (triangles)
+  double world[2][3][3];  // the elements' points at the pose midpoints (closest_axis.h)
+  int n_world[2] = {1, 1};
   double ca[3] = {0, 0, 0}, cb[3] = {0, 0, 0};
   for (int i = 0; i < 3; ++i) {
     for (int k = 0; k < na; ++k) ca[i] += (ba[k].lo[i] + ba[k].hi[i]) / na;
@@ -139,8 +144,18 @@ bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t
     const narrow::Body_data &d = s == 0 ? A : B;
     const bvh::Hierarchy &h = s == 0 ? ha : hb;
     const enclose::Pose_piece &p = *(s == 0 ? pa : pb).ball;
-    if (!d.mesh) continue;
-    const auto &t = d.mesh->triangles()[h.elems[h.nodes[s == 0 ? ka : kb].first]];
+    const uint32_t e = h.elems[h.nodes[s == 0 ? ka : kb].first];
+    auto place = [&](int k, const std::array<double, 3> &y) {
+      const double z[3] = {y[0] - p.q[0], y[1] - p.q[1], y[2] - p.q[2]};  // about the pivot (enclose.h)
+      for (int i = 0; i < 3; ++i) world[s][k][i] = p.Rm[i][0] * z[0] + p.Rm[i][1] * z[1] + p.Rm[i][2] * z[2] + p.om[i];
+    };
+    if (!d.mesh) {
+      place(0, d.pts[e]);
+      continue;
+    }
+    const auto &t = d.mesh->triangles()[e];
+    n_world[s] = 3;
+    for (int k = 0; k < 3; ++k) place(k, d.pts[t[k]]);
     const auto &x = d.pts[t[0]], &y = d.pts[t[1]], &z = d.pts[t[2]];
     const double u[3] = {y[0] - x[0], y[1] - x[1], y[2] - x[2]}, v[3] = {z[0] - x[0], z[1] - x[1], z[2] - x[2]};
     const double nb_[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
@@ -160,6 +175,7 @@ bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t
         axes[n_axes][1] = a[2] * b[0] - a[0] * b[2];
         axes[n_axes][2] = a[0] * b[1] - a[1] * b[0];
       }
+  if (reach > 0 && pred::closest_direction(world[0], n_world[0], world[1], n_world[1], axes[n_axes])) ++n_axes;
   for (int k = 0; k < n_axes; ++k) {
     double xl, xh, yl, yh;
     project(axes[k], ba, na, xl, xh);
@@ -328,13 +344,13 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
 }
 
 bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w, double reach,
-                   double delta_lo) {
+                   double delta_lo, size_t tests) {
   if (!A.data->mesh || !B.data->mesh || !A.instant || !B.instant || !(lower >= 0 && lower < 1)) return false;
   const long base = std::lround(std::ldexp(lower, kMax_depth));  // exact: lower is on the grid
   for (int k = kMax_depth; k >= 1; k -= 2) {
     const long i = base + (1L << (kMax_depth - k));
     if (i >= (1L << kMax_depth)) break;
-    size_t budget = kWitness_tests;
+    size_t budget = tests;
     if (touching_at(*A.data, A.instant(kMax_depth, i), *B.data, B.instant(kMax_depth, i), {{0, 0}}, budget, w.a,
                     w.b, reach, delta_lo)) {
       w.found = true;

@@ -98,8 +98,9 @@ double first_uncleared(const Filter_side &A, const Filter_side &B, double reach,
 // the first uncleared piece, where a contact that first_uncleared's midpoints missed
 // most likely overlaps. touching_at from the roots, kWitness_tests node pairs each.
 // reach, delta_lo: as first_uncleared's (0: touching witnesses only).
+// tests: node pairs per instant (kWitness_tests; more where an exact solve follows anyway).
 bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w, double reach = 0,
-                   double delta_lo = 0);
+                   double delta_lo = 0, size_t tests = kWitness_tests);
 
 // Whether some element pair under the node pairs of front (e.g. {{0, 0}}: the roots)
 // certainly shares a point at the instant of the poses pa, pb (enclosures of the exact
