@@ -84,6 +84,28 @@ class DiscreteSpace:
         return self.rspace.state(q, self.si.allocState())
 
 
+class PlainmpSide:
+    """plainmp's own RRTConnect (its sphere model, its box motion validator at a
+    resolution, its C++ loop: tests/bench/plainmp_side.py) on the same wall and shelf."""
+
+    def __init__(self, plan):
+        self.plan, self.counts = plan, {}
+
+
+def plainmp_planners(args, urdf, boxes):
+    """{"plainmp R": PlainmpSide} for R in --resolution, or {} (a line says why)."""
+    if args.no_plainmp:
+        return {}
+    import plainmp_side
+    mods, why = plainmp_side.load()
+    if mods is None:
+        print(f"bench_planning: plainmp skipped ({why})")
+        return {}
+    spec, cst = plainmp_side.panda(mods, urdf, boxes, False)
+    return {f"plainmp {r}": PlainmpSide(plainmp_side.planner(mods, spec, cst, r, args.time))
+            for r in args.resolution}
+
+
 def plan(si, state, start, goal, seconds, simplify):
     from ompl import geometric as og
     ss = og.SimpleSetup(si)
@@ -126,6 +148,9 @@ def main(argv=None):
     ap.add_argument("--spread", type=float, default=0.4, help="query variations (rad)")
     ap.add_argument("--dense", type=float, default=0.002, help="dense sampling step (rad)")
     ap.add_argument("--check-seconds", type=float, default=10.0)
+    ap.add_argument("--callback", action="store_true",
+                    help="also polyccd through Robot.check per OMPL callback (before the lean path)")
+    ap.add_argument("--no-plainmp", action="store_true", help="leave plainmp's planner out")
     ap.add_argument("--json", help="write the runs here")
     ap.add_argument("--plot", help="write a PNG of the table here")
     ap.add_argument("--from-json", help="print and plot the runs of an earlier --json file")
@@ -159,8 +184,13 @@ def main(argv=None):
                    **ex.decide_options(robot))
     rspace = RobotSpace(robot, plates, fixed={"panda_finger_joint1": ex.FINGER}, **options)
     sides = {"polyccd": rspace}
+    if args.callback:  # the same space checking through Robot.check per callback
+        legacy = RobotSpace(robot, plates, fixed={"panda_finger_joint1": ex.FINGER}, **options)
+        legacy._lean = False
+        sides["polyccd callback"] = legacy
     for r in args.resolution:
         sides[f"discrete {r}"] = DiscreteSpace(rspace, fcl_side, r)
+    sides.update(plainmp_planners(args, example_robot_file(PANDA_URDF), boxes))
     rng = random.Random(args.seed)
     qs = queries(robot, rspace, plates, args.queries, rng, args.spread)
     print(f"bench_planning: Panda, wall + shelf (2 mm), {len(qs)} queries x {args.runs} runs, "
@@ -173,11 +203,18 @@ def main(argv=None):
         for run in range(args.runs):
             for method, side in sides.items():
                 before = {k: list(v) for k, v in side.counts.items()}
-                path, solve, total = plan(side.si, side.state, start, goal, args.time, simplify)
+                if isinstance(side, PlainmpSide):  # its own planner and checks, no simplifying
+                    t0 = time.perf_counter()
+                    path = side.plan(start[:7], goal[:7])[0]
+                    solve = total = time.perf_counter() - t0
+                    path = None if path is None else [np.append(q, ex.FINGER) for q in path]
+                else:
+                    path, solve, total = plan(side.si, side.state, start, goal, args.time, simplify)
                 row = dict(query=qi, run=run, method=method, solved=path is not None,
                            solve=solve, total=total)
                 for kind in side.counts:
                     row[f"{kind}s"] = side.counts[kind][0] - before[kind][0]  # checks made
+                    row[f"{kind}_seconds"] = side.counts[kind][2] - before[kind][2]
                 if path is not None:
                     w = rspace.waypoints(path)
                     row["waypoints"] = len(w)
@@ -185,13 +222,13 @@ def main(argv=None):
                     row["polyccd_collides"] = exact.segment is not None
                     row["path"] = [[float(x) for x in q] for q in w]
                     half = rspace.interpolate_path(w, args.dense)
-                    poses = half if method == "polyccd" else linear_path(w, args.dense)
+                    poses = half if method.startswith("polyccd") else linear_path(w, args.dense)
                     row["dense_poses"] = len(poses)
                     row["dense_collides"] = any(fcl_side.pose_collides(q) for q in poses)
                     # the same waypoints joined by polyccd's joint path, sampled likewise:
                     # polyccd's verdict and FCL's on one path
                     row["dense_half_angle_collides"] = (
-                        row["dense_collides"] if method == "polyccd"
+                        row["dense_collides"] if method.startswith("polyccd")
                         else any(fcl_side.pose_collides(q) for q in half))
                 runs.append(row)
                 print(f"  query {qi} run {run} {method:<13} "
@@ -219,18 +256,26 @@ def summarize(runs, args):
         ok = [r for r in mine if r["solved"]]
         solve = [r["solve"] for r in mine]
         total = [r["total"] for r in ok] or [float("nan")]
-        name = "polyccd exact" if method == "polyccd" else f"{method} rad (FCL)"
+        name = {"polyccd": "polyccd exact", "polyccd callback": "polyccd, Robot.check"}.get(
+            method, f"{method} rad ({'plainmp' if method.startswith('plainmp') else 'FCL'})")
         row = dict(method=name, solved=len(ok), plans=len(mine),
                    solve_median=statistics.median(solve), solve_mean=statistics.mean(solve),
                    solve_max=max(solve), total_median=statistics.median(total),
                    polyccd_colliding=sum(r["polyccd_collides"] for r in ok),
                    dense_colliding=sum(r["dense_collides"] for r in ok),
                    dense_half_angle=sum(r.get("dense_half_angle_collides", False) for r in ok))
+        for kind in ("state", "motion"):  # wall us per check, all plans together
+            n = sum(r.get(f"{kind}s", 0) for r in mine)
+            row[f"{kind}_us"] = 1e6 * sum(r.get(f"{kind}_seconds", 0) for r in mine) / n if n else None
         rows.append(row)
         print(f"{name:<22} {len(ok):>3} / {len(mine):<2} {row['solve_median']:11.2f} "
               f"{row['solve_mean']:7.2f} {row['solve_max']:7.2f} {row['total_median']:13.2f} "
               f"{row['polyccd_colliding']:>18} / {len(ok):<3} {row['dense_colliding']:>4} / {len(ok):<3}"
               f"{row['dense_half_angle']:>12} / {len(ok)}")
+    for row in rows:
+        if row.get("state_us"):
+            print(f"{row['method']}: us per check (wall), state {row['state_us']:.0f}"
+                  + (f", motion {row['motion_us']:.0f}" if row.get("motion_us") else ""))
     print("solve: RRTConnect's solve() (s, failed plans included at their budget); "
           "+simplify: solve and the checked simplifiers; colliding paths: returned paths "
           "(of the solved ones) in contact with a plate somewhere along the path executed "
