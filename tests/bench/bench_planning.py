@@ -106,6 +106,25 @@ def plainmp_planners(args, urdf, boxes):
             for r in args.resolution}
 
 
+def callback_cost(lean, legacy, rng, n=300):
+    """CPU us per isValid / checkMotion callback of the lean path and of Robot.check per
+    callback, on the same random states and short edges (0.1 rad a joint), interleaved."""
+    lo, hi = np.array(lean.bounds).T
+    times = {"lean": [0.0, 0.0], "Robot.check": [0.0, 0.0]}
+    for _ in range(n):
+        s0 = np.array([rng.uniform(a, b) for a, b in zip(lo, hi)])
+        s1 = np.clip(s0 + np.array([rng.uniform(-0.1, 0.1) for _ in s0]), lo, hi)
+        a, b = lean.state(s0), lean.state(s1)
+        for name, space in (("lean", lean), ("Robot.check", legacy)):
+            for i, call in enumerate((lambda: space.validity_checker.isValid(a),
+                                      lambda: space.motion_validator.checkMotion(a, b))):
+                t0 = time.process_time()
+                call()
+                times[name][i] += time.process_time() - t0
+    print("callbacks, CPU us each (same states and edges, interleaved): " + ", ".join(
+        f"{k} isValid {1e6 * v[0] / n:.0f} checkMotion {1e6 * v[1] / n:.0f}" for k, v in times.items()))
+
+
 def plan(si, state, start, goal, seconds, simplify):
     from ompl import geometric as og
     ss = og.SimpleSetup(si)
@@ -192,6 +211,8 @@ def main(argv=None):
         sides[f"discrete {r}"] = DiscreteSpace(rspace, fcl_side, r)
     sides.update(plainmp_planners(args, example_robot_file(PANDA_URDF), boxes))
     rng = random.Random(args.seed)
+    if args.callback:
+        callback_cost(rspace, legacy, random.Random(args.seed))
     qs = queries(robot, rspace, plates, args.queries, rng, args.spread)
     print(f"bench_planning: Panda, wall + shelf (2 mm), {len(qs)} queries x {args.runs} runs, "
           f"polyccd {'decide' if options.get('first_contact') is False else 'first-contact'} "
