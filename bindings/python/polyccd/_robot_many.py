@@ -15,13 +15,12 @@ import numpy as np
 from . import _handles as handles
 from . import _limits
 from ._arrays import _float64_array
-from ._errors import InputError, check, error_for
+from ._errors import InputError, check, error_for, last_error
 from ._pccd import ffi, lib
 from ._robot_check import (_handle, _robot_options, _set_allowed, checked_obstacles,
                            free_until, obstacle_arrays, report_bodies)
 from ._scene import _options, _read
 
-_MESSAGE_CAP = 512  # chars kept of a segment's C message (a joint's place and value fit)
 
 
 @dataclass(frozen=True)
@@ -115,6 +114,18 @@ def _joint_limit_errors(robot, ends, noun, errors, joint_limits):
                 f"(joint_limits=\"ignore\" allows it)")
 
 
+def _segment_error(r, a0, a1, k, noun, n_obs, obs, mot, cfg, opt, ropt, status):
+    """The error of failed segment k, "<noun>[k]: <pccd_robot_check's message>": the
+    segment checked alone again (it fails before any exact work, or at the link motion
+    the batch stopped at), so the batch keeps no message buffer of n entries."""
+    rep = handles.new("report")
+    rc = lib.pccd_robot_check(r, ffi.from_buffer("double[]", a0[k]), ffi.from_buffer("double[]", a1[k]),
+                              a0.shape[1], obs, mot, n_obs, cfg, opt, ropt, rep)
+    text = last_error() if rc else f"status {status}"
+    function, sep, rest = text.partition(": ")
+    return error_for(rc or status, f"pccd_robot_check: {noun}[{k}]: {rest if sep else text}")
+
+
 def check_many(robot, q0, q1, obstacles, *, states, self_collision, allowed, time_tolerance,
                threads, min_distance, limits, first_contact, filter, joint_limits, results):
     """The RobotBatch of the segments q0[k] -> q1[k] (states: the poses q0[k], q1 None)."""
@@ -142,14 +153,11 @@ def check_many(robot, q0, q1, obstacles, *, states, self_collision, allowed, tim
     obs, mot, n_obs = obstacle_arrays(obstacles)
     n = a0.shape[0]
     status = np.zeros(n, dtype=np.intc)
-    messages = np.zeros((n, _MESSAGE_CAP), dtype=np.uint8)
     collides = np.zeros(n, dtype=bool)
     lo, hi, free = (np.empty(n, dtype=np.float64) for _ in range(3))
     out = ffi.new("pccd_robot_batch_out *")
     out.struct_size = ffi.sizeof("pccd_robot_batch_out")
     out.status = ffi.from_buffer("int[]", status)
-    out.messages = ffi.from_buffer("char[]", messages)
-    out.message_cap = _MESSAGE_CAP
     out.collides = ffi.from_buffer("unsigned char[]", collides)
     out.lo, out.hi = ffi.from_buffer("double[]", lo), ffi.from_buffer("double[]", hi)
     out.free_until = ffi.from_buffer("double[]", free)
@@ -169,8 +177,8 @@ def check_many(robot, q0, q1, obstacles, *, states, self_collision, allowed, tim
     for k in np.flatnonzero(status != lib.PCCD_OK):
         k = int(k)
         if k not in errors:
-            text = bytes(messages[k]).split(b"\0", 1)[0].decode("utf-8", "replace")
-            errors[k] = error_for(int(status[k]), text)
+            errors[k] = _segment_error(made[0], a0, a1 if not states else a0, k, noun, n_obs,
+                                       obs, mot, cfg, opt, ropt, int(status[k]))
     ok = np.ones(n, dtype=bool)
     if errors:
         bad = np.fromiter(errors, dtype=np.intp, count=len(errors))
