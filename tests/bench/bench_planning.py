@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Benchmark: motion planning of the Franka Panda among thin plates with OMPL's RRTConnect,
-the same planner under two edge checks:
+the same planner under different edge checks, and plainmp's planner:
 
   polyccd   polyccd.ompl.RobotSpace: every state by polyccd's exact static check, every
             edge by Robot.check over polyccd's joint path (the half-angle interpolation);
@@ -9,7 +9,14 @@ the same planner under two edge checks:
   discrete  OMPL's own DiscreteMotionValidator (the SpaceInformation's default) at 0.05 rad:
             states every 0.05 rad of joint-space distance (L2, OMPL's validSegmentCount)
             along OMPL's linear interpolation, each checked by python-fcl (BVHModels of the
-            same link meshes and plates, link poses by Pinocchio: bench_robot.Discrete).
+            same link meshes and plates, link poses by Pinocchio: bench_robot.Discrete);
+  plainmp   (when importable: tests/bench/plainmp_side.py) plainmp 0.3.6's own RRTConnect,
+            its sphere model and box motion validator at each --resolution, its C++ loop;
+  polyccd callback  (--callback) the polyccd space checking through Robot.check per OMPL
+            callback, the path before the lean validators (and a line of CPU us per
+            callback of both on the same states and edges).
+--slot adds a narrow passage (tests/bench/planning_slot.py): two upright plates 8 mm on
+either side of the hand at a goal pose; the first query ends there.
 
 Both plan the 7 arm joints (fingers at 0.02 m) within the URDF limits, robot versus
 plates (no self-collision on either side), then simplify with the same checked
@@ -170,6 +177,8 @@ def main(argv=None):
     ap.add_argument("--callback", action="store_true",
                     help="also polyccd through Robot.check per OMPL callback (before the lean path)")
     ap.add_argument("--no-plainmp", action="store_true", help="leave plainmp's planner out")
+    ap.add_argument("--slot", action="store_true",
+                    help="add a slot 16 mm taller than the hand; the first query ends in it")
     ap.add_argument("--json", help="write the runs here")
     ap.add_argument("--plot", help="write a PNG of the table here")
     ap.add_argument("--from-json", help="print and plot the runs of an earlier --json file")
@@ -198,6 +207,14 @@ def main(argv=None):
     from bench_robot import Discrete
     robot, plates = ex.scene()
     boxes = [("wall",) + ex.WALL, ("shelf",) + ex.SHELF]
+    slot_goal = None
+    if args.slot:  # the narrow passage: a slot around the hand at a goal (planning_slot.py)
+        import planning_slot
+        slot_goal, more, bodies = planning_slot.slot(robot, plates, random.Random(args.seed),
+                                                     ex.plate, ex.GOAL, ex.FINGER)
+        boxes, plates = boxes + more, plates + bodies
+        print(f"slot: {', '.join(f'{n} {np.round(a, 4).tolist()} - {np.round(b, 4).tolist()}' for n, a, b in more)}"
+              f" (8 mm each side of the hand at the first query's goal)")
     fcl_side = Discrete(robot, example_robot_file(PANDA_URDF), boxes)
     options = dict(self_collision=False, limits=P.Limits(max_seconds=args.check_seconds),
                    **ex.decide_options(robot))
@@ -214,6 +231,8 @@ def main(argv=None):
     if args.callback:
         callback_cost(rspace, legacy, random.Random(args.seed))
     qs = queries(robot, rspace, plates, args.queries, rng, args.spread)
+    if slot_goal is not None:  # the slot's query replaces the example's: its start into the slot
+        qs = [(qs[0][0], slot_goal)] + qs[1:]
     print(f"bench_planning: Panda, wall + shelf (2 mm), {len(qs)} queries x {args.runs} runs, "
           f"polyccd {'decide' if options.get('first_contact') is False else 'first-contact'} "
           f"mode, "
