@@ -221,6 +221,7 @@ bench: all $(BUILD)/bench_linear $(BUILD)/bench_min_distance
 	$(VPY) tests/bench/bench_online.py
 	$(VPY) tests/bench/bench_distributed.py
 	$(VPY) tests/bench/bench_robot.py
+	$(VPY) tests/bench/bench_plainmp.py --n 200
 	$(VPY) tests/bench/bench_threads.py
 	$(VPY) tests/bench/bench_ipc_loop.py
 

@@ -992,6 +992,61 @@ PCCD_API int pccd_robot_check(const pccd_robot *r, const double *q0, const doubl
                               const pccd_scene_options *opt, const pccd_robot_options *ropt,
                               pccd_report *rep);
 
+/* Batches of robot checks: many segments (pccd_robot_check_many) or poses
+ * (pccd_robot_check_states) of one robot against the same obstacles in one call.
+ * opt->threads workers share the segments, each segment solved on one thread; entry k
+ * is exactly the answer of pccd_robot_check on segment k (for a pose q, the segment
+ * q -> q). Where pccd_robot_check_many and _states write: caller-owned arrays of
+ * n_segments entries each; a NULL array is not written.
+ *   status[k]    PCCD_OK when segment k was answered, else the status pccd_robot_check
+ *                would return for it (PCCD_EINVAL: a bad joint value; PCCD_ELIMIT: a
+ *                link motion beyond config.max_number_bits). With status NULL the
+ *                first failing segment (lowest k) fails the whole call instead.
+ *   messages     NULL, or n_segments * message_cap chars: segment k's error message at
+ *                messages + k * message_cap, "pccd_robot_check_many: segments[k]: q1[2]
+ *                (elbow): ..." (states: "states[k]: ..."), cut to message_cap - 1 chars
+ *                and NUL-terminated; "" for an answered segment.
+ *   collides[k]  1 when segment k is in contact, else 0 (0 when status[k] != PCCD_OK);
+ *   lo[k], hi[k] the contact time's enclosure rounded outward to doubles (first-contact
+ *                mode: the first contact time; decide mode: the witness's); NaN without
+ *                contact or answer;
+ *   free_until[k] a double <= the segment's certified contact-free prefix
+ *                (pccd_report_free_until); NaN without answer;
+ *   reports      NULL, or n_segments reports (entries may be NULL): reports[k] gets
+ *                segment k's full report (unsolved when status[k] != PCCD_OK). */
+typedef struct pccd_robot_batch_out {
+  size_t struct_size; /* sizeof(pccd_robot_batch_out) */
+  int *status;
+  char *messages;
+  size_t message_cap;
+  unsigned char *collides;
+  double *lo, *hi, *free_until;
+  pccd_report *const *reports;
+} pccd_robot_batch_out;
+
+/* Segment k moves from q0[k * n ...] to q1[k * n ...] (row-major, n = the chain's link
+ * count, values as pccd_robot_check). Everything but the joint values is checked once,
+ * before any segment is solved, as pccd_robot_check (PCCD_EINVAL / PCCD_ELIMIT of the
+ * whole call, nothing written). The work limits (max_seconds, max_work, cancel) bound
+ * the whole batch: reaching one ends the call with PCCD_ELIMIT and no answer is
+ * readable (every status[k] PCCD_ESTATE, every report unsolved). Otherwise the call
+ * returns PCCD_OK with every segment's status (with status NULL: PCCD_OK only when
+ * every segment was answered). n_segments = 0 does nothing. */
+PCCD_API int pccd_robot_check_many(const pccd_robot *r, const double *q0, const double *q1,
+                                   size_t n_segments, size_t n,
+                                   const pccd_body *const *obstacles,
+                                   const pccd_motion *const *motions, size_t n_obstacles,
+                                   const pccd_config *cfg, const pccd_scene_options *opt,
+                                   const pccd_robot_options *ropt, pccd_robot_batch_out *out);
+/* State validity of n_states poses q[k * n ...]: entry k answers whether the robot at
+ * pose k touches an obstacle or itself (the segment q_k -> q_k), as
+ * pccd_robot_check_many ("states[k]" in messages). */
+PCCD_API int pccd_robot_check_states(const pccd_robot *r, const double *q, size_t n_states,
+                                     size_t n, const pccd_body *const *obstacles,
+                                     const pccd_motion *const *motions, size_t n_obstacles,
+                                     const pccd_config *cfg, const pccd_scene_options *opt,
+                                     const pccd_robot_options *ropt, pccd_robot_batch_out *out);
+
 /* Work counters of the last solve (for benchmarks). */
 typedef struct pccd_scene_stats {
   unsigned long long pieces, leaves, candidates, solved, static_tests, refined;

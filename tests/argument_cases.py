@@ -48,6 +48,7 @@ ACCEPTED = {
     "RobotResult": "result record (Robot.check builds it; RobotResult.of is its builder)",
     "RobotContact": "result record",
     "PathResult": "result record",
+    "RobotBatch": "result record (Robot.check_many builds it)",
     "SUPPORTED": "a constant",
     # polyccd.ompl
     "BACKOFF": "a constant",
@@ -104,7 +105,7 @@ def _times(v):
 # Methods that take no argument (nothing to replace).
 NO_ARGUMENTS = {"Mesh.exact_vertices", "Spheres.exact_centers", "Spheres.exact_radii",
                 "Cancel.set", "Cancel.reset", "Robot.adjacent_pairs", "RobotSpace.simple_setup",
-                "RobotResult.of"}  # of: Robot.check's builder of its result, from its own values
+                "RobotResult.of", "RobotBatch.raise_first"}  # of: Robot.check's builder of its result, from its own values
 
 
 @dataclass

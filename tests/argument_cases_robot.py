@@ -1,12 +1,14 @@
 """The public callables of polyccd.robot and polyccd.ompl for the typed-argument
 property tests (argument_cases.py has the conventions and the acceptances): a small
 two-joint arm written here (boxes: no mesh files), and its OMPL space."""
+import functools
+
 import numpy as np
 from hypothesis import strategies as st
 
 import polyccd as P
 from argument_cases import SCENE_OPTIONS, THREADS, Case
-from argument_values import choices
+from argument_values import _point_lists, choices
 from arm_urdf import arm_urdf
 
 ARM = arm_urdf(3)
@@ -14,6 +16,18 @@ SRDF = '<robot name="arm"><disable_collisions link1="base" link2="lower" reason=
 POST = P.Body(P.Mesh.box([0.1, 0.1, 1]), P.Motion.linear([1.5, 0.5, 0], [1.5, 0.5, 0]), name="post")
 Q0, Q1 = [0.0, 0.0], [0.5, 0.3]
 SEGMENT = {"q0": "numbers", "q1": "numbers"}
+ROWS = _point_lists(2)  # not a list of the arm's joint vectors
+
+
+def raising(method):
+    """method, raising its RobotBatch's first per-segment error (named "segments[k]" or
+    "states[k]": where in Q0 / Q1 / Q the bad row is)."""
+    @functools.wraps(method)
+    def call(**kw):
+        out = method(**kw)
+        out.raise_first()
+        return out
+    return call
 
 
 def robot_cases(tmp):
@@ -35,6 +49,16 @@ def robot_cases(tmp):
         Case("Robot.chain_values", robot.chain_values, lambda: {"q": Q0, "place": "q"},
              {"q": "numbers", "place": "str"}),
         Case("Robot.check", robot.check, lambda: {"q0": Q0, "q1": Q1, "obstacles": [POST]}, check_kinds, THREADS),
+        Case("Robot.check_many", raising(robot.check_many),
+             lambda: {"Q0": [Q0, Q1], "Q1": [Q1, Q0], "obstacles": [POST]},
+             {"Q0": ROWS, "Q1": ROWS, **{k: v for k, v in check_kinds.items() if k not in (
+                 "q0", "q1", "all_contacts", "broad_phase")}, "results": "bool"},
+             {**THREADS, **dict.fromkeys(("Q0", "Q1"), ("segments", "Q0, Q1"))}),
+        Case("Robot.check_states", raising(robot.check_states), lambda: {"Q": [Q0, Q1], "obstacles": [POST]},
+             {"Q": ROWS, **{k: v for k, v in check_kinds.items() if k not in (
+                 "q0", "q1", "all_contacts", "broad_phase", "time_tolerance", "first_contact")},
+              "results": "bool"},
+             {**THREADS, "Q": ("states",)}),
         Case("Robot.check_joint_limits", robot.check_joint_limits, lambda: {"q0": Q0, "q1": Q1},
              {**SEGMENT, "joint_limits": choices("error", "ignore")}),
         Case("Robot.check_path", robot.check_path, lambda: {"waypoints": [Q0, Q1, Q0], "obstacles": [POST]},

@@ -13,17 +13,62 @@
 #include "api/guard.h"
 #include "api/handles.h"
 #include "api/motion_handle.h"
+#include "api/robot_handle.h"
 #include "api/scene_handle.h"
 #include "scene/robot.h"
 
 using pccd::api::guard;
 using pccd::api::require;
+using pccd::api::place;
 using pccd::arith::Input_error;
 
-struct pccd_robot {
-  pccd::scene::Robot_model m;
-  std::vector<pccd::api::Biggest_number> biggest;  // of each body
-};
+namespace pccd::api {
+
+void check_value_count(const pccd_robot &r, size_t n) {
+  if (n != r.m.chain.size())
+    throw Input_error("n: " + std::to_string(n) + " joint values given, the chain has " +
+                      std::to_string(r.m.chain.size()) + " links");
+}
+
+Robot_call read_robot_call(const pccd_robot &r, const pccd_body *const *obstacles,
+                           const pccd_motion *const *motions, size_t n_obstacles,
+                           const pccd_config *cfg, const pccd_scene_options *opt,
+                           const pccd_robot_options *ropt) {
+  if (n_obstacles > 0) require(obstacles, "obstacles");
+  Robot_call out;
+  if (ropt) {
+    if (ropt->struct_size != sizeof(pccd_robot_options))
+      throw Input_error("ropt.struct_size: " + std::to_string(ropt->struct_size) +
+                        " is not sizeof(pccd_robot_options) (initialise with pccd_robot_options_init)");
+    if (ropt->self_collision != 0 && ropt->self_collision != 1)
+      throw Input_error("ropt.self_collision: " + std::to_string(ropt->self_collision) + " is not 0 or 1");
+    if (ropt->filter != 0 && ropt->filter != 1)
+      throw Input_error("ropt.filter: " + std::to_string(ropt->filter) + " is not 0 or 1");
+    out.ro.self_collision = ropt->self_collision == 1;
+    out.ro.filter = ropt->filter == 1;
+  }
+  out.call = read_scene_call(cfg, opt, false);
+  const Call_limits &limits = out.call.limits;
+  for (size_t k = 0; k < r.biggest.size(); ++k) limits.check(r.biggest[k], place("bodies", {k}) + ".");
+  for (size_t k = 0; k < n_obstacles; ++k) {
+    const std::string where = place("obstacles", {k});
+    require(obstacles[k], where);
+    const pccd_motion *m = motions ? motions[k] : nullptr;
+    limits.check(biggest_of(obstacles[k], m), where + ".");
+    out.obstacles.push_back(scene_body(obstacles[k], m));
+  }
+  return out;
+}
+
+scene::Robot_options with_link_check(scene::Robot_options ro, const Call_limits &limits) {
+  if (limits.max_number_bits)  // the link motions, built on demand (scene/robot.h)
+    ro.check_link = [&limits](size_t k, const motion::Rigid_motion &m) {
+      limits.check(biggest_in(m), place("links", {k}) + ".motion.");
+    };
+  return ro;
+}
+
+}  // namespace pccd::api
 
 extern "C" {
 
@@ -90,44 +135,16 @@ PCCD_API int pccd_robot_check(const pccd_robot *r, const double *q0, const doubl
     require(r, "r");
     require(rep, "rep");
     rep->solved = false;
-    if (n != r->m.chain.size())
-      throw Input_error("n: " + std::to_string(n) + " joint values given, the chain has " +
-                        std::to_string(r->m.chain.size()) + " links");
+    pccd::api::check_value_count(*r, n);
     if (n > 0) {
       require(q0, "q0");
       require(q1, "q1");
     }
-    if (n_obstacles > 0) require(obstacles, "obstacles");
-    pccd::scene::Robot_options ro;
-    if (ropt) {
-      if (ropt->struct_size != sizeof(pccd_robot_options))
-        throw Input_error("ropt.struct_size: " + std::to_string(ropt->struct_size) +
-                          " is not sizeof(pccd_robot_options) (initialise with pccd_robot_options_init)");
-      if (ropt->self_collision != 0 && ropt->self_collision != 1)
-        throw Input_error("ropt.self_collision: " + std::to_string(ropt->self_collision) + " is not 0 or 1");
-      if (ropt->filter != 0 && ropt->filter != 1)
-        throw Input_error("ropt.filter: " + std::to_string(ropt->filter) + " is not 0 or 1");
-      ro.self_collision = ropt->self_collision == 1;
-      ro.filter = ropt->filter == 1;
-    }
-    const pccd::api::Call_config call = pccd::api::read_scene_call(cfg, opt, false);
-    const pccd::api::Call_limits &limits = call.limits;
-    for (size_t k = 0; k < r->biggest.size(); ++k)
-      limits.check(r->biggest[k], pccd::api::place("bodies", {k}) + ".");
-    std::vector<pccd::scene::Scene_body> obst;
-    for (size_t k = 0; k < n_obstacles; ++k) {
-      const std::string where = pccd::api::place("obstacles", {k});
-      require(obstacles[k], where);
-      const pccd_motion *m = motions ? motions[k] : nullptr;
-      limits.check(pccd::api::biggest_of(obstacles[k], m), where + ".");
-      obst.push_back(pccd::api::scene_body(obstacles[k], m));
-    }
-    if (limits.max_number_bits)  // the link motions, built on demand (scene/robot.h)
-      ro.check_link = [&](size_t k, const pccd::motion::Rigid_motion &m) {
-        limits.check(pccd::api::biggest_in(m), pccd::api::place("links", {k}) + ".motion.");
-      };
-    const pccd::api::Call_budget budget(limits.work);
-    rep->r = pccd::scene::check_robot(r->m, q0, q1, obst, call.scene_options(), ro);
+    const pccd::api::Robot_call rc =
+        pccd::api::read_robot_call(*r, obstacles, motions, n_obstacles, cfg, opt, ropt);
+    const pccd::scene::Robot_options ro = pccd::api::with_link_check(rc.ro, rc.call.limits);
+    const pccd::api::Call_budget budget(rc.call.limits.work);
+    rep->r = pccd::scene::check_robot(r->m, q0, q1, rc.obstacles, rc.call.scene_options(), ro);
     rep->solved = true;
     return PCCD_OK;
   });

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Benchmark: motion planning of the Franka Panda among thin plates with OMPL's RRTConnect,
-the same planner under two edge checks:
+the same planner under different edge checks, and plainmp's planner:
 
   polyccd   polyccd.ompl.RobotSpace: every state by polyccd's exact static check, every
             edge by Robot.check over polyccd's joint path (the half-angle interpolation);
@@ -9,7 +9,14 @@ the same planner under two edge checks:
   discrete  OMPL's own DiscreteMotionValidator (the SpaceInformation's default) at 0.05 rad:
             states every 0.05 rad of joint-space distance (L2, OMPL's validSegmentCount)
             along OMPL's linear interpolation, each checked by python-fcl (BVHModels of the
-            same link meshes and plates, link poses by Pinocchio: bench_robot.Discrete).
+            same link meshes and plates, link poses by Pinocchio: bench_robot.Discrete);
+  plainmp   (when importable: tests/bench/plainmp_side.py) plainmp 0.3.6's own RRTConnect,
+            its sphere model and box motion validator at each --resolution, its C++ loop;
+  polyccd callback  (--callback) the polyccd space checking through Robot.check per OMPL
+            callback, the path before the lean validators (and a line of CPU us per
+            callback of both on the same states and edges).
+--slot adds a narrow passage (tests/bench/planning_slot.py): two upright plates 8 mm on
+either side of the hand at a goal pose; the first query ends there.
 
 Both plan the 7 arm joints (fingers at 0.02 m) within the URDF limits, robot versus
 plates (no self-collision on either side), then simplify with the same checked
@@ -84,6 +91,47 @@ class DiscreteSpace:
         return self.rspace.state(q, self.si.allocState())
 
 
+class PlainmpSide:
+    """plainmp's own RRTConnect (its sphere model, its box motion validator at a
+    resolution, its C++ loop: tests/bench/plainmp_side.py) on the same wall and shelf."""
+
+    def __init__(self, plan):
+        self.plan, self.counts = plan, {}
+
+
+def plainmp_planners(args, urdf, boxes):
+    """{"plainmp R": PlainmpSide} for R in --resolution, or {} (a line says why)."""
+    if args.no_plainmp:
+        return {}
+    import plainmp_side
+    mods, why = plainmp_side.load()
+    if mods is None:
+        print(f"bench_planning: plainmp skipped ({why})")
+        return {}
+    spec, cst = plainmp_side.panda(mods, urdf, boxes, False)
+    return {f"plainmp {r}": PlainmpSide(plainmp_side.planner(mods, spec, cst, r, args.time))
+            for r in args.resolution}
+
+
+def callback_cost(lean, legacy, rng, n=300):
+    """CPU us per isValid / checkMotion callback of the lean path and of Robot.check per
+    callback, on the same random states and short edges (0.1 rad a joint), interleaved."""
+    lo, hi = np.array(lean.bounds).T
+    times = {"lean": [0.0, 0.0], "Robot.check": [0.0, 0.0]}
+    for _ in range(n):
+        s0 = np.array([rng.uniform(a, b) for a, b in zip(lo, hi)])
+        s1 = np.clip(s0 + np.array([rng.uniform(-0.1, 0.1) for _ in s0]), lo, hi)
+        a, b = lean.state(s0), lean.state(s1)
+        for name, space in (("lean", lean), ("Robot.check", legacy)):
+            for i, call in enumerate((lambda: space.validity_checker.isValid(a),
+                                      lambda: space.motion_validator.checkMotion(a, b))):
+                t0 = time.process_time()
+                call()
+                times[name][i] += time.process_time() - t0
+    print("callbacks, CPU us each (same states and edges, interleaved): " + ", ".join(
+        f"{k} isValid {1e6 * v[0] / n:.0f} checkMotion {1e6 * v[1] / n:.0f}" for k, v in times.items()))
+
+
 def plan(si, state, start, goal, seconds, simplify):
     from ompl import geometric as og
     ss = og.SimpleSetup(si)
@@ -126,6 +174,11 @@ def main(argv=None):
     ap.add_argument("--spread", type=float, default=0.4, help="query variations (rad)")
     ap.add_argument("--dense", type=float, default=0.002, help="dense sampling step (rad)")
     ap.add_argument("--check-seconds", type=float, default=10.0)
+    ap.add_argument("--callback", action="store_true",
+                    help="also polyccd through Robot.check per OMPL callback (before the lean path)")
+    ap.add_argument("--no-plainmp", action="store_true", help="leave plainmp's planner out")
+    ap.add_argument("--slot", action="store_true",
+                    help="add a slot 16 mm taller than the hand; the first query ends in it")
     ap.add_argument("--json", help="write the runs here")
     ap.add_argument("--plot", help="write a PNG of the table here")
     ap.add_argument("--from-json", help="print and plot the runs of an earlier --json file")
@@ -154,15 +207,32 @@ def main(argv=None):
     from bench_robot import Discrete
     robot, plates = ex.scene()
     boxes = [("wall",) + ex.WALL, ("shelf",) + ex.SHELF]
+    slot_goal = None
+    if args.slot:  # the narrow passage: a slot around the hand at a goal (planning_slot.py)
+        import planning_slot
+        slot_goal, more, bodies = planning_slot.slot(robot, plates, random.Random(args.seed),
+                                                     ex.plate, ex.GOAL, ex.FINGER)
+        boxes, plates = boxes + more, plates + bodies
+        print(f"slot: {', '.join(f'{n} {np.round(a, 4).tolist()} - {np.round(b, 4).tolist()}' for n, a, b in more)}"
+              f" (8 mm each side of the hand at the first query's goal)")
     fcl_side = Discrete(robot, example_robot_file(PANDA_URDF), boxes)
     options = dict(self_collision=False, limits=P.Limits(max_seconds=args.check_seconds),
                    **ex.decide_options(robot))
     rspace = RobotSpace(robot, plates, fixed={"panda_finger_joint1": ex.FINGER}, **options)
     sides = {"polyccd": rspace}
+    if args.callback:  # the same space checking through Robot.check per callback
+        legacy = RobotSpace(robot, plates, fixed={"panda_finger_joint1": ex.FINGER}, **options)
+        legacy._lean = False
+        sides["polyccd callback"] = legacy
     for r in args.resolution:
         sides[f"discrete {r}"] = DiscreteSpace(rspace, fcl_side, r)
+    sides.update(plainmp_planners(args, example_robot_file(PANDA_URDF), boxes))
     rng = random.Random(args.seed)
+    if args.callback:
+        callback_cost(rspace, legacy, random.Random(args.seed))
     qs = queries(robot, rspace, plates, args.queries, rng, args.spread)
+    if slot_goal is not None:  # the slot's query replaces the example's: its start into the slot
+        qs = [(qs[0][0], slot_goal)] + qs[1:]
     print(f"bench_planning: Panda, wall + shelf (2 mm), {len(qs)} queries x {args.runs} runs, "
           f"polyccd {'decide' if options.get('first_contact') is False else 'first-contact'} "
           f"mode, "
@@ -173,11 +243,18 @@ def main(argv=None):
         for run in range(args.runs):
             for method, side in sides.items():
                 before = {k: list(v) for k, v in side.counts.items()}
-                path, solve, total = plan(side.si, side.state, start, goal, args.time, simplify)
+                if isinstance(side, PlainmpSide):  # its own planner and checks, no simplifying
+                    t0 = time.perf_counter()
+                    path = side.plan(start[:7], goal[:7])[0]
+                    solve = total = time.perf_counter() - t0
+                    path = None if path is None else [np.append(q, ex.FINGER) for q in path]
+                else:
+                    path, solve, total = plan(side.si, side.state, start, goal, args.time, simplify)
                 row = dict(query=qi, run=run, method=method, solved=path is not None,
                            solve=solve, total=total)
                 for kind in side.counts:
                     row[f"{kind}s"] = side.counts[kind][0] - before[kind][0]  # checks made
+                    row[f"{kind}_seconds"] = side.counts[kind][2] - before[kind][2]
                 if path is not None:
                     w = rspace.waypoints(path)
                     row["waypoints"] = len(w)
@@ -185,13 +262,13 @@ def main(argv=None):
                     row["polyccd_collides"] = exact.segment is not None
                     row["path"] = [[float(x) for x in q] for q in w]
                     half = rspace.interpolate_path(w, args.dense)
-                    poses = half if method == "polyccd" else linear_path(w, args.dense)
+                    poses = half if method.startswith("polyccd") else linear_path(w, args.dense)
                     row["dense_poses"] = len(poses)
                     row["dense_collides"] = any(fcl_side.pose_collides(q) for q in poses)
                     # the same waypoints joined by polyccd's joint path, sampled likewise:
                     # polyccd's verdict and FCL's on one path
                     row["dense_half_angle_collides"] = (
-                        row["dense_collides"] if method == "polyccd"
+                        row["dense_collides"] if method.startswith("polyccd")
                         else any(fcl_side.pose_collides(q) for q in half))
                 runs.append(row)
                 print(f"  query {qi} run {run} {method:<13} "
@@ -219,18 +296,26 @@ def summarize(runs, args):
         ok = [r for r in mine if r["solved"]]
         solve = [r["solve"] for r in mine]
         total = [r["total"] for r in ok] or [float("nan")]
-        name = "polyccd exact" if method == "polyccd" else f"{method} rad (FCL)"
+        name = {"polyccd": "polyccd exact", "polyccd callback": "polyccd, Robot.check"}.get(
+            method, f"{method} rad ({'plainmp' if method.startswith('plainmp') else 'FCL'})")
         row = dict(method=name, solved=len(ok), plans=len(mine),
                    solve_median=statistics.median(solve), solve_mean=statistics.mean(solve),
                    solve_max=max(solve), total_median=statistics.median(total),
                    polyccd_colliding=sum(r["polyccd_collides"] for r in ok),
                    dense_colliding=sum(r["dense_collides"] for r in ok),
                    dense_half_angle=sum(r.get("dense_half_angle_collides", False) for r in ok))
+        for kind in ("state", "motion"):  # wall us per check, all plans together
+            n = sum(r.get(f"{kind}s", 0) for r in mine)
+            row[f"{kind}_us"] = 1e6 * sum(r.get(f"{kind}_seconds", 0) for r in mine) / n if n else None
         rows.append(row)
         print(f"{name:<22} {len(ok):>3} / {len(mine):<2} {row['solve_median']:11.2f} "
               f"{row['solve_mean']:7.2f} {row['solve_max']:7.2f} {row['total_median']:13.2f} "
               f"{row['polyccd_colliding']:>18} / {len(ok):<3} {row['dense_colliding']:>4} / {len(ok):<3}"
               f"{row['dense_half_angle']:>12} / {len(ok)}")
+    for row in rows:
+        if row.get("state_us"):
+            print(f"{row['method']}: us per check (wall), state {row['state_us']:.0f}"
+                  + (f", motion {row['motion_us']:.0f}" if row.get("motion_us") else ""))
     print("solve: RRTConnect's solve() (s, failed plans included at their budget); "
           "+simplify: solve and the checked simplifiers; colliding paths: returned paths "
           "(of the solved ones) in contact with a plate somewhere along the path executed "

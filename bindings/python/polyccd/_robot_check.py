@@ -137,10 +137,7 @@ def check_robot(robot, q0, q1, obstacles, *, self_collision, allowed, time_toler
                 all_contacts, threads, broad_phase, min_distance, limits, first_contact,
                 filter):
     """(SceneResult, free_until) of one segment (Robot.check)."""
-    obstacles = _items(obstacles, "obstacles", "an iterable of polyccd.Body")
-    for i, o in enumerate(obstacles):
-        if not isinstance(o, Body):
-            raise InputError(f"obstacles[{i}]: expected a polyccd.Body, got {type(o).__name__}")
+    obstacles = checked_obstacles(obstacles)
     a0 = np.ascontiguousarray(robot.chain_values(q0, "q0"))
     a1 = np.ascontiguousarray(robot.chain_values(q1, "q1"))
     made = _handle(robot)
@@ -148,15 +145,33 @@ def check_robot(robot, q0, q1, obstacles, *, self_collision, allowed, time_toler
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, True, limits,
                                min_distance, first_contact)
     ropt = _robot_options(self_collision, filter)
-    n = len(obstacles)
-    obs = ffi.new("pccd_body *[]", [o.shape._handle for o in obstacles] or [ffi.NULL])
-    mot = ffi.new("pccd_motion *[]", [o.motion._handle if o.motion is not None else ffi.NULL
-                                      for o in obstacles] or [ffi.NULL])
+    obs, mot, n = obstacle_arrays(obstacles)
     rep = _scratch.report
     rc = _limits.run(cfg, lib.pccd_robot_check, made[0], ffi.from_buffer("double[]", a0),
                      ffi.from_buffer("double[]", a1), len(a0), obs, mot, n, cfg, opt, ropt, rep)
     if rc:
         check(rc)  # the chain names the joint: "q1[2] (elbow): ..."
-    bodies = made[1] + [Body(o.shape, o.motion, name=o.name if o.name is not None else f"obstacle{i}")
-                        for i, o in enumerate(obstacles)]
-    return _read(rep, bodies), free_until(rep)
+    return _read(rep, report_bodies(made, obstacles)), free_until(rep)
+
+
+def checked_obstacles(obstacles):
+    """The obstacles as a list of polyccd.Body, or InputError naming the bad one."""
+    obstacles = _items(obstacles, "obstacles", "an iterable of polyccd.Body")
+    for i, o in enumerate(obstacles):
+        if not isinstance(o, Body):
+            raise InputError(f"obstacles[{i}]: expected a polyccd.Body, got {type(o).__name__}")
+    return obstacles
+
+
+def obstacle_arrays(obstacles):
+    """(pccd_body *[], pccd_motion *[], count) of checked obstacles, for the C calls."""
+    obs = ffi.new("pccd_body *[]", [o.shape._handle for o in obstacles] or [ffi.NULL])
+    mot = ffi.new("pccd_motion *[]", [o.motion._handle if o.motion is not None else ffi.NULL
+                                      for o in obstacles] or [ffi.NULL])
+    return obs, mot, len(obstacles)
+
+
+def report_bodies(made, obstacles):
+    """The Bodies a robot report's indices refer to: the robot's, then the obstacles."""
+    return made[1] + [Body(o.shape, o.motion, name=o.name if o.name is not None else f"obstacle{i}")
+                      for i, o in enumerate(obstacles)]

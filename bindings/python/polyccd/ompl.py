@@ -60,6 +60,7 @@ import numpy as np
 from . import _ompl_args as _a
 from ._errors import InputError
 from ._flags import real
+from ._robot_edge import KEYWORDS, EdgeCheck
 from ._solve import _items
 
 # The public names (the generated reference lists each: tests/test_docs.py; the typed
@@ -184,6 +185,8 @@ class RobotSpace:
         self.space = joint_space(self.joints, self.bounds)
         self.si = ob.SpaceInformation(self.space)
         self.errors = []
+        self._edge = None  # the lean check (_valid), made on first use
+        self._lean = True  # False: Robot.check per callback (bench_planning.py compares)
         self.counts = {"state": [0, 0, 0.0], "motion": [0, 0, 0.0]}
         cls = _classes()
         self.validity_checker = cls["StateValidityChecker"](self)
@@ -285,13 +288,33 @@ class RobotSpace:
         count[2] += time.perf_counter() - start
         return r
 
+    def _valid(self, q0, q1):
+        """No contact on q0 -> q1 (an exception: not valid, kept in self.errors), by the
+        lean one-call path (_robot_edge.py: Robot.check's C call and answer, without its
+        result objects) when every check option is one it takes; counted as _checked."""
+        if not self._lean or not KEYWORDS.issuperset(self.check_options):
+            r = self._checked(q0, q1)
+            return r is not None and not r.collides
+        count = self.counts["state" if q0 is q1 else "motion"]
+        start = time.perf_counter()
+        key = (self.check_options, tuple(map(id, self.obstacles)))  # either may be replaced
+        if self._edge is None or self._edge[0][0] is not key[0] or self._edge[0][1] != key[1]:
+            self._edge = (key, EdgeCheck(self.robot, self.obstacles, self.check_options))
+        try:
+            hit = self._edge[1].collides(q0, q1)
+        except Exception as e:  # a check that does not finish never accepts the motion
+            self.errors.append(e)
+            hit = True
+        count[0] += 1
+        count[1] += hit
+        count[2] += time.perf_counter() - start
+        return not hit
+
     def is_valid(self, q):
-        r = self._checked(q, q)
-        return r is not None and not r.collides
+        return self._valid(q, q)
 
     def motion_valid(self, q1, q2):
-        r = self._checked(q1, q2)
-        return r is not None and not r.collides
+        return self._valid(q1, q2)
 
     def last_valid(self, q1, q2):
         """(valid, fraction, joint vector or None) of the motion q1 -> q2: fraction and

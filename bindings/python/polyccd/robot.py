@@ -60,7 +60,7 @@ if TYPE_CHECKING:
     from ._scene import Body
 
 # The public names (the generated reference lists each: tests/test_docs.py).
-__all__ = ["load_urdf", "Robot", "RobotResult", "RobotContact", "PathResult", "SUPPORTED"]
+__all__ = ["load_urdf", "Robot", "RobotResult", "RobotContact", "PathResult", "RobotBatch", "SUPPORTED"]
 
 #: The URDF joint types load_urdf reads (floating and planar joints are refused).
 SUPPORTED = ("fixed", "revolute", "continuous", "prismatic")
@@ -204,6 +204,40 @@ class Robot:
                               broad_phase=broad_phase, min_distance=min_distance,
                               limits=limits, first_contact=first_contact, filter=filter)
         return RobotResult.of(r, self, q0, q1, free)
+
+    def check_many(self, Q0: Any, Q1: Any, obstacles: Iterable[Body] = (), *,
+                   first_contact: bool = False, self_collision: bool = True,
+                   allowed: Optional[Iterable[Tuple[str, str]]] = None,
+                   time_tolerance: Number = "1e-12", threads: int = 1,
+                   min_distance: Optional[Number] = None, limits: Optional[Limits] = None,
+                   filter: bool = True, joint_limits: str = "error", results: bool = False) -> Any:
+        """Many segments Q0[k] -> Q1[k] (arrays of shape (n, len(joints)), or lists of
+        joint vectors) in one C call (pccd_robot_check_many), shared by `threads` workers:
+        entry k is check()'s answer on segment k (decide mode by default; options as
+        check()). limits bound the whole batch (a LimitError ends it). A bad segment (a
+        row of the wrong length, a NaN, a value outside the joint limits) gets its error,
+        naming "segments[k]", in errors[k], and the others their answers. Returns a
+        polyccd.robot.RobotBatch of numpy arrays; results=True adds a RobotResult per segment."""
+        from ._robot_many import check_many
+        return check_many(self, Q0, Q1, obstacles, states=False, first_contact=first_contact,
+                          self_collision=self_collision, allowed=allowed,
+                          time_tolerance=time_tolerance, threads=threads,
+                          min_distance=min_distance, limits=limits, filter=filter,
+                          joint_limits=joint_limits, results=results)
+
+    def check_states(self, Q: Any, obstacles: Iterable[Body] = (), *, self_collision: bool = True,
+                     allowed: Optional[Iterable[Tuple[str, str]]] = None, threads: int = 1,
+                     min_distance: Optional[Number] = None, limits: Optional[Limits] = None,
+                     filter: bool = True, joint_limits: str = "error", results: bool = False) -> Any:
+        """State validity of many poses Q[k] (shape (n, len(joints))) in one C call
+        (pccd_robot_check_states): entry k tells whether the robot at pose k touches an
+        obstacle or itself, as check(Q[k], Q[k]); errors and options as check_many
+        ("states[k]"). Returns a RobotBatch."""
+        from ._robot_many import check_many
+        return check_many(self, Q, None, obstacles, states=True, first_contact=False,
+                          self_collision=self_collision, allowed=allowed, time_tolerance="1e-12",
+                          threads=threads, min_distance=min_distance, limits=limits,
+                          filter=filter, joint_limits=joint_limits, results=results)
 
     def allowed_from_srdf(self, path: Union[str, os.PathLike]) -> Set[FrozenSet[str]]:
         """The link pairs of an SRDF file's disable_collisions elements (frozensets of
@@ -387,3 +421,6 @@ def load_urdf(path: Union[str, os.PathLike], *, geometry: str = "collision",
     if srdf is not None:
         out.srdf_pairs = out.allowed_from_srdf(srdf)
     return out
+
+
+from ._robot_many import RobotBatch  # noqa: E402 (the answers of check_many)
