@@ -1,5 +1,7 @@
 #include "motion/chain.h"
 
+#include "motion/chain_path.h"
+
 #include <climits>
 #include <cmath>
 #include <cstdio>
@@ -144,6 +146,7 @@ size_t Chain::add_link(long parent, int joint, const double *axis, const double 
   if (sgn(L.origin_q[0]) == 0 && sgn(L.origin_q[1]) == 0 && sgn(L.origin_q[2]) == 0 &&
       sgn(L.origin_q[3]) == 0)
     throw arith::Internal_error("the roll-pitch-yaw quaternion rounded to zero");
+  L.doubles = link_doubles(L);
   links_.push_back(L);
   return links_.size() - 1;
 }

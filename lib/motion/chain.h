@@ -36,11 +36,24 @@
 #include <string>
 #include <vector>
 
+#include "arith/interval.h"
 #include "motion/rigid_motion.h"
 
 namespace pccd::motion {
 
 enum class Joint_type { fixed = 0, revolute = 1, continuous = 2, prismatic = 3 };
+
+// A link's constants in doubles for the interval path (motion/chain_path.h), made once
+// by Chain::add_link (link_doubles) rather than on every segment: the joint axis (its
+// exact doubles), |a|^2 enclosed, the origin rotation's ball (midpoints Rm, radius eps:
+// ||R(origin_q) - Rm||_2 <= eps) and the origin translation om (exact doubles).
+struct Link_doubles {
+  double axis[3] = {0, 0, 0};
+  arith::Interval axis2{0.0};
+  double Rm[3][3] = {};
+  double eps = 0;
+  double om[3] = {0, 0, 0};
+};
 
 struct Chain_link {
   long parent = -1;                  // an earlier link, or -1 for the world frame
@@ -50,6 +63,7 @@ struct Chain_link {
   Quat_q origin_q{};                 // exact, from the roll-pitch-yaw doubles
   Vec3_q origin_p{};
   std::string value_place;           // errors name the joint value "q0" + this ("": "[k]")
+  Link_doubles doubles;              // from the fields above (add_link)
 };
 
 // The doubles a joint's exact motion interpolates (taken exactly by segment_motions; the
