@@ -27,7 +27,9 @@ worker threads against the same slices solved serially in this process. Each of
 the machine's load hits both alike; the table gives the medians, the median of the
 rounds' speed-ups (serial / cluster) with their range, and the CPU share: the serial
 run's CPU time over the CPU time of every process of the cluster during its run (1.0:
-the cluster spends nothing beyond the work; 2 workers can reach at most twice it).
+the cluster spends nothing beyond the work; 2 workers can reach at most twice it), and
+the cluster's CPU time outside the tasks' library calls, per task (scheduler, nannies,
+event loops, pickling).
 
 Usage: python tests/bench/bench_distributed.py [--queries N] [--repeat R] [--tasks T]
            [--sweep 0.5,2,8,32,128] [--sweep-tasks 24] [--sweep-repeat 5]
@@ -70,9 +72,14 @@ def nothing(chunk):
 
 
 def solve_slices(chunk, t0, t1):
-    """One answer per (a, b) slice: how many of its queries collide."""
-    return [int(polyccd.solve_linear_many("vertex-face", t0[a:b], t1[a:b]).collides.sum())
-            for a, b in chunk]
+    """One answer per (a, b) slice: (how many of its queries collide, the CPU seconds of
+    this thread in the call)."""
+    out = []
+    for a, b in chunk:
+        start = time.thread_time()
+        hits = int(polyccd.solve_linear_many("vertex-face", t0[a:b], t1[a:b]).collides.sum())
+        out.append((hits, time.thread_time() - start))
+    return out
 
 
 def cluster_cpu():
@@ -98,8 +105,9 @@ def sweep_data(n=400_000):
 
 
 def sweep(client, data, ms_list, tasks, repeat):
-    """[(ms per task, queries per task, serial s, cluster s, speed-ups, CPU shares, same)]
-    for each size: medians of `repeat` rounds of serial then cluster."""
+    """[(ms per task, queries per task, serial s, cluster s, speed-ups, CPU shares, CPU
+    beside the tasks' calls per task, same answers)] for each size: medians of `repeat`
+    rounds of serial then cluster (speed-ups and shares: one per round)."""
     t0, t1, per_query = data
     n = len(t0)
     f0, f1 = client.scatter([t0], broadcast=True)[0], client.scatter([t1], broadcast=True)[0]
@@ -107,21 +115,23 @@ def sweep(client, data, ms_list, tasks, repeat):
     for ms in ms_list:
         m = max(1, min(n, round(ms / 1e3 / per_query)))
         slices = [(a, a + m) for a in ((k * m) % (n - m + 1) for k in range(tasks))]  # may overlap
-        serial, dist, cpu, same = [], [], [], True
+        serial, dist, share, beside, same = [], [], [], [], True
         for _ in range(repeat):
             c0, w0 = time.process_time(), time.perf_counter()
             ref = solve_slices(slices, t0, t1)
             serial.append(time.perf_counter() - w0)
-            c1 = cluster_cpu()
-            cpu.append(time.process_time() - c0)
-            w1 = time.perf_counter()
+            serial_cpu = time.process_time() - c0
+            c1, w1 = cluster_cpu(), time.perf_counter()
             got = list(pd.map_chunks(solve_slices, slices, f0, f1, client=client,
                                      chunk_size=1, progress=False))
             dist.append(time.perf_counter() - w1)
-            cpu[-1] /= max(cluster_cpu() - c1, 1e-9)
-            same = same and got == ref
+            spent = cluster_cpu() - c1
+            share.append(serial_cpu / max(spent, 1e-9))
+            beside.append((spent - sum(cpu for _, cpu in got)) / tasks)
+            same = same and [h for h, _ in got] == [h for h, _ in ref]
         rows.append((ms, m, statistics.median(serial), statistics.median(dist),
-                     [s / d for s, d in zip(serial, dist)], cpu, same))
+                     [s / d for s, d in zip(serial, dist)], share, statistics.median(beside),
+                     same))
     return rows
 
 
@@ -209,17 +219,19 @@ def main(argv=None):
         return 0
     print(f"\nwhere it pays: {args.sweep_tasks} tasks of solve_linear_many slices against "
           f"serial, medians of {args.sweep_repeat} rounds (speed-up: median [min-max]; "
-          f"CPU: serial CPU / the cluster's CPU)")
+          f"CPU: serial CPU / the cluster's CPU; beside: the cluster's CPU outside the "
+          f"tasks' calls, ms per task)")
     labels = list(swept)
     print(f"{'ms/task':>8} {'queries/task':>12} {'serial s':>9}" +
-          "".join(f" {label + ' s':>13} {'speed-up':>20} {'CPU':>5}" for label in labels) +
+          "".join(f" {label + ' s':>13} {'speed-up':>20} {'CPU':>5} {'beside':>6}"
+                  for label in labels) +
           "  answers")
     for i, ms in enumerate(ms_list):
         line, same = "", True
         for label in labels:
-            _, m, s, d, ups, cpu, ok = swept[label][i]
+            _, m, s, d, ups, share, beside, ok = swept[label][i]
             line += (f" {d:13.3f} {statistics.median(ups):6.2f}x [{min(ups):4.2f}-{max(ups):4.2f}]"
-                     f" {statistics.median(cpu):5.2f}")
+                     f" {statistics.median(share):5.2f} {beside * 1e3:6.1f}")
             same = same and ok
         serial_s = statistics.median([swept[label][i][2] for label in labels])
         print(f"{ms:8g} {m:12d} {serial_s:9.3f}{line}  {'identical' if same else 'DIFFERENT'}")
