@@ -290,10 +290,19 @@ def test_a_body_is_sent_and_indexed_once_across_calls(client):
 
 def test_the_embedded_cluster_runs_without_the_dashboard_diagnostics(client):
     """Issue 35: the settings that cut the cost of a task (EMBEDDED_CONFIG) reach the
-    scheduler and every worker of the embedded cluster."""
+    scheduler and every worker process of the embedded cluster (the threads' cluster:
+    tests/test_distributed_threads.py)."""
     import dask
     got = client.run(lambda: (dask.config.get("distributed.worker.profile.enabled"),
                               dask.config.get("distributed.admin.system-monitor.gil.enabled")))
     assert set(got.values()) == {(False, False)}
     assert client.run_on_scheduler(lambda dask_scheduler: dask_scheduler.WORKER_SATURATION) \
         == float("inf")
+    # Fewer wake-ups of the event loops (ms): the loop-health tick, the system monitor,
+    # the worker's memory monitor.
+    woken = client.run(lambda dask_worker: [dask_worker.periodic_callbacks[k].callback_time
+                                            for k in ("tick", "monitor", "memory_monitor")])
+    assert list(woken.values()) == [[1000, 2000, 1000]] * 2
+    assert client.run_on_scheduler(lambda dask_scheduler: [
+        dask_scheduler.periodic_callbacks[k].callback_time for k in ("tick", "monitor")]) \
+        == [1000, 2000]

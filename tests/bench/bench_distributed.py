@@ -16,16 +16,27 @@ both). The overhead per task is the time of map_chunks of a function doing nothi
 over --tasks one-item chunks on 1 worker, divided by --tasks, with the CPU time of all
 the cluster's processes per task beside it (the part a loaded machine cannot hide).
 
+Clusters: 1 and 2 worker processes (each with a nanny) and 2 worker threads in this
+process (cluster(processes=False): no pickling, no copies, no other process).
+
 Where it pays (--sweep): --sweep-tasks tasks of solve_linear_many over a slice of
 random vertex-face steps (the arrays scattered once), each task sized to the given
-milliseconds of serial work (calibrated here first), on 2 workers against the same
-slices solved serially in this process: the speed-up as a function of work per task.
+milliseconds of serial CPU time (calibrated here first), on 2 worker processes and on 2
+worker threads against the same slices solved serially in this process. Each of
+--sweep-repeat rounds times the serial run and then the cluster's, so that a change in
+the machine's load hits both alike; the table gives the medians, the median of the
+rounds' speed-ups (serial / cluster) with their range, and the CPU share: the serial
+run's CPU time over the CPU time of every process of the cluster during its run (1.0:
+the cluster spends nothing beyond the work; 2 workers can reach at most twice it), and
+the cluster's CPU time outside the tasks' library calls, per task (scheduler, nannies,
+event loops, pickling).
 
 Usage: python tests/bench/bench_distributed.py [--queries N] [--repeat R] [--tasks T]
-           [--sweep 0.5,2,8,32,128] [--sweep-tasks 24]
+           [--sweep 0.5,2,8,32,128] [--sweep-tasks 24] [--sweep-repeat 5]
 """
 import argparse
 import os
+import statistics
 import sys
 import time
 from pathlib import Path
@@ -61,9 +72,14 @@ def nothing(chunk):
 
 
 def solve_slices(chunk, t0, t1):
-    """One answer per (a, b) slice: how many of its queries collide."""
-    return [int(polyccd.solve_linear_many("vertex-face", t0[a:b], t1[a:b]).collides.sum())
-            for a, b in chunk]
+    """One answer per (a, b) slice: (how many of its queries collide, the CPU seconds of
+    this thread in the call)."""
+    out = []
+    for a, b in chunk:
+        start = time.thread_time()
+        hits = int(polyccd.solve_linear_many("vertex-face", t0[a:b], t1[a:b]).collides.sum())
+        out.append((hits, time.thread_time() - start))
+    return out
 
 
 def cluster_cpu():
@@ -79,24 +95,45 @@ def cluster_cpu():
     return total
 
 
-def sweep(client, ms_list, tasks, repeat):
-    """[(ms per task, queries per task, serial s, 2 workers s, same)] for each size."""
+def sweep_data(n=400_000):
     rng = np.random.default_rng(5)
-    n = 400_000
     size = 10 ** rng.uniform(-2, 0, (n, 1, 1))
     t0 = rng.uniform(-1, 1, (n, 4, 3)) * size
     t1 = t0 + rng.uniform(-1, 1, (n, 4, 3)) * size * 10 ** rng.uniform(-3, 0, (n, 1, 1))
-    per_query, _ = best(lambda: solve_slices([(0, 50_000)], t0, t1), repeat)
-    per_query /= 50_000
+    # The cost per query from the calls' CPU time (the least of 3), not the wall clock,
+    # which the machine's load inflates: the tasks' sizes then do not depend on it.
+    per_query = min(solve_slices([(0, 50_000)], t0, t1)[0][1] for _ in range(3))
+    return t0, t1, per_query / 50_000
+
+
+def sweep(client, data, ms_list, tasks, repeat):
+    """[(ms per task, queries per task, serial s, cluster s, speed-ups, CPU shares, CPU
+    beside the tasks' calls per task, same answers)] for each size: medians of `repeat`
+    rounds of serial then cluster (speed-ups and shares: one per round)."""
+    t0, t1, per_query = data
+    n = len(t0)
     f0, f1 = client.scatter([t0], broadcast=True)[0], client.scatter([t1], broadcast=True)[0]
     rows = []
     for ms in ms_list:
         m = max(1, min(n, round(ms / 1e3 / per_query)))
         slices = [(a, a + m) for a in ((k * m) % (n - m + 1) for k in range(tasks))]  # may overlap
-        serial, ref = best(lambda: solve_slices(slices, t0, t1), repeat)
-        dist, got = best(lambda: list(pd.map_chunks(solve_slices, slices, f0, f1, client=client,
-                                                    chunk_size=1, progress=False)), repeat)
-        rows.append((ms, m, serial, dist, got == ref))
+        serial, dist, share, beside, same = [], [], [], [], True
+        for _ in range(repeat):
+            c0, w0 = time.process_time(), time.perf_counter()
+            ref = solve_slices(slices, t0, t1)
+            serial.append(time.perf_counter() - w0)
+            serial_cpu = time.process_time() - c0
+            c1, w1 = cluster_cpu(), time.perf_counter()
+            got = list(pd.map_chunks(solve_slices, slices, f0, f1, client=client,
+                                     chunk_size=1, progress=False))
+            dist.append(time.perf_counter() - w1)
+            spent = cluster_cpu() - c1
+            share.append(serial_cpu / max(spent, 1e-9))
+            beside.append((spent - sum(cpu for _, cpu in got)) / tasks)
+            same = same and [h for h, _ in got] == [h for h, _ in ref]
+        rows.append((ms, m, statistics.median(serial), statistics.median(dist),
+                     [s / d for s, d in zip(serial, dist)], share, statistics.median(beside),
+                     same))
     return rows
 
 
@@ -116,6 +153,7 @@ def main(argv=None):
     p.add_argument("--tasks", type=int, default=1000)
     p.add_argument("--sweep", default="0.5,2,8,32,128", help="ms of work per task")
     p.add_argument("--sweep-tasks", type=int, default=24)
+    p.add_argument("--sweep-repeat", type=int, default=5, help="rounds; medians are shown")
     args = p.parse_args(argv)
 
     plate, queries = index_workload(args.queries)
@@ -138,50 +176,67 @@ def main(argv=None):
     }
     print(f"polyccd {polyccd.__version__}, polyccd.apps.distributed on dask "
           f"{pd._distributed.__version__}, {os.cpu_count()} CPUs, load "
-          f"{os.getloadavg()[0]:.2f}; best of {args.repeat}")
+          f"{os.getloadavg()[0]:.2f}; workloads: best of {args.repeat}")
     serial = {name: best(w[1], args.repeat) for name, w in work.items()}
+    ms_list = [float(x) for x in args.sweep.split(",")] if args.sweep else []
+    data = sweep_data() if ms_list else None
+    # (name, workers, processes): the columns of the tables
+    clusters = [("1 process", 1, True), ("2 processes", 2, True), ("2 threads", 2, False)]
     rows = {name: [] for name in work}
-    first_call = {}
-    for workers in (1, 2):
+    first_call, overhead, swept = {}, {}, {}
+    for label, workers, processes in clusters:
         start = time.perf_counter()
-        with pd.cluster(workers=workers) as client:
+        with pd.cluster(workers=workers, processes=processes) as client:
             client.wait_for_workers(workers)
             started = time.perf_counter() - start
             for name, (_, _, dist, key) in work.items():
                 if name == "index":
-                    first_call[workers], _ = best(lambda: dist(client), 1)
+                    first_call[label], _ = best(lambda: dist(client), 1)
                 seconds, answers = best(lambda: dist(client), args.repeat)
                 same = key(answers) == key(serial[name][1])
                 rows[name].append((seconds, same))
-            if workers == 1:
-                cpu = cluster_cpu()
-                overhead, _ = best(lambda: list(pd.map_chunks(
-                    nothing, range(args.tasks), client=client, chunk_size=1,
-                    progress=False)), args.repeat)
-                overhead_cpu = (cluster_cpu() - cpu) / args.repeat
-            else:
-                swept = sweep(client, [float(x) for x in args.sweep.split(",")],
-                              args.sweep_tasks, args.repeat)
-        print(f"LocalCluster of {workers} worker process(es) started in {started:.2f} s")
-    print(f"\n{'workload':10} {'size':>14} {'serial s':>9} {'1 worker s':>11} {'speed-up':>9} "
-          f"{'2 workers s':>12} {'speed-up':>9}  answers")
+            cpu = cluster_cpu()
+            wall, _ = best(lambda: list(pd.map_chunks(
+                nothing, range(args.tasks), client=client, chunk_size=1,
+                progress=False)), args.repeat)
+            overhead[label] = (wall, (cluster_cpu() - cpu) / args.repeat)
+            if workers == 2 and ms_list:
+                swept[label] = sweep(client, data, ms_list, args.sweep_tasks, args.sweep_repeat)
+        print(f"LocalCluster of {label} started in {started:.2f} s")
+    head = "".join(f" {label + ' s':>13} {'speed-up':>9}" for label, *_ in clusters)
+    print(f"\n{'workload':10} {'size':>14} {'serial s':>9}{head}  answers")
     for name, (size, *_rest) in work.items():
         s = serial[name][0]
-        (t1, same1), (t2, same2) = rows[name]
-        print(f"{name:10} {size:>14} {s:9.3f} {t1:11.3f} {s / t1:8.2f}x {t2:12.3f} "
-              f"{s / t2:8.2f}x  {'identical' if same1 and same2 else 'DIFFERENT'}")
-    print(f"index: first call (sends the body, builds its Index on the workers) "
-          f"{first_call[1]:.3f} s on 1 worker, {first_call[2]:.3f} s on 2")
-    print(f"\noverhead per task (1 worker, {args.tasks} one-item tasks doing nothing): "
-          f"{overhead / args.tasks * 1e3:.2f} ms wall, "
-          f"{overhead_cpu / args.tasks * 1e3:.2f} ms CPU of all processes")
-    print(f"\nwhere it pays: {args.sweep_tasks} tasks of solve_linear_many slices, "
-          f"2 workers against serial")
-    print(f"{'ms/task':>8} {'queries/task':>12} {'serial s':>9} {'2 workers s':>12} "
-          f"{'speed-up':>9}  answers")
-    for ms, m, s, d, same in swept:
-        print(f"{ms:8g} {m:12d} {s:9.3f} {d:12.3f} {s / d:8.2f}x  "
-              f"{'identical' if same else 'DIFFERENT'}")
+        cells = "".join(f" {t:13.3f} {s / t:8.2f}x" for t, _ in rows[name])
+        same = all(same for _, same in rows[name])
+        print(f"{name:10} {size:>14} {s:9.3f}{cells}  {'identical' if same else 'DIFFERENT'}")
+    print("index: first call (sends the body, builds its Index on the workers) " +
+          ", ".join(f"{first_call[label]:.3f} s on {label}" for label, *_ in clusters))
+    print(f"\noverhead per task ({args.tasks} one-item tasks doing nothing, best of "
+          f"{args.repeat}): wall / CPU of all the cluster's processes")
+    for label, (wall, cpu) in overhead.items():
+        print(f"  {label:12} {wall / args.tasks * 1e3:6.2f} ms wall, "
+              f"{cpu / args.tasks * 1e3:6.2f} ms CPU")
+    if not ms_list:
+        return 0
+    print(f"\nwhere it pays: {args.sweep_tasks} tasks of solve_linear_many slices against "
+          f"serial, medians of {args.sweep_repeat} rounds (speed-up: median [min-max]; "
+          f"CPU: serial CPU / the cluster's CPU; beside: the cluster's CPU outside the "
+          f"tasks' calls, ms per task)")
+    labels = list(swept)
+    print(f"{'ms/task':>8} {'queries/task':>12} {'serial s':>9}" +
+          "".join(f" {label + ' s':>13} {'speed-up':>20} {'CPU':>5} {'beside':>6}"
+                  for label in labels) +
+          "  answers")
+    for i, ms in enumerate(ms_list):
+        line, same = "", True
+        for label in labels:
+            _, m, s, d, ups, share, beside, ok = swept[label][i]
+            line += (f" {d:13.3f} {statistics.median(ups):6.2f}x [{min(ups):4.2f}-{max(ups):4.2f}]"
+                     f" {statistics.median(share):5.2f} {beside * 1e3:6.1f}")
+            same = same and ok
+        serial_s = statistics.median([swept[label][i][2] for label in labels])
+        print(f"{ms:8g} {m:12d} {serial_s:9.3f}{line}  {'identical' if same else 'DIFFERENT'}")
     return 0
 
 

@@ -61,29 +61,46 @@ LOOPBACK = "127.0.0.1"  # the embedded cluster's only interface (cluster())
 #  - no statistical profiler (a thread sampling every task's stack every 10 ms) and no
 #    GIL-contention sampling (every 1 ms, with gilknocker) on the workers: data for the
 #    dashboard, which the embedded cluster does not show unless asked.
+#  - fewer wake-ups of every event loop while the workers compute: the loop-health tick
+#    (20 ms: it only logs a blocked loop), the system monitor (500 ms: psutil counters
+#    for the dashboard) and the worker's memory monitor (100 ms: spilling and pausing,
+#    which a second still catches before a batch grows far). CPU of an idle 2-worker
+#    cluster per second of wall time (2-core machine, load 3.5; docs/distributed.md):
+#    processes 50-74 ms -> 10-16 ms, threads 24 ms -> 4 ms. That time is taken from
+#    the workers' cores while they compute.
 EMBEDDED_CONFIG = {"distributed.scheduler.worker-saturation": float("inf"),
                    "distributed.worker.profile.enabled": False,
-                   "distributed.admin.system-monitor.gil.enabled": False}
+                   "distributed.admin.system-monitor.gil.enabled": False,
+                   "distributed.admin.tick.interval": "1s",
+                   "distributed.admin.system-monitor.interval": "2s",
+                   "distributed.worker.memory.monitor-interval": "1s"}
 
 
 @contextmanager
-def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1, dashboard=False):
+def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1, dashboard=False,
+            processes=True):
     """A dask.distributed Client for the maps, closed on exit when made here.
 
     client: used as it is (not closed). scheduler: the address of a running scheduler
     ("tcp://host:8786"); workers then means: wait until that many workers are
-    connected. Neither: an embedded LocalCluster of `workers` worker processes (default
-    os.cpu_count()), each with a nanny and threads_per_worker threads. Its scheduler,
-    workers and nannies listen on 127.0.0.1 only (dask's dashboard and endpoints take
-    no authentication: issue 23 found the dashboard on 0.0.0.0), and it has no
-    dashboard unless dashboard=True (then on 127.0.0.1, a free port). Without a
-    dashboard it runs with EMBEDDED_CONFIG (a lower cost per task)."""
+    connected. Neither: an embedded LocalCluster of `workers` workers (default
+    os.cpu_count()) with threads_per_worker threads each: worker processes, each with a
+    nanny, or with processes=False worker threads in this process (no pickling, no
+    copies, no processes beside this one: the choice for work inside the library,
+    which releases the GIL, docs/distributed.md). Processes listen on 127.0.0.1 only
+    (dask's dashboard and endpoints take no authentication: issue 23 found the
+    dashboard on 0.0.0.0); threads talk in memory (inproc://) and listen on nothing
+    but the HTTP server, on 127.0.0.1. No dashboard unless dashboard=True (then on
+    127.0.0.1, a free port); without one the cluster runs with EMBEDDED_CONFIG (a
+    lower cost per task)."""
     if client is not None:
         yield client
         return
     if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
                                 or workers < 1):
         raise InputError(f"workers: expected an integer >= 1, got {workers!r}")
+    if not isinstance(processes, bool):
+        raise InputError(f"processes: expected True or False, got {processes!r}")
     if scheduler is not None:
         with _distributed.Client(scheduler) as c:
             if workers:
@@ -91,18 +108,22 @@ def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1, 
             yield c
         return
     n = workers or os.cpu_count() or 1
-    # The scheduler reads its settings when it is made; each nanny hands its worker
-    # (the first, and one restarted after a crash) the config it was given.
+    # The scheduler and the workers read these settings when they are made (the
+    # threads here, in LocalCluster()); each nanny hands its worker (the first, and one
+    # restarted after a crash) the config it was given.
     quiet = {} if dashboard else EMBEDDED_CONFIG
+    # processes: tcp:// on loopback, a nanny per worker (config: see above); threads:
+    # inproc:// (no address to bind), Worker objects that take no config argument.
+    where = {"host": LOOPBACK, "config": quiet} if processes else {}
     with _dask_config.set(quiet):
         local = _distributed.LocalCluster(n_workers=n, threads_per_worker=threads_per_worker,
-                                          processes=True, host=LOOPBACK,
+                                          processes=processes,
                                           # the scheduler's HTTP server (health, and the
                                           # dashboard when asked) on loopback, a free port
                                           dashboard_address=f"{LOOPBACK}:0",
                                           scheduler_kwargs={"dashboard": bool(dashboard)},
                                           worker_dashboard_address=None,
-                                          silence_logs=40, config=quiet)
+                                          silence_logs=40, **where)
     with local, _distributed.Client(local) as c:
         yield c
 
