@@ -922,9 +922,10 @@ PCCD_API int pccd_index_query_many(const pccd_index *ix, const pccd_body *const 
 /* A certified contact-free prefix of a solved report: no checked pair touches at any
  * t < free_until (as text, like pccd_report_time; buf NULL with cap 0: only *needed and
  * *below), and *below (when not NULL) a double <= free_until. Without a contact free_until is 1 (then nothing touches on [0, 1]).
- * First-contact mode: the first contact's lo. Decide mode (cfg->want_time = 0): the
- * certified lower bound of the pair that stopped the solve (a robot check's filter
- * bound, pccd_robot_check; 0 for a scene). For a planner's last valid state (OMPL's
+ * First-contact mode: the first contact's lo. Decide mode (cfg->want_time = 0): a
+ * certified lower bound from the pairs looked at before the solve stopped (a robot
+ * check's filter bounds, pccd_robot_check; 0 for a scene, and 0 for a robot check whose
+ * first witness scan found a contact: decide mode spends nothing on the prefix then). For a planner's last valid state (OMPL's
  * checkMotion(s1, s2, lastValid)): every state at t < free_until is contact-free. */
 PCCD_API int pccd_report_free_until(const pccd_report *rep, char *buf, size_t cap, size_t *needed,
                                     double *below);
