@@ -45,6 +45,22 @@ void de_casteljau_halves(const std::vector<NT> &b, std::vector<NT> &left, std::v
 // b times the least common multiple of its denominators (a positive factor), as integers.
 std::vector<arith::Integer> integer_multiple(const std::vector<Rational> &b);
 
+// The Bernstein coefficients of p on [0, 1] (degree deg p; the zero polynomial: {0}),
+// times one positive factor, as integers: integer_multiple(bernstein_coefficients(p, 0,
+// 1)) up to a positive factor, without a fraction on the way. With L the lcm of p's
+// denominators and M the lcm of the C(n, i): w_i = L p_i M / C(n, i) (integers), then
+// b_k = sum_{i <= k} C(k, i) w_i by n passes of pairwise sums (bernstein.h's closed
+// form times L M). Only for readers of signs within the vector (the counter's tests).
+std::vector<arith::Integer> bernstein_integer(const Poly<Rational> &p);
+
+// certain_sign_on(p, 0, 1) (bernstein.h) read from bernstein_integer(p): +1 when p > 0 on
+// all of [0, 1], -1 when p <= 0 on all of it (the zero polynomial included), else 0.
+inline int certain_sign_on_integers(const Poly<Rational> &p) {
+  if (p.c.empty()) return -1;
+  const std::vector<arith::Integer> b = bernstein_integer(p);
+  return all_positive(b) ? 1 : all_nonpositive(b) ? -1 : 0;
+}
+
 // The same halves as de_casteljau_halves, each half times its own positive factor, on
 // integers: no rational halving, no gcd per step (w[i] + w[i + 1] instead of their mean,
 // each entry shifted to the common factor 2^(n-1), then the power of two common to the

@@ -6,7 +6,9 @@
 // keeps), be integers, and have no power of two common to all its entries left. Inputs:
 // random rationals of mixed signs, sizes 1 to 8, with zeros, big and tiny magnitudes,
 // and a case whose midpoint value is exactly 0. Then the counter itself: exact root
-// counts of products of distinct linear factors with known roots.
+// counts of products of distinct linear factors with known roots. And
+// poly::bernstein_integer, the counter's integer Bernstein vectors, against
+// bernstein_coefficients: one positive factor for the whole vector.
 // Prints "N passed, N failed".
 #include <algorithm>
 #include <cstdio>
@@ -88,6 +90,30 @@ int main() {
       x.canonicalize();
     }
     check(b, "random #" + std::to_string(k));
+  }
+  // bernstein_integer(p): a positive multiple of bernstein_coefficients(p, 0, 1), as
+  // integers; the sign test built on it agrees with certain_sign_on.
+  for (int k = 0; k < 2000; ++k) {
+    std::vector<Rational> c(size(rng));
+    for (Rational &x : c) {
+      x = Rational(num(rng), k % 2 ? den(rng) : 1);
+      if (k % 3 == 0) mpq_mul_2exp(x.get_mpq_t(), x.get_mpq_t(), shift(rng));
+      if (k % 5 == 0 && rng() % 2) x = 0;
+      x.canonicalize();
+    }
+    const Poly<Rational> p(c);
+    const std::vector<Rational> ref = pccd::poly::bernstein_coefficients(p, Rational(0), Rational(1));
+    std::vector<Integer> z = pccd::poly::bernstein_integer(p);
+    Rational c0 = 0;  // the factor; positive_multiple above also wants no common 2
+    for (size_t i = 0; i < ref.size() && i < z.size(); ++i)
+      if (sgn(ref[i]) != 0 && sgn(c0) == 0) c0 = Rational(z[i]) / ref[i];
+    bool ok = z.size() == ref.size() && sgn(c0) >= 0;
+    for (size_t i = 0; ok && i < ref.size(); ++i) ok = Rational(z[i]) == c0 * ref[i];
+    ok = ok && (sgn(c0) > 0 || std::all_of(ref.begin(), ref.end(), [](const Rational &x) { return sgn(x) == 0; }));
+    expect(ok, "bernstein_integer of " + show(p.c));
+    expect(pccd::poly::certain_sign_on_integers(p) ==
+               pccd::poly::certain_sign_on(p, Rational(0), Rational(1)),
+           "certain_sign_on_integers of " + show(p.c));
   }
   check({Rational(0)}, "one zero");
   check({Rational(-3, 7)}, "one entry");
