@@ -108,13 +108,31 @@ class Subdivision_counter {
   }
 
  private:
-  // Sign variations with certain signs and nonzero ends; -1 otherwise.
+  // The sign of x when certain (always, for exact types). Intervals: arith::sign
+  // without its throw, so that an undecided piece fails the count by return values:
+  // unwinding the recursion's frames cost more than the counting itself.
+  static bool certain_sign(const NT &x, int &s) {
+    if constexpr (std::is_same_v<NT, arith::Interval>) {
+      if (x.lo > 0) s = 1;
+      else if (x.hi < 0) s = -1;
+      else if (x.is_point_zero()) s = 0;
+      else return false;
+    } else {
+      s = arith::sign(x);
+    }
+    return true;
+  }
+
+  // Sign variations with certain signs and nonzero ends; -1 when an end is zero or
+  // uncertain, kUncertain when another entry's sign is (the count fails).
+  static constexpr int kUncertain = -2;
   static int variations(const std::vector<NT> &b) {
     if (!(arith::certainly_positive(b.front()) || arith::certainly_negative(b.front()))) return -1;
     if (!(arith::certainly_positive(b.back()) || arith::certainly_negative(b.back()))) return -1;
     int v = 0, last = 0;
     for (const NT &x : b) {
-      int s = arith::sign(x);  // may throw Uncertain: caught in count()
+      int s;
+      if (!certain_sign(x, s)) return kUncertain;
       if (s == 0) continue;
       if (last != 0 && s != last) ++v;
       last = s;
@@ -134,14 +152,19 @@ class Subdivision_counter {
       }
     }
     const int v = variations(fb);
+    if (v == kUncertain) return false;
     if (v == 0) return true;
     if (v == 1) {
       if (left_g.empty()) {
         ++count;
         return true;
       }
-      for (const auto &h : left_h)
-        if (h.size() >= 2 && arith::sign(h.front()) * arith::sign(h.back()) < 0) return true;
+      for (const auto &h : left_h) {
+        int s0, s1;
+        if (h.size() < 2) continue;
+        if (!certain_sign(h.front(), s0) || !certain_sign(h.back(), s1)) return false;
+        if (s0 * s1 < 0) return true;
+      }
     }
     if (--budget_ < 0) return false;
     std::vector<NT> fl, fr;
@@ -153,9 +176,15 @@ class Subdivision_counter {
       if (!left_h[i].empty()) halves_for_signs(std::move(left_h[i]), hl[i], hr[i]);
     }
     // The midpoint: F(1/2) = fl.back(), G_i(1/2) = gl[i].back() (up to positive factors).
-    if (arith::sign(fl.back()) == 0) {
+    int sm;
+    if (!certain_sign(fl.back(), sm)) return false;
+    if (sm == 0) {
       bool ok = true;
-      for (const auto &g : gl) ok = ok && arith::sign(g.back()) > 0;
+      for (size_t i = 0; i < gl.size() && ok; ++i) {
+        int sg;
+        if (!certain_sign(gl[i].back(), sg)) return false;
+        ok = sg > 0;
+      }
       if (ok) ++count;
     }
     return run(std::move(fl), std::move(gl), std::move(hl), count) &&
