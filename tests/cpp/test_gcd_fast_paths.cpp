@@ -6,7 +6,7 @@
 // - poly::divide_out_positive: f = w^k g with g not divisible by w gives a positive
 //   multiple of g; a w that does not divide f leaves f's multiple;
 // - the integer product (poly/rational_product.cpp) against the schoolbook loop in
-//   rationals written here.
+//   rationals written here, for rational and for integer coefficients.
 // Prints "N passed, N failed".
 #include <cstdio>
 #include <random>
@@ -114,6 +114,23 @@ int main() {
            "divide_out_positive(a, w) ~ a, round " + std::to_string(round));
     expect(monic(pccd::poly::divide_out_positive(f, w)).c == monic(a).c,
            "monic quotient, round " + std::to_string(round));
+  }
+  // Integer products (the direct convolution): integer coefficients of up to 320 bits,
+  // zeros among them, against the schoolbook loop; also mixed with a rational factor.
+  for (int round = 0; round < 500; ++round) {
+    auto integer_poly = [&](size_t n) {
+      std::vector<Rational> c(n);
+      for (Rational &x : c) {
+        x = Rational(long(rng() % 2001) - 1000);
+        mpq_mul_2exp(x.get_mpq_t(), x.get_mpq_t(), rng() % 320);
+        if (rng() % 5 == 0) x = 0;
+      }
+      return Poly<Rational>(c);
+    };
+    const Poly<Rational> a = integer_poly(1 + rng() % 7), b = integer_poly(1 + rng() % 7);
+    expect((a * b).c == schoolbook(a, b).c, "integer a * b, round " + std::to_string(round));
+    const Poly<Rational> q = product_of_roots({rational(8)}, Rational(1, 3));
+    expect((a * q).c == schoolbook(a, q).c, "integer a * rational q, round " + std::to_string(round));
   }
   std::printf("%ld passed, %ld failed\n", passed, failed);
   return failed == 0 ? 0 : 1;
