@@ -138,6 +138,12 @@ void eval_common(const Poly<Rational> *const *ps, size_t count, const Rational &
 // fraction at every product and sum, and those gcds dominated the motion layer's work.
 template <>
 Poly<Rational> operator*(const Poly<Rational> &a, const Poly<Rational> &b);
+// Sums and differences of integer polynomials on the numerators alone (the same values;
+// rational_product.cpp); other rationals by the generic loop.
+template <>
+Poly<Rational> operator+(const Poly<Rational> &a, const Poly<Rational> &b);
+template <>
+Poly<Rational> operator-(const Poly<Rational> &a, const Poly<Rational> &b);
 
 template <class NT>
 Poly<NT> operator*(const NT &s, const Poly<NT> &a) {

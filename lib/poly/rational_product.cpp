@@ -9,6 +9,8 @@
 //
 // Both count their work by cost (util::work_cost: a row of the convolution, a Horner
 // step, a reduction), so a limit is checked between any two of them whatever the sizes.
+#include <algorithm>
+
 #include "poly/lowest_terms.h"
 #include "poly/poly.h"
 
@@ -60,7 +62,48 @@ Poly<Rational> integer_product(const Poly<Rational> &a, const Poly<Rational> &b)
   return Poly<Rational>(std::move(r));
 }
 
+// a + sign b for integer a and b, sign = +1 or -1.
+Poly<Rational> integer_sum(const Poly<Rational> &a, const Poly<Rational> &b, int sign) {
+  std::vector<Rational> r(std::max(a.c.size(), b.c.size()));  // each 0 / 1
+  for (size_t i = 0; i < r.size(); ++i) {
+    const mpz_ptr ri = mpq_numref(r[i].get_mpq_t());
+    const bool in_a = i < a.c.size(), in_b = i < b.c.size();
+    if (in_a && in_b) {
+      op_cost(a.c[i], b.c[i]);
+      (sign > 0 ? mpz_add : mpz_sub)(ri, mpq_numref(a.c[i].get_mpq_t()), mpq_numref(b.c[i].get_mpq_t()));
+    } else if (in_a) {
+      mpz_set(ri, mpq_numref(a.c[i].get_mpq_t()));
+    } else if (sign > 0) {
+      mpz_set(ri, mpq_numref(b.c[i].get_mpq_t()));
+    } else {
+      mpz_neg(ri, mpq_numref(b.c[i].get_mpq_t()));
+    }
+  }
+  return Poly<Rational>(std::move(r));
+}
+
+// The generic loop of poly.h for rationals that are not all integers.
+Poly<Rational> rational_sum(const Poly<Rational> &a, const Poly<Rational> &b, int sign) {
+  std::vector<Rational> r(std::max(a.c.size(), b.c.size()), Rational(0));
+  for (size_t i = 0; i < a.c.size(); ++i) r[i] = a.c[i];
+  for (size_t i = 0; i < b.c.size(); ++i) {
+    op_cost(r[i], b.c[i]);
+    if (sign > 0) r[i] += b.c[i]; else r[i] -= b.c[i];
+  }
+  return Poly<Rational>(std::move(r));
+}
+
 }  // namespace
+
+template <>
+Poly<Rational> operator+(const Poly<Rational> &a, const Poly<Rational> &b) {
+  return integral(a) && integral(b) ? integer_sum(a, b, 1) : rational_sum(a, b, 1);
+}
+
+template <>
+Poly<Rational> operator-(const Poly<Rational> &a, const Poly<Rational> &b) {
+  return integral(a) && integral(b) ? integer_sum(a, b, -1) : rational_sum(a, b, -1);
+}
 
 template <>
 Poly<Rational> operator*(const Poly<Rational> &a, const Poly<Rational> &b) {
