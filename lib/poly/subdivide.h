@@ -28,15 +28,24 @@
 
 namespace pccd::poly {
 
+// x / 2. Intervals: both ends halved exactly when no bit is lost (doubling gives them
+// back; any rounding mode), which is what x * [1/2, 1/2] encloses, without its outward
+// rounding by an ulp; otherwise (subnormal ends, NaN) that product.
+inline Rational half_of(const Rational &x) { return x / 2; }
+inline arith::Interval half_of(const arith::Interval &x) {
+  const double l = x.lo * 0.5, h = x.hi * 0.5;
+  if (l * 2 == x.lo && h * 2 == x.hi) return arith::Interval(l, h);
+  return x * arith::Interval(0.5);
+}
+
 template <class NT>
 void de_casteljau_halves(const std::vector<NT> &b, std::vector<NT> &left, std::vector<NT> &right) {
   const size_t n = b.size();
   std::vector<NT> w = b;
   left.assign(n, w[0]);
   right.assign(n, w[n - 1]);
-  const NT half = arith::from_rational<NT>(Rational(1, 2));
   for (size_t r = 1; r < n; ++r) {
-    for (size_t i = 0; i + r < n; ++i) w[i] = (w[i] + w[i + 1]) * half;
+    for (size_t i = 0; i + r < n; ++i) w[i] = half_of(w[i] + w[i + 1]);
     left[r] = w[0];
     right[n - 1 - r] = w[n - 1 - r];
   }

@@ -8,9 +8,12 @@
 // and a case whose midpoint value is exactly 0. Then the counter itself: exact root
 // counts of products of distinct linear factors with known roots. And
 // poly::bernstein_integer, the counter's integer Bernstein vectors, against
-// bernstein_coefficients: one positive factor for the whole vector.
+// bernstein_coefficients: one positive factor for the whole vector. And the interval
+// halving (poly::half_of) against exact rational halves, in every rounding mode.
 // Prints "N passed, N failed".
 #include <algorithm>
+#include <cfenv>
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -20,6 +23,7 @@
 #include "poly/subdivide.h"
 
 using pccd::arith::Integer;
+using pccd::arith::Interval;
 using pccd::arith::Rational;
 using pccd::poly::Poly;
 
@@ -115,6 +119,41 @@ int main() {
                pccd::poly::certain_sign_on(p, Rational(0), Rational(1)),
            "certain_sign_on_integers of " + show(p.c));
   }
+  // Interval halving (half_of, de_casteljau_halves on intervals) under every rounding
+  // mode: each half's entries enclose the rational halves of the doubles (exact
+  // oracle), and an interval whose ends halve without loss halves to exactly them.
+  const int modes[4] = {FE_TONEAREST, FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO};
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> expo(-1080, 60);
+  auto encloses = [](const Interval &x, const Rational &v) {
+    return Rational(x.lo) <= v && v <= Rational(x.hi);
+  };
+  for (int mode : modes) {
+    std::fesetround(mode);
+    for (int k = 0; k < 500; ++k) {
+      std::vector<Rational> b(size(rng));
+      std::vector<Interval> bi(b.size());
+      for (size_t i = 0; i < b.size(); ++i) {
+        const double x = std::ldexp(unit(rng), k % 4 == 0 ? expo(rng) : int(rng() % 40) - 20);
+        bi[i] = Interval(x);
+        b[i] = Rational(x);
+      }
+      std::vector<Rational> l, r;
+      std::vector<Interval> li, ri;
+      pccd::poly::de_casteljau_halves(b, l, r);
+      pccd::poly::de_casteljau_halves(bi, li, ri);
+      bool ok = li.size() == l.size() && ri.size() == r.size();
+      for (size_t i = 0; ok && i < l.size(); ++i) ok = encloses(li[i], l[i]) && encloses(ri[i], r[i]);
+      expect(ok, "interval halves enclose the rational ones, mode " + std::to_string(mode));
+      const double lo = std::ldexp(unit(rng), expo(rng)), hi = lo + std::fabs(std::ldexp(unit(rng), expo(rng)));
+      const Interval h = pccd::poly::half_of(Interval(lo, hi));
+      const bool lossless = std::ldexp(lo, -1) * 2 == lo && std::ldexp(hi, -1) * 2 == hi;
+      expect(encloses(h, Rational(lo) / 2) && encloses(h, Rational(hi) / 2) &&
+                 (!lossless || (h.lo == std::ldexp(lo, -1) && h.hi == std::ldexp(hi, -1))),
+             "half_of [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    }
+  }
+  std::fesetround(FE_TONEAREST);
   check({Rational(0)}, "one zero");
   check({Rational(-3, 7)}, "one entry");
   check(product_bernstein({Rational(1, 2), Rational(1, 3), Rational(5, 4)}), "midpoint root");
