@@ -177,6 +177,10 @@ Poly<NT> rem(Poly<NT> a, const Poly<NT> &b) {
 // p(a + (b - a) s) as a polynomial of s (Taylor shift then scaling).
 template <class NT>
 Poly<NT> reparametrize(const Poly<NT> &p, const NT &a, const NT &b) {
+  // [0, 1] itself, exactly: p unchanged (the loops below would compute the same values).
+  // Intervals take the loops, whose enclosures are what their callers were tuned on.
+  if constexpr (std::is_same_v<NT, Rational>)
+    if (sgn(a) == 0 && b == 1) return p;
   std::vector<NT> q = p.c;
   const size_t n = q.size();
   // Taylor shift by a: q(t + a), by repeated synthetic division (Horner scheme).
