@@ -66,12 +66,28 @@ long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT
   const NT zero = arith::from_int<NT>(0), one = arith::from_int<NT>(1);
   Poly<NT> F = reparametrize(f, a, b);
   if constexpr (exact) F = primitive_monic_sign(F);  // same roots, integers, lc > 0
-  if (filters && certainly_no_root(F, zero, one)) return 0;
+  // The exact path reads the same signs from integer multiples of the Bernstein
+  // vectors (subdivide.h: bernstein_integer), the same decisions without fractions.
+  if (filters) {
+    bool none;
+    if constexpr (exact) {
+      const std::vector<arith::Integer> fb = bernstein_integer(F);
+      none = F.degree() >= 0 && (all_positive(fb) || all_negative(fb));
+    } else {
+      none = certainly_no_root(F, zero, one);
+    }
+    if (none) return 0;
+  }
   std::vector<Poly<NT>> active;
   for (const Poly<NT> &g : conds) {
     Poly<NT> G = reparametrize(g, a, b);
-    if constexpr (exact) G = primitive_positive(G);  // same signs, integers
-    int s = filters ? certain_sign_on(G, zero, one) : 0;
+    int s = 0;
+    if constexpr (exact) {
+      G = primitive_positive(G);  // same signs, integers
+      if (filters) s = certain_sign_on_integers(G);
+    } else if (filters) {
+      s = certain_sign_on(G, zero, one);
+    }
     if (s < 0) return 0;  // g <= 0 on all of [a, b]
     if (s == 0) active.push_back(std::move(G));
   }
@@ -82,31 +98,30 @@ long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT
   while (Fo.degree() >= 1 && Poly<NT>::exact_zero(Fo.eval(one))) Fo = deflate_at_one(Fo);
   if (Fo.degree() < 1) return 0;
   if (filters) {
-    std::vector<std::vector<NT>> gbs, hbs;
-    int budget = kSubdivisionBudget;
-    Poly<NT> Fs = Fo;  // the polynomial subdivided: same distinct roots in (0, 1)
+    long n = 0;
     if constexpr (exact) {
       // The square-free part has the same distinct roots, all simple, so every piece
       // resolves (a double root never shows one sign variation). Only the signs at its
       // roots matter: reduce each condition modulo it (a positive multiple of the
       // remainder), and give the subdivision the common factors gcd(Fs, G_i) to
-      // recognise a condition vanishing at a root.
-      Fs = squarefree_primitive(Fo);
+      // recognise a condition vanishing at a root. The counter runs on integers.
+      const Poly<NT> Fs = squarefree_primitive(Fo);  // same distinct roots in (0, 1)
+      std::vector<std::vector<arith::Integer>> gz, hz;
       for (const Poly<NT> &g : active) {
         Poly<NT> r = prem_positive(g, Fs);  // deg Fs >= 1: Fo has degree >= 1 here
         if (r.c.empty()) return 0;  // g vanishes at every root of F in (0, 1)
-        gbs.push_back(bernstein_coefficients(r, zero, one));
+        gz.push_back(bernstein_integer(r));
         Poly<NT> h = gcd(Fs, r);
-        hbs.push_back(h.degree() >= 1 ? bernstein_coefficients(h, zero, one) : std::vector<NT>{});
+        hz.push_back(h.degree() >= 1 ? bernstein_integer(h) : std::vector<arith::Integer>{});
       }
-      budget = kExactSubdivisionBudget;
+      Subdivision_counter<arith::Integer> sub(kExactSubdivisionBudget);
+      if (sub.count(bernstein_integer(Fs), std::move(gz), n, std::move(hz))) return n;
     } else {
+      std::vector<std::vector<NT>> gbs;
       for (const Poly<NT> &g : active) gbs.push_back(bernstein_coefficients(g, zero, one));
+      Subdivision_counter<NT> sub(kSubdivisionBudget);
+      if (sub.count(bernstein_coefficients(Fo, zero, one), std::move(gbs), n)) return n;
     }
-    long n = 0;
-    Subdivision_counter<NT> sub(budget);
-    if (sub.count(bernstein_coefficients(Fs, zero, one), std::move(gbs), n, std::move(hbs)))
-      return n;
   }
   // g_0 = s (1 - s)
   active.insert(active.begin(), Poly<NT>(std::vector<NT>{zero, one, -one}));

@@ -6,6 +6,22 @@ namespace pccd::poly {
 
 Poly<Rational> primitive_positive(const Poly<Rational> &p) {
   if (p.c.empty()) return p;
+  // Integer coefficients (the exact stage's normal form): the gcd of the numerators
+  // alone (the general route below with l = 1, without its divisions and copies).
+  bool integral = true;
+  for (const Rational &x : p.c) integral = integral && mpz_cmp_ui(mpq_denref(x.get_mpq_t()), 1) == 0;
+  if (integral) {
+    arith::Integer g = 0;
+    for (const Rational &x : p.c) {
+      util::work_cost([&] { return limbs(g) * limbs(x); });
+      mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), mpq_numref(x.get_mpq_t()));
+    }
+    if (g == 1 || g == 0) return p;  // primitive already (0: all zero, untrimmed)
+    std::vector<Rational> out(p.c.size());
+    for (size_t i = 0; i < p.c.size(); ++i)
+      mpz_divexact(mpq_numref(out[i].get_mpq_t()), mpq_numref(p.c[i].get_mpq_t()), g.get_mpz_t());
+    return Poly<Rational>(std::move(out));
+  }
   arith::Integer l = 1, g = 0;
   for (const Rational &x : p.c) {
     util::work_cost([&] { return limbs(l) * limbs(x); });  // util/work_budget.h

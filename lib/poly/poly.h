@@ -138,6 +138,12 @@ void eval_common(const Poly<Rational> *const *ps, size_t count, const Rational &
 // fraction at every product and sum, and those gcds dominated the motion layer's work.
 template <>
 Poly<Rational> operator*(const Poly<Rational> &a, const Poly<Rational> &b);
+// Sums and differences of integer polynomials on the numerators alone (the same values;
+// rational_product.cpp); other rationals by the generic loop.
+template <>
+Poly<Rational> operator+(const Poly<Rational> &a, const Poly<Rational> &b);
+template <>
+Poly<Rational> operator-(const Poly<Rational> &a, const Poly<Rational> &b);
 
 template <class NT>
 Poly<NT> operator*(const NT &s, const Poly<NT> &a) {
@@ -171,6 +177,10 @@ Poly<NT> rem(Poly<NT> a, const Poly<NT> &b) {
 // p(a + (b - a) s) as a polynomial of s (Taylor shift then scaling).
 template <class NT>
 Poly<NT> reparametrize(const Poly<NT> &p, const NT &a, const NT &b) {
+  // [0, 1] itself, exactly: p unchanged (the loops below would compute the same values).
+  // Intervals take the loops, whose enclosures are what their callers were tuned on.
+  if constexpr (std::is_same_v<NT, Rational>)
+    if (sgn(a) == 0 && b == 1) return p;
   std::vector<NT> q = p.c;
   const size_t n = q.size();
   // Taylor shift by a: q(t + a), by repeated synthetic division (Horner scheme).

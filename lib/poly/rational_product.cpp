@@ -1,7 +1,7 @@
 // The product of two exact polynomials through integers: a = A / la and b = B / lb with
 // A, B integer polynomials and la, lb the lcms of the denominators, so
 // a b = (A B) / (la lb). A B is an integer convolution (mpz_addmul, no fraction), and
-// each coefficient of the result is reduced once. The generic loop (poly.h) instead
+// each coefficient of the result is reduced once; integer inputs convolve directly. The generic loop (poly.h) instead
 // canonicalizes a fraction at every one of its deg a * deg b products and sums: a
 // kinematic chain's motions (dyadic coefficients of 50-400 bits, degrees up to 14) spent
 // most of their time in those gcds. Integer inputs (la = lb = 1, the exact stage's
@@ -9,6 +9,8 @@
 //
 // Both count their work by cost (util::work_cost: a row of the convolution, a Horner
 // step, a reduction), so a limit is checked between any two of them whatever the sizes.
+#include <algorithm>
+
 #include "poly/lowest_terms.h"
 #include "poly/poly.h"
 
@@ -34,9 +36,79 @@ void split(const Poly<Rational> &p, std::vector<arith::Integer> *num, arith::Int
 
 }  // namespace
 
+namespace {
+
+bool integral(const Poly<Rational> &p) {
+  for (const Rational &x : p.c)
+    if (mpz_cmp_ui(mpq_denref(x.get_mpq_t()), 1) != 0) return false;
+  return true;
+}
+
+// a b for integer a and b (the exact stage's normal form): the convolution of the
+// numerators straight into the result's numerators (denominators stay 1, a canonical
+// fraction), without split's copies and lcms.
+Poly<Rational> integer_product(const Poly<Rational> &a, const Poly<Rational> &b) {
+  std::vector<Rational> r(a.c.size() + b.c.size() - 1);  // each 0 / 1
+  std::uint64_t size_b = 0;
+  if (util::current_budget())
+    for (const Rational &x : b.c) size_b += limbs(x);
+  for (size_t i = 0; i < a.c.size(); ++i) {
+    const mpz_srcptr ai = mpq_numref(a.c[i].get_mpq_t());
+    if (mpz_sgn(ai) == 0) continue;
+    util::work_cost([&] { return limbs(a.c[i]) * size_b + limbs(r[i]) * b.c.size(); });
+    for (size_t j = 0; j < b.c.size(); ++j)
+      mpz_addmul(mpq_numref(r[i + j].get_mpq_t()), ai, mpq_numref(b.c[j].get_mpq_t()));
+  }
+  return Poly<Rational>(std::move(r));
+}
+
+// a + sign b for integer a and b, sign = +1 or -1.
+Poly<Rational> integer_sum(const Poly<Rational> &a, const Poly<Rational> &b, int sign) {
+  std::vector<Rational> r(std::max(a.c.size(), b.c.size()));  // each 0 / 1
+  for (size_t i = 0; i < r.size(); ++i) {
+    const mpz_ptr ri = mpq_numref(r[i].get_mpq_t());
+    const bool in_a = i < a.c.size(), in_b = i < b.c.size();
+    if (in_a && in_b) {
+      op_cost(a.c[i], b.c[i]);
+      (sign > 0 ? mpz_add : mpz_sub)(ri, mpq_numref(a.c[i].get_mpq_t()), mpq_numref(b.c[i].get_mpq_t()));
+    } else if (in_a) {
+      mpz_set(ri, mpq_numref(a.c[i].get_mpq_t()));
+    } else if (sign > 0) {
+      mpz_set(ri, mpq_numref(b.c[i].get_mpq_t()));
+    } else {
+      mpz_neg(ri, mpq_numref(b.c[i].get_mpq_t()));
+    }
+  }
+  return Poly<Rational>(std::move(r));
+}
+
+// The generic loop of poly.h for rationals that are not all integers.
+Poly<Rational> rational_sum(const Poly<Rational> &a, const Poly<Rational> &b, int sign) {
+  std::vector<Rational> r(std::max(a.c.size(), b.c.size()), Rational(0));
+  for (size_t i = 0; i < a.c.size(); ++i) r[i] = a.c[i];
+  for (size_t i = 0; i < b.c.size(); ++i) {
+    op_cost(r[i], b.c[i]);
+    if (sign > 0) r[i] += b.c[i]; else r[i] -= b.c[i];
+  }
+  return Poly<Rational>(std::move(r));
+}
+
+}  // namespace
+
+template <>
+Poly<Rational> operator+(const Poly<Rational> &a, const Poly<Rational> &b) {
+  return integral(a) && integral(b) ? integer_sum(a, b, 1) : rational_sum(a, b, 1);
+}
+
+template <>
+Poly<Rational> operator-(const Poly<Rational> &a, const Poly<Rational> &b) {
+  return integral(a) && integral(b) ? integer_sum(a, b, -1) : rational_sum(a, b, -1);
+}
+
 template <>
 Poly<Rational> operator*(const Poly<Rational> &a, const Poly<Rational> &b) {
   if (a.c.empty() || b.c.empty()) return Poly<Rational>();
+  if (integral(a) && integral(b)) return integer_product(a, b);
   std::vector<arith::Integer> A, B;
   arith::Integer la, lb;
   split(a, &A, &la);

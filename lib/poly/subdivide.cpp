@@ -23,6 +23,35 @@ std::vector<Integer> integer_multiple(const std::vector<Rational> &b) {
   return z;
 }
 
+std::vector<Integer> bernstein_integer(const Poly<Rational> &p) {
+  if (p.c.empty()) return {Integer(0)};
+  const size_t n = p.c.size() - 1;
+  Integer L = 1, M = 1;
+  for (const Rational &x : p.c)
+    if (x.get_den() != 1) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t());
+  std::vector<Integer> binom(n + 1);  // C(n, i)
+  for (size_t i = 0; i <= n; ++i) {
+    mpz_bin_uiui(binom[i].get_mpz_t(), n, i);
+    mpz_lcm(M.get_mpz_t(), M.get_mpz_t(), binom[i].get_mpz_t());
+  }
+  std::vector<Integer> w(n + 1);
+  for (size_t i = 0; i <= n; ++i) {
+    Integer &x = w[i];
+    mpz_divexact(x.get_mpz_t(), M.get_mpz_t(), binom[i].get_mpz_t());  // M / C(n, i)
+    x *= p.c[i].get_num();
+    if (L != 1) {
+      Integer q;
+      mpz_divexact(q.get_mpz_t(), L.get_mpz_t(), p.c[i].get_den_mpz_t());
+      x *= q;
+    }
+  }
+  // Pass r adds w[k - 1] to w[k] for k = n down to r: after pass r, w[k] (k <= r) holds
+  // sum_i C(k, i) w_i and w[k] (k > r) sum_{j <= r} C(r, j) w_{k - j}; after pass n all do.
+  for (size_t r = 1; r <= n; ++r)
+    for (size_t k = n; k >= r; --k) w[k] += w[k - 1];
+  return w;
+}
+
 namespace {
 
 // Divides every entry of v by the largest power of two dividing them all (v's entries

@@ -28,15 +28,24 @@
 
 namespace pccd::poly {
 
+// x / 2. Intervals: both ends halved exactly when no bit is lost (doubling gives them
+// back; any rounding mode), which is what x * [1/2, 1/2] encloses, without its outward
+// rounding by an ulp; otherwise (subnormal ends, NaN) that product.
+inline Rational half_of(const Rational &x) { return x / 2; }
+inline arith::Interval half_of(const arith::Interval &x) {
+  const double l = x.lo * 0.5, h = x.hi * 0.5;
+  if (l * 2 == x.lo && h * 2 == x.hi) return arith::Interval(l, h);
+  return x * arith::Interval(0.5);
+}
+
 template <class NT>
 void de_casteljau_halves(const std::vector<NT> &b, std::vector<NT> &left, std::vector<NT> &right) {
   const size_t n = b.size();
   std::vector<NT> w = b;
   left.assign(n, w[0]);
   right.assign(n, w[n - 1]);
-  const NT half = arith::from_rational<NT>(Rational(1, 2));
   for (size_t r = 1; r < n; ++r) {
-    for (size_t i = 0; i + r < n; ++i) w[i] = (w[i] + w[i + 1]) * half;
+    for (size_t i = 0; i + r < n; ++i) w[i] = half_of(w[i] + w[i + 1]);
     left[r] = w[0];
     right[n - 1 - r] = w[n - 1 - r];
   }
@@ -44,6 +53,22 @@ void de_casteljau_halves(const std::vector<NT> &b, std::vector<NT> &left, std::v
 
 // b times the least common multiple of its denominators (a positive factor), as integers.
 std::vector<arith::Integer> integer_multiple(const std::vector<Rational> &b);
+
+// The Bernstein coefficients of p on [0, 1] (degree deg p; the zero polynomial: {0}),
+// times one positive factor, as integers: integer_multiple(bernstein_coefficients(p, 0,
+// 1)) up to a positive factor, without a fraction on the way. With L the lcm of p's
+// denominators and M the lcm of the C(n, i): w_i = L p_i M / C(n, i) (integers), then
+// b_k = sum_{i <= k} C(k, i) w_i by n passes of pairwise sums (bernstein.h's closed
+// form times L M). Only for readers of signs within the vector (the counter's tests).
+std::vector<arith::Integer> bernstein_integer(const Poly<Rational> &p);
+
+// certain_sign_on(p, 0, 1) (bernstein.h) read from bernstein_integer(p): +1 when p > 0 on
+// all of [0, 1], -1 when p <= 0 on all of it (the zero polynomial included), else 0.
+inline int certain_sign_on_integers(const Poly<Rational> &p) {
+  if (p.c.empty()) return -1;
+  const std::vector<arith::Integer> b = bernstein_integer(p);
+  return all_positive(b) ? 1 : all_nonpositive(b) ? -1 : 0;
+}
 
 // The same halves as de_casteljau_halves, each half times its own positive factor, on
 // integers: no rational halving, no gcd per step (w[i] + w[i + 1] instead of their mean,
@@ -92,13 +117,31 @@ class Subdivision_counter {
   }
 
  private:
-  // Sign variations with certain signs and nonzero ends; -1 otherwise.
+  // The sign of x when certain (always, for exact types). Intervals: arith::sign
+  // without its throw, so that an undecided piece fails the count by return values:
+  // unwinding the recursion's frames cost more than the counting itself.
+  static bool certain_sign(const NT &x, int &s) {
+    if constexpr (std::is_same_v<NT, arith::Interval>) {
+      if (x.lo > 0) s = 1;
+      else if (x.hi < 0) s = -1;
+      else if (x.is_point_zero()) s = 0;
+      else return false;
+    } else {
+      s = arith::sign(x);
+    }
+    return true;
+  }
+
+  // Sign variations with certain signs and nonzero ends; -1 when an end is zero or
+  // uncertain, kUncertain when another entry's sign is (the count fails).
+  static constexpr int kUncertain = -2;
   static int variations(const std::vector<NT> &b) {
     if (!(arith::certainly_positive(b.front()) || arith::certainly_negative(b.front()))) return -1;
     if (!(arith::certainly_positive(b.back()) || arith::certainly_negative(b.back()))) return -1;
     int v = 0, last = 0;
     for (const NT &x : b) {
-      int s = arith::sign(x);  // may throw Uncertain: caught in count()
+      int s;
+      if (!certain_sign(x, s)) return kUncertain;
       if (s == 0) continue;
       if (last != 0 && s != last) ++v;
       last = s;
@@ -118,14 +161,19 @@ class Subdivision_counter {
       }
     }
     const int v = variations(fb);
+    if (v == kUncertain) return false;
     if (v == 0) return true;
     if (v == 1) {
       if (left_g.empty()) {
         ++count;
         return true;
       }
-      for (const auto &h : left_h)
-        if (h.size() >= 2 && arith::sign(h.front()) * arith::sign(h.back()) < 0) return true;
+      for (const auto &h : left_h) {
+        int s0, s1;
+        if (h.size() < 2) continue;
+        if (!certain_sign(h.front(), s0) || !certain_sign(h.back(), s1)) return false;
+        if (s0 * s1 < 0) return true;
+      }
     }
     if (--budget_ < 0) return false;
     std::vector<NT> fl, fr;
@@ -137,9 +185,15 @@ class Subdivision_counter {
       if (!left_h[i].empty()) halves_for_signs(std::move(left_h[i]), hl[i], hr[i]);
     }
     // The midpoint: F(1/2) = fl.back(), G_i(1/2) = gl[i].back() (up to positive factors).
-    if (arith::sign(fl.back()) == 0) {
+    int sm;
+    if (!certain_sign(fl.back(), sm)) return false;
+    if (sm == 0) {
       bool ok = true;
-      for (const auto &g : gl) ok = ok && arith::sign(g.back()) > 0;
+      for (size_t i = 0; i < gl.size() && ok; ++i) {
+        int sg;
+        if (!certain_sign(gl[i].back(), sg)) return false;
+        ok = sg > 0;
+      }
       if (ok) ++count;
     }
     return run(std::move(fl), std::move(gl), std::move(hl), count) &&

@@ -6,8 +6,11 @@
 // - poly::divide_out_positive: f = w^k g with g not divisible by w gives a positive
 //   multiple of g; a w that does not divide f leaves f's multiple;
 // - the integer product (poly/rational_product.cpp) against the schoolbook loop in
-//   rationals written here.
+//   rationals written here, for rational and for integer coefficients; sums likewise;
+// - poly::primitive_positive's integer shortcut: content 1, a positive multiple, and the
+//   general route's answer.
 // Prints "N passed, N failed".
+#include <algorithm>
 #include <cstdio>
 #include <random>
 #include <string>
@@ -114,6 +117,50 @@ int main() {
            "divide_out_positive(a, w) ~ a, round " + std::to_string(round));
     expect(monic(pccd::poly::divide_out_positive(f, w)).c == monic(a).c,
            "monic quotient, round " + std::to_string(round));
+  }
+  // Integer products (the direct convolution): integer coefficients of up to 320 bits,
+  // zeros among them, against the schoolbook loop; also mixed with a rational factor.
+  for (int round = 0; round < 500; ++round) {
+    auto integer_poly = [&](size_t n) {
+      std::vector<Rational> c(n);
+      for (Rational &x : c) {
+        x = Rational(long(rng() % 2001) - 1000);
+        mpq_mul_2exp(x.get_mpq_t(), x.get_mpq_t(), rng() % 320);
+        if (rng() % 5 == 0) x = 0;
+      }
+      return Poly<Rational>(c);
+    };
+    const Poly<Rational> a = integer_poly(1 + rng() % 7), b = integer_poly(1 + rng() % 7);
+    expect((a * b).c == schoolbook(a, b).c, "integer a * b, round " + std::to_string(round));
+    const Poly<Rational> q = product_of_roots({rational(8)}, Rational(1, 3));
+    expect((a * q).c == schoolbook(a, q).c, "integer a * rational q, round " + std::to_string(round));
+    // Sums and differences (integer shortcut, and mixed) against coefficientwise sums
+    // over Q; b - b cancels to the zero polynomial, trimmed.
+    for (const Poly<Rational> *y : {&b, &q, &a}) {
+      std::vector<Rational> s(std::max(a.c.size(), y->c.size()), Rational(0)), d = s;
+      for (size_t i = 0; i < s.size(); ++i) {
+        const Rational x = i < a.c.size() ? a.c[i] : Rational(0), z = i < y->c.size() ? y->c[i] : Rational(0);
+        s[i] = x + z;
+        d[i] = x - z;
+      }
+      expect((a + *y).c == Poly<Rational>(s).c && (a - *y).c == Poly<Rational>(d).c,
+             "a + y, a - y, round " + std::to_string(round));
+    }
+    // primitive_positive of integer coefficients (its shortcut) with a common factor:
+    // integers without a common factor, a positive multiple of a, and the same as the
+    // general route's answer for a / 3 (a fraction).
+    const Poly<Rational> ak = Poly<Rational>::constant(Rational(1 + long(rng() % 90))) * a;
+    const Poly<Rational> pp = pccd::poly::primitive_positive(ak);
+    Integer content = 0;
+    bool integral = true;
+    for (const Rational &x : pp.c) {
+      integral = integral && x.get_den() == 1;
+      mpz_gcd(content.get_mpz_t(), content.get_mpz_t(), x.get_num_mpz_t());
+    }
+    expect(a.c.empty() ? pp.c.empty() : integral && content == 1 && proportional_positive(pp, a),
+           "primitive_positive(k a), round " + std::to_string(round));
+    expect(pp.c == pccd::poly::primitive_positive(Poly<Rational>::constant(Rational(1, 3)) * ak).c,
+           "primitive_positive(k a) = primitive_positive(k a / 3), round " + std::to_string(round));
   }
   std::printf("%ld passed, %ld failed\n", passed, failed);
   return failed == 0 ? 0 : 1;
