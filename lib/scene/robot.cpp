@@ -8,6 +8,7 @@
 #include "motion/chain_path.h"
 #include "poly/poly.h"
 #include "scene/link_filter.h"
+#include "scene/solid_start.h"
 
 namespace pccd::scene {
 
@@ -305,13 +306,21 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       return solid(r.bodies[p.i].body.get()) ||
              solid(p.j < nr ? r.bodies[p.j].body.get() : obst[p.j - nr].data.get());
     };
-    // The two bodies' body-frame boxes (Body_data::box_c, box_h: they hold the exact
-    // points) through the pose enclosures at t = 0.
-    auto boxes_meet_at_zero = [&](const Pair_plan &p) {
+    // A solid (narrow/containment.h) may hold the other body with no surface near: the
+    // filter bounds surface contacts only, so a pair with a solid whose bodies' boxes
+    // (Body_data::box_c, box_h: they hold the exact points) meet at t = 0 through the
+    // pose enclosures then may be in contact at t = 0 whatever its bound, unless
+    // solid_start.h certifies that neither holds a containment point of the other then
+    // (issue 30: such pairs, nearly all never near, were 93% of a Panda's free
+    // segments' time). Boxes apart at t = 0: neither holds a point of the other then,
+    // and by continuity none until the surfaces meet, which the bound covers.
+    auto may_contain_at_zero = [&](const Pair_plan &p) {
+      if (!solid_pair(p)) return false;
       const long base = base_of(p);
       const Filter_side a = side(p.i, base), b = side(p.j, base);
       return enclose::boxes_meet(enclose::frame_box(a.instant(0, 0), a.data->box_c, a.data->box_h),
-                                 enclose::frame_box(b.instant(0, 0), b.data->box_c, b.data->box_h));
+                                 enclose::frame_box(b.instant(0, 0), b.data->box_c, b.data->box_h)) &&
+             !solids_apart_at_zero(a, b);
     };
     std::vector<Pair_plan> kept;
     Witness found;
@@ -337,12 +346,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         lim.until = decide ? p.lower : horizon;
         if (decide) lim.max_tests = kAfter_tests;
       }
-      // A solid (narrow/containment.h) may hold the other body with no surface near:
-      // the filter bounds surface contacts only, so a pair with a solid whose bodies'
-      // boxes meet at t = 0 goes to the exact solve (its containment test at t = 0)
-      // with no bound. Boxes apart at t = 0: neither holds a point of the other then,
-      // and by continuity none until the surfaces meet, which the bound covers.
-      if (p.lower > 0 && solid_pair(p) && boxes_meet_at_zero(p)) p.lower = 0;
+      // Such a pair goes to the exact solve (its containment test at t = 0) with bound 0.
+      if (p.lower > 0 && may_contain_at_zero(p)) p.lower = 0;
       if (p.lower <= horizon) kept.push_back(p);
     }
     std::stable_sort(kept.begin(), kept.end(),
@@ -358,8 +363,11 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     if (found.found) {  // first-contact mode: only contacts up to t_w can be first
       // A tighter window: the witness pair's own bound without witnesses (to the finest
       // piece), and a witness just after it.
+      // A witness pair that may be in contact at t = 0 by containment keeps bound 0 (the
+      // bound below is of surface contacts only: a window from it would test
+      // containment at its start, not at 0).
       for (Pair_plan &p : kept)
-        if (p.i == found_i && p.j == found_j) {
+        if (p.i == found_i && p.j == found_j && !may_contain_at_zero(p)) {
           Filter_limits upto;
           upto.until = horizon;
           upto.delta_lo = lim.delta_lo;
