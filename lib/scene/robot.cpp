@@ -314,13 +314,26 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     // (issue 30: such pairs, nearly all never near, were 93% of a Panda's free
     // segments' time). Boxes apart at t = 0: neither holds a point of the other then,
     // and by continuity none until the surfaces meet, which the bound covers.
+    // Where the interval test is in doubt, the exact one (narrow/containment.h) on the
+    // exact poses at t = 0: the links on the segment q0 -> q0 (their t = 0 poses, built
+    // once, on the first such pair), the obstacles on their own motions.
+    std::vector<motion::Rigid_motion> at_zero;
+    std::vector<std::shared_ptr<const narrow::Motion_data>> at_zero_data(r.chain.size());
+    auto body_at_zero = [&](size_t k) -> Moving_body {
+      if (k >= nr) return obst[k - nr];
+      if (at_zero.empty())
+        at_zero = r.chain.segment_motions(q0, q0, nullptr, nullptr, ro.check_link ? &ro.check_link : nullptr);
+      const size_t L = r.bodies[k].link;
+      if (!at_zero_data[L]) at_zero_data[L] = narrow::prepare_motion(at_zero[L], true);
+      return narrow::prepare_body(r.bodies[k].body, at_zero_data[L]);
+    };
     auto may_contain_at_zero = [&](const Pair_plan &p) {
       if (!solid_pair(p)) return false;
       const long base = base_of(p);
       const Filter_side a = side(p.i, base), b = side(p.j, base);
       return enclose::boxes_meet(enclose::frame_box(a.instant(0, 0), a.data->box_c, a.data->box_h),
                                  enclose::frame_box(b.instant(0, 0), b.data->box_c, b.data->box_h)) &&
-             !solids_apart_at_zero(a, b);
+             !solids_apart_at_zero(a, b) && contained_exactly_at_zero(body_at_zero(p.i), body_at_zero(p.j));
     };
     std::vector<Pair_plan> kept;
     Witness found;

@@ -53,4 +53,8 @@ bool solids_apart_at_zero(const Filter_side &A, const Filter_side &B) {
   return true;
 }
 
+bool contained_exactly_at_zero(const narrow::Moving_body &a, const narrow::Moving_body &b) {
+  return narrow::contained_at_zero(narrow::Pair_ctx(a, b)).has_value();
+}
+
 }  // namespace pccd::scene

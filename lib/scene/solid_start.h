@@ -17,8 +17,10 @@
 // p = q + R^T (x - o_q), R being a rotation (the unit rotation of a rigid motion, whose
 // inverse is its transpose); a point whose interval box misses the solid's body-frame
 // box (Body_data::box_c, box_h, which holds every exact point, so the solid) on some
-// axis is outside. Any doubt (an unbounded pose, a box that meets) answers false, and
-// the pair keeps bound 0 and goes to the exact containment test as before.
+// axis is outside. Any doubt (an unbounded pose, a box that meets) answers false; then
+// contained_exactly_at_zero decides on the exact poses at t = 0 alone (a point in a link's
+// box but outside its solid, as a wrist link near a concave forearm), and only a pair
+// in containment keeps bound 0 and goes to the exact solve.
 #pragma once
 #include "scene/link_filter.h"
 
@@ -28,5 +30,11 @@ namespace pccd::scene {
 // in A's at t = 0 (sides as first_uncleared's, with instant). A side that is no solid
 // mesh holds nothing.
 bool solids_apart_at_zero(const Filter_side &A, const Filter_side &B);
+
+// The exact test where the one above is in doubt: narrow::contained_at_zero of the two
+// bodies on motions whose t = 0 poses are theirs (a robot link on the segment q0 -> q0),
+// exactly; its contract holds when their surfaces do not meet at t = 0 (a pair whose
+// filter bound is > 0). True: some containment point is inside the other's solid.
+bool contained_exactly_at_zero(const narrow::Moving_body &a, const narrow::Moving_body &b);
 
 }  // namespace pccd::scene
