@@ -144,6 +144,11 @@ size_t Chain::add_link(long parent, int joint, const double *axis, const double 
   if (sgn(L.origin_q[0]) == 0 && sgn(L.origin_q[1]) == 0 && sgn(L.origin_q[2]) == 0 &&
       sgn(L.origin_q[3]) == 0)
     throw arith::Internal_error("the roll-pitch-yaw quaternion rounded to zero");
+  for (int i = 0; i < 3; ++i) {
+    L.axis_d[i] = arith::nearest_double(L.axis[i]);
+    L.origin_p_d[i] = arith::nearest_double(L.origin_p[i]);
+  }
+  for (int i = 0; i < 4; ++i) L.origin_q_d[i] = arith::nearest_double(L.origin_q[i]);
   links_.push_back(L);
   return links_.size() - 1;
 }

@@ -32,6 +32,7 @@
 //  - joint values at a time t (outputs, never decisions): revolute theta0 plus twice
 //    the angle from (c0, s0 |a|) to (c(t), s(t) |a|), prismatic e(t) |a|, in doubles.
 #pragma once
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -49,6 +50,10 @@ struct Chain_link {
   double axis_norm = 1;              // the double nearest |axis| (exactly 1 for a unit axis)
   Quat_q origin_q{};                 // exact, from the roll-pitch-yaw doubles
   Vec3_q origin_p{};
+  // The nearest doubles of axis, origin_q and origin_p (the interval path of
+  // motion/chain_path.h takes them on every segment), converted once, by add_link.
+  std::array<double, 3> axis_d{}, origin_p_d{};
+  std::array<double, 4> origin_q_d{};
   std::string value_place;           // errors name the joint value "q0" + this ("": "[k]")
 };
 

@@ -85,12 +85,11 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
     ends_[k] = joint_doubles(L, q0[k], q1[k]);
     Interval a[3];
     for (int i = 0; i < 3; ++i) {
-      axis_[k][i] = arith::nearest_double(L.axis[i]);  // exact: the axis was given as doubles
+      axis_[k][i] = L.axis_d[i];  // exact: the axis was given as doubles
       a[i] = Interval(axis_[k][i]);
     }
     axis2_[k] = sq(a[0]) + sq(a[1]) + sq(a[2]);
-    Interval w = arith::nearest_double(L.origin_q[0]), x = arith::nearest_double(L.origin_q[1]),
-             y = arith::nearest_double(L.origin_q[2]), z = arith::nearest_double(L.origin_q[3]);
+    Interval w = L.origin_q_d[0], x = L.origin_q_d[1], y = L.origin_q_d[2], z = L.origin_q_d[3];
     const Interval ww = sq(w), xx = sq(x), yy = sq(y), zz = sq(z);
     const Interval nq = ww + xx + yy + zz;  // > 0: add_link refuses the zero quaternion
     const Interval two(2.0);
@@ -106,7 +105,7 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
     R[2][2] = (ww - xx - yy + zz) / nq;
     Pose_bounds &O = origin_[k];
     ball_of(R, O.Rm, O.eps);
-    for (int i = 0; i < 3; ++i) O.om[i] = arith::nearest_double(L.origin_p[i]);  // exact
+    for (int i = 0; i < 3; ++i) O.om[i] = L.origin_p_d[i];  // exact
   }
 }
 
