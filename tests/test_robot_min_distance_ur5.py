@@ -2,7 +2,7 @@
 check without it). The filter now clears a link passing a few millimetres beyond delta
 (the nearest-point axis of pred/closest_axis.h in its leaf test), a solid link whose box
 meets an obstacle's at t = 0 keeps its bound when no containment is possible then
-(scene/solid_zero.h), feature pairs beside a plate are cleared by the axis filter of
+(scene/solid_start.h), feature pairs beside a plate are cleared by the axis filter of
 pred/delta_axis.h, and a witness within delta found edge to edge
 (scene/delta_witness.h) or after another pair's bound tightens the window of the
 first-contact solve. Exactness is kept: every answer equals the unfiltered exact check

@@ -1,7 +1,5 @@
 #include "motion/chain.h"
 
-#include "motion/chain_path.h"
-
 #include <climits>
 #include <cmath>
 #include <cstdio>
@@ -91,9 +89,21 @@ Joint_doubles joint_doubles(const Chain_link &L, double q0, double q1) {
   return d;
 }
 
+// A revolute or continuous joint with finite q0, q1 whose double difference is at most 3
+// passes joint_ends without any rational (the per-segment check of every robot check
+// spent tens of us on them): every value is finite (cos, sin over |a| ~ 1); the exact
+// |q1 - q0| is within 2^-53 relative of the double's, so below pi: no turn of 2 pi or
+// more, no near-full turn; and the dot of the rounded half-angle endpoints is cos((q1 -
+// q0) / 2) >= cos(1.5) > 0.07 up to libm's and the axis norm's errors (< 1e-14), so it is
+// positive and the antipodal check cannot fire. Anything else takes joint_ends.
 void Chain::check_segment(const double *q0, const double *q1) const {
-  for (size_t k = 0; k < links_.size(); ++k)
-    if (links_[k].joint != Joint_type::fixed) joint_ends(links_[k], k, q0[k], q1[k]);
+  for (size_t k = 0; k < links_.size(); ++k) {
+    const Joint_type j = links_[k].joint;
+    if (j == Joint_type::fixed) continue;
+    const bool turning = j == Joint_type::revolute || j == Joint_type::continuous;
+    if (turning && std::isfinite(q0[k]) && std::isfinite(q1[k]) && std::fabs(q1[k] - q0[k]) <= 3.0) continue;
+    joint_ends(links_[k], k, q0[k], q1[k]);
+  }
 }
 
 size_t Chain::add_link(long parent, int joint, const double *axis, const double xyz[3],
@@ -146,7 +156,11 @@ size_t Chain::add_link(long parent, int joint, const double *axis, const double 
   if (sgn(L.origin_q[0]) == 0 && sgn(L.origin_q[1]) == 0 && sgn(L.origin_q[2]) == 0 &&
       sgn(L.origin_q[3]) == 0)
     throw arith::Internal_error("the roll-pitch-yaw quaternion rounded to zero");
-  L.doubles = link_doubles(L);
+  for (int i = 0; i < 3; ++i) {
+    L.axis_d[i] = arith::nearest_double(L.axis[i]);
+    L.origin_p_d[i] = arith::nearest_double(L.origin_p[i]);
+  }
+  for (int i = 0; i < 4; ++i) L.origin_q_d[i] = arith::nearest_double(L.origin_q[i]);
   links_.push_back(L);
   return links_.size() - 1;
 }

@@ -32,28 +32,16 @@
 //  - joint values at a time t (outputs, never decisions): revolute theta0 plus twice
 //    the angle from (c0, s0 |a|) to (c(t), s(t) |a|), prismatic e(t) |a|, in doubles.
 #pragma once
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
 
-#include "arith/interval.h"
 #include "motion/rigid_motion.h"
 
 namespace pccd::motion {
 
 enum class Joint_type { fixed = 0, revolute = 1, continuous = 2, prismatic = 3 };
-
-// A link's constants in doubles for the interval path (motion/chain_path.h), made once
-// by Chain::add_link (link_doubles) rather than on every segment: the joint axis (its
-// exact doubles), |a|^2 enclosed, the origin rotation's ball (midpoints Rm, radius eps:
-// ||R(origin_q) - Rm||_2 <= eps) and the origin translation om (exact doubles).
-struct Link_doubles {
-  double axis[3] = {0, 0, 0};
-  arith::Interval axis2{0.0};
-  double Rm[3][3] = {};
-  double eps = 0;
-  double om[3] = {0, 0, 0};
-};
 
 struct Chain_link {
   long parent = -1;                  // an earlier link, or -1 for the world frame
@@ -62,8 +50,11 @@ struct Chain_link {
   double axis_norm = 1;              // the double nearest |axis| (exactly 1 for a unit axis)
   Quat_q origin_q{};                 // exact, from the roll-pitch-yaw doubles
   Vec3_q origin_p{};
+  // The nearest doubles of axis, origin_q and origin_p (the interval path of
+  // motion/chain_path.h takes them on every segment), converted once, by add_link.
+  std::array<double, 3> axis_d{}, origin_p_d{};
+  std::array<double, 4> origin_q_d{};
   std::string value_place;           // errors name the joint value "q0" + this ("": "[k]")
-  Link_doubles doubles;              // from the fields above (add_link)
 };
 
 // The doubles a joint's exact motion interpolates (taken exactly by segment_motions; the

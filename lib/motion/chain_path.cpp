@@ -73,34 +73,6 @@ void make_lazily(const Chain &c, size_t k, long base, std::vector<T> &out, std::
 
 }  // namespace
 
-Link_doubles link_doubles(const Chain_link &L) {
-  Link_doubles out;
-  Interval a[3];
-  for (int i = 0; i < 3; ++i) {
-    out.axis[i] = arith::nearest_double(L.axis[i]);  // exact: the axis was given as doubles
-    a[i] = Interval(out.axis[i]);
-  }
-  out.axis2 = sq(a[0]) + sq(a[1]) + sq(a[2]);
-  Interval w = arith::nearest_double(L.origin_q[0]), x = arith::nearest_double(L.origin_q[1]),
-           y = arith::nearest_double(L.origin_q[2]), z = arith::nearest_double(L.origin_q[3]);
-  const Interval ww = sq(w), xx = sq(x), yy = sq(y), zz = sq(z);
-  const Interval nq = ww + xx + yy + zz;  // > 0: add_link refuses the zero quaternion
-  const Interval two(2.0);
-  Interval R[3][3];
-  R[0][0] = (ww + xx - yy - zz) / nq;
-  R[0][1] = two * (x * y - w * z) / nq;
-  R[0][2] = two * (x * z + w * y) / nq;
-  R[1][0] = two * (x * y + w * z) / nq;
-  R[1][1] = (ww - xx + yy - zz) / nq;
-  R[1][2] = two * (y * z - w * x) / nq;
-  R[2][0] = two * (x * z - w * y) / nq;
-  R[2][1] = two * (y * z + w * x) / nq;
-  R[2][2] = (ww - xx - yy + zz) / nq;
-  ball_of(R, out.Rm, out.eps);
-  for (int i = 0; i < 3; ++i) out.om[i] = arith::nearest_double(L.origin_p[i]);  // exact
-  return out;
-}
-
 Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(c) {
   c.check_segment(q0, q1);
   const size_t n = c.size();
@@ -108,18 +80,32 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
   origin_.resize(n);
   axis2_.resize(n);
   axis_.resize(n);
-  for (size_t k = 0; k < n; ++k) {  // the constants add_link made (link_doubles)
+  for (size_t k = 0; k < n; ++k) {
     const Chain_link &L = c.link(k);
     ends_[k] = joint_doubles(L, q0[k], q1[k]);
-    const Link_doubles &D = L.doubles;
-    for (int i = 0; i < 3; ++i) axis_[k][i] = D.axis[i];
-    axis2_[k] = D.axis2;
-    Pose_bounds &O = origin_[k];
+    Interval a[3];
     for (int i = 0; i < 3; ++i) {
-      for (int j = 0; j < 3; ++j) O.Rm[i][j] = D.Rm[i][j];
-      O.om[i] = D.om[i];
+      axis_[k][i] = L.axis_d[i];  // exact: the axis was given as doubles
+      a[i] = Interval(axis_[k][i]);
     }
-    O.eps = D.eps;
+    axis2_[k] = sq(a[0]) + sq(a[1]) + sq(a[2]);
+    Interval w = L.origin_q_d[0], x = L.origin_q_d[1], y = L.origin_q_d[2], z = L.origin_q_d[3];
+    const Interval ww = sq(w), xx = sq(x), yy = sq(y), zz = sq(z);
+    const Interval nq = ww + xx + yy + zz;  // > 0: add_link refuses the zero quaternion
+    const Interval two(2.0);
+    Interval R[3][3];
+    R[0][0] = (ww + xx - yy - zz) / nq;
+    R[0][1] = two * (x * y - w * z) / nq;
+    R[0][2] = two * (x * z + w * y) / nq;
+    R[1][0] = two * (x * y + w * z) / nq;
+    R[1][1] = (ww - xx + yy - zz) / nq;
+    R[1][2] = two * (y * z - w * x) / nq;
+    R[2][0] = two * (x * z - w * y) / nq;
+    R[2][1] = two * (y * z + w * x) / nq;
+    R[2][2] = (ww - xx - yy + zz) / nq;
+    Pose_bounds &O = origin_[k];
+    ball_of(R, O.Rm, O.eps);
+    for (int i = 0; i < 3; ++i) O.om[i] = L.origin_p_d[i];  // exact
   }
 }
 

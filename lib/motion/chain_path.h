@@ -72,9 +72,6 @@ struct Path_derivs {
   double d1 = 0, d2 = 0, o2 = 0;  // bounds of ||R'||, ||R''||, |o''| over the piece
 };
 
-// The constants of link L for the interval path (Link_doubles, motion/chain.h).
-Link_doubles link_doubles(const Chain_link &L);
-
 class Chain_path {
  public:
   // Input_error as Chain::segment_motions for a segment it rejects ("q1[k]: ...").

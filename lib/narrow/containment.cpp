@@ -14,8 +14,7 @@ namespace {
 
 using motion::Point3_q;
 
-// The points of a body tested against the other's solid: a vertex of each surface
-// component of a mesh, every ball centre. Kept with the body.
+// containment_points, kept with the body.
 struct Test_points final : Body_attachment {
   std::vector<uint32_t> ids;
 };
@@ -25,7 +24,9 @@ struct Solid_box final : Body_attachment {
   Point3_q lo, hi;
 };
 
-const std::vector<uint32_t> &test_points(const Body_data &d) {
+}  // namespace
+
+const std::vector<uint32_t> &containment_points(const Body_data &d) {
   return d.attached<Test_points>([&] {
            auto t = std::make_unique<Test_points>();
            if (d.mesh) t->ids = motion::component_vertices(*d.mesh);
@@ -34,6 +35,8 @@ const std::vector<uint32_t> &test_points(const Body_data &d) {
            return t;
          }).ids;
 }
+
+namespace {
 
 const Solid_box &solid_box(const Body_data &d) {
   return d.attached<Solid_box>([&] {
@@ -146,7 +149,7 @@ std::optional<uint32_t> first_inside(const Moving_body &S, const Moving_body &Q)
   const Relative_pose<Rational> rel =
       relative_pose(RS, OS, S.mo->W.eval(zero), RQ, OQ, Q.mo->W.eval(zero));
   const Solid_box &box = solid_box(*S.data);
-  for (uint32_t k : test_points(*Q.data)) {
+  for (uint32_t k : containment_points(*Q.data)) {
     const Point3_q &p = Q.point(k);
     Point3_q y;
     bool in_box = true;

@@ -20,11 +20,18 @@
 // [0, 1] the containment status of t = 0 holds on all of [0, 1], and with one, the pair
 // touches at t = 0 anyway: the first contact is t = 0 whenever a point is inside.
 #pragma once
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "narrow/pair_ctx.h"
 
 namespace pccd::narrow {
+
+// The points of a body tested against the other's solid (the argument above): a vertex
+// of each surface component of a mesh, every ball centre (indices into pts). Kept with
+// the body. Also behind the robot filter's certified test at t = 0 (scene/solid_start.h).
+const std::vector<uint32_t> &containment_points(const Body_data &d);
 
 // Whether either side is a solid mesh (the only pairs contained_at_zero looks at).
 bool has_solid(const Pair_ctx &ctx);

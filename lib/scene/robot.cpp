@@ -8,134 +8,12 @@
 #include "motion/chain_path.h"
 #include "poly/poly.h"
 #include "scene/link_filter.h"
-#include "scene/solid_zero.h"
+#include "scene/piece_poses.h"
+#include "scene/solid_start.h"
 
 namespace pccd::scene {
 
 namespace {
-
-// The link's ball (motion/chain_path.h) in the form enclose::frame_box maps boxes with
-// (pivot 0): every entry of R(t) - Rm is at most ||R(t) - Rm||_2 <= eps, every
-// coordinate of o(t) - om at most |o(t) - om|_2 <= rho.
-enclose::Pose_piece pose_piece(const motion::Pose_bounds &p) {
-  enclose::Pose_piece out;
-  bool finite = std::isfinite(p.eps) && std::isfinite(p.rho);
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      out.Rm[i][j] = p.Rm[i][j];
-      out.Rr[i][j] = p.eps;
-    }
-    out.om[i] = p.om[i];
-    out.orad[i] = p.rho;
-    finite = finite && std::isfinite(p.om[i]);
-  }
-  out.finite = finite;
-  return out;
-}
-
-// The poses of every link and obstacle on the dyadic pieces and at the dyadic instants
-// the filter visits, each computed once per check.
-class Piece_poses {
- public:
-  Piece_poses(const motion::Chain_path &path, const std::vector<Moving_body> &obstacles)
-      : path_(path), obstacles_(obstacles) {}
-
-  // Link k over the piece: the ball, and the second-order enclosure (link_filter.h) when
-  // its chords' growth is at most half the ball's radii (at the coarse pieces the ball
-  // is tighter; the choice is a heuristic, both enclosures hold).
-  Side_piece link(long base, size_t k, int d, long i) {
-    Piece &p = at(base, d, i);
-    const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
-    Side_piece s;
-    s.ball = &link_pose(p, base, k, a, b);
-    path_.derivatives_link(a, b, k, base, p.derivs, p.have_derivs);
-    const motion::Path_derivs &D = p.derivs[k];
-    const double gr = arith::round_up(std::ldexp(D.d2, -2 * d - 3)), go = arith::round_up(std::ldexp(D.o2, -2 * d - 3));
-    if (std::isfinite(gr) && std::isfinite(go) && gr <= 0.5 * s.ball->Rr[0][0] && go <= 0.5 * s.ball->orad[0]) {
-      s.at_a = &link_at(base, k, d, i);
-      s.at_b = &link_at(base, k, d, i + 1);
-      s.g_rot = gr;
-      s.g_off = go;
-    }
-    return s;
-  }
-  const enclose::Pose_piece &link_at(long base, size_t k, int d, long i) {
-    const double t = std::ldexp(static_cast<double>(i), -d);
-    return link_pose(instant(base, d, i), base, k, t, t);
-  }
-  Side_piece obstacle(size_t k, int d, long i) {
-    Piece &p = at(-1, d, i);
-    if (!p.have_obstacle[k]) {
-      const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
-      p.obstacles[k] = still(k) || d == 0 ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], a, b);
-      p.have_obstacle[k] = true;
-    }
-    Side_piece s;
-    s.ball = &p.obstacles[k];
-    s.identity = still(k);
-    return s;
-  }
-  const enclose::Pose_piece &obstacle_at(size_t k, int d, long i) {
-    Piece &p = instant(-1, d, i);
-    if (!p.have_obstacle[k]) {
-      const double t = std::ldexp(static_cast<double>(i), -d);
-      p.obstacles[k] = still(k) ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], t, t);
-      p.have_obstacle[k] = true;
-    }
-    return p.obstacles[k];
-  }
-
- private:
-  // The poses over one piece or at one instant, each link's made on its first demand
-  // (with its ancestors': motion/chain_path.h, enclose_link).
-  struct Piece {
-    std::vector<motion::Pose_bounds> bounds;
-    std::vector<char> have_bounds;
-    std::vector<enclose::Pose_piece> links;
-    std::vector<char> have_links;
-    std::vector<motion::Path_derivs> derivs;  // pieces only
-    std::vector<char> have_derivs;
-    std::vector<enclose::Pose_piece> obstacles;
-    std::vector<bool> have_obstacle;
-  };
-  // A stationary obstacle's pose is the same on every piece.
-  bool still(size_t k) const { return obstacles_[k].mo == narrow::identity_motion(); }
-  Piece &start(Piece &p) {
-    if (p.have_obstacle.empty()) {
-      p.obstacles.resize(obstacles_.size());
-      p.have_obstacle.assign(obstacles_.size() + 1, false);  // + 1: never empty after this
-      p.links.resize(path_.size());
-      p.have_links.assign(path_.size(), 0);
-    }
-    return p;
-  }
-  const enclose::Pose_piece &link_pose(Piece &p, long base, size_t k, double a, double b) {
-    if (!p.have_links[k]) {
-      path_.enclose_link(a, b, k, base, p.bounds, p.have_bounds);
-      p.links[k] = pose_piece(p.bounds[k]);
-      p.have_links[k] = 1;
-    }
-    return p.links[k];
-  }
-  Piece &at(long base, int d, long i) { return start(pieces_[{base, d, i}]); }
-  // The instant i / 2^d, kept under its lowest terms (the end of one piece is the start
-  // of the next, and of pieces of other depths).
-  Piece &instant(long base, int d, long i) {
-    while (d > 0 && i % 2 == 0) {
-      i /= 2;
-      --d;
-    }
-    if (i == 0) d = 0;
-    return start(instants_[{base, d, i}]);
-  }
-
-  const motion::Chain_path &path_;
-  const std::vector<Moving_body> &obstacles_;
-  // Keyed by (base, depth, index): links relative to link base (-1: the world, and the
-  // obstacles), on the piece or at the instant index / 2^depth.
-  std::map<std::tuple<long, int, long>, Piece> pieces_;
-  std::map<std::tuple<long, int, long>, Piece> instants_;
-};
 
 // The report of a witness found by the filter (decide mode): the pair alone, touching
 // exactly at the witness's instant (scene.h, solve_planned's decide report).
@@ -306,16 +184,34 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       return solid(r.bodies[p.i].body.get()) ||
              solid(p.j < nr ? r.bodies[p.j].body.get() : obst[p.j - nr].data.get());
     };
-    // The two bodies' body-frame boxes (Body_data::box_c, box_h: they hold the exact
-    // points) through the pose enclosures at t = 0, and then each solid's box against
-    // the other's tested points (solid_zero.h).
-    auto may_hold_at_zero = [&](const Pair_plan &p) {
+    // A solid (narrow/containment.h) may hold the other body with no surface near: the
+    // filter bounds surface contacts only, so a pair with a solid whose bodies' boxes
+    // (Body_data::box_c, box_h: they hold the exact points) meet at t = 0 through the
+    // pose enclosures then may be in contact at t = 0 whatever its bound, unless
+    // solid_start.h certifies that neither holds a containment point of the other then
+    // (issue 30: such pairs, nearly all never near, were 93% of a Panda's free
+    // segments' time). Boxes apart at t = 0: neither holds a point of the other then,
+    // and by continuity none until the surfaces meet, which the bound covers.
+    // Where the interval test is in doubt, the exact one (narrow/containment.h) on the
+    // exact poses at t = 0: the links on the segment q0 -> q0 (their t = 0 poses, built
+    // once, on the first such pair), the obstacles on their own motions.
+    std::vector<motion::Rigid_motion> at_zero;
+    std::vector<std::shared_ptr<const narrow::Motion_data>> at_zero_data(r.chain.size());
+    auto body_at_zero = [&](size_t k) -> Moving_body {
+      if (k >= nr) return obst[k - nr];
+      if (at_zero.empty())
+        at_zero = r.chain.segment_motions(q0, q0, nullptr, nullptr, ro.check_link ? &ro.check_link : nullptr);
+      const size_t L = r.bodies[k].link;
+      if (!at_zero_data[L]) at_zero_data[L] = narrow::prepare_motion(at_zero[L], true);
+      return narrow::prepare_body(r.bodies[k].body, at_zero_data[L]);
+    };
+    auto may_contain_at_zero = [&](const Pair_plan &p) {
+      if (!solid_pair(p)) return false;
       const long base = base_of(p);
       const Filter_side a = side(p.i, base), b = side(p.j, base);
-      const enclose::Pose_piece &pa = a.instant(0, 0), &pb = b.instant(0, 0);
-      return enclose::boxes_meet(enclose::frame_box(pa, a.data->box_c, a.data->box_h),
-                                 enclose::frame_box(pb, b.data->box_c, b.data->box_h)) &&
-             !solids_apart_at_zero(*a.data, pa, *b.data, pb);
+      return enclose::boxes_meet(enclose::frame_box(a.instant(0, 0), a.data->box_c, a.data->box_h),
+                                 enclose::frame_box(b.instant(0, 0), b.data->box_c, b.data->box_h)) &&
+             !solids_apart_at_zero(a, b) && contained_exactly_at_zero(body_at_zero(p.i), body_at_zero(p.j));
     };
     std::vector<Pair_plan> kept;
     Witness found;
@@ -373,13 +269,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         lim.until = decide ? p.lower : horizon;
         if (decide) lim.max_tests = kAfter_tests;
       }
-      // A solid (narrow/containment.h) may hold the other body with no surface near:
-      // the filter bounds surface contacts only, so a pair with a solid whose bodies'
-      // boxes meet at t = 0 goes to the exact solve (its containment test at t = 0)
-      // with no bound. Boxes apart at t = 0, or each solid's box missing the other's
-      // tested points: neither holds a point of the other then, and by continuity none
-      // until the surfaces meet, which the bound covers.
-      if (p.lower > 0 && solid_pair(p) && may_hold_at_zero(p)) p.lower = 0;
+      // Such a pair goes to the exact solve (its containment test at t = 0) with bound 0.
+      if (p.lower > 0 && may_contain_at_zero(p)) p.lower = 0;
       if (p.lower <= horizon) kept.push_back(p);
     }
     std::stable_sort(kept.begin(), kept.end(),
@@ -399,17 +290,18 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       constexpr size_t kWindow_tests = 4096;
       // A tighter window: the witness pair's own bound without witnesses (to the finest
       // piece), and a witness just after it.
+      // A witness pair that may be in contact at t = 0 by containment keeps bound 0 (the
+      // bound below is of surface contacts only: a window from it would test
+      // containment at its start, not at 0).
       for (Pair_plan &p : kept)
-        if (p.i == found_i && p.j == found_j) {
+        if (p.i == found_i && p.j == found_j && !may_contain_at_zero(p)) {
           Filter_limits upto;
           upto.until = horizon;
           upto.delta_lo = lim.delta_lo;
           const long base = base_of(p);
-          const double bound = first_uncleared(side(p.i, base), side(p.j, base), reach, upto);
-          // A solid pair held at 0 above keeps 0: the bound speaks of surfaces only (a
-          // link holding an obstacle at t = 0 was reported first touching where its
-          // surface left it: corpus/robots/solid-link-holds-obstacle-at-zero.robot).
-          if (!(p.lower == 0 && solid_pair(p) && may_hold_at_zero(p))) p.lower = std::max(p.lower, bound);
+          // (The guard above: a link holding an obstacle at t = 0 was reported first
+          // touching where its surface left it: corpus/robots/solid-link-holds-obstacle-at-zero.robot.)
+          p.lower = std::max(p.lower, first_uncleared(side(p.i, base), side(p.j, base), reach, upto));
           Witness w;
           if (p.lower < horizon &&
               witness_after(side(p.i, base), side(p.j, base), p.lower, w, reach, lim.delta_lo, kWindow_tests)) {

@@ -11,8 +11,9 @@
 //     contact times from the links' interval poses straight from the joint path
 //     (motion/chain_path.h) and the obstacles' enclosures; a pair separated on all of
 //     [0, 1] is dropped, the others are sorted by their bound. A pair with a solid mesh
-//     whose bodies' boxes meet at t = 0 gets bound 0 and is kept: the filter bounds
-//     surface contacts, not containment (narrow/containment.h).
+//     whose bodies' boxes meet at t = 0 gets bound 0 and is kept (the filter bounds
+//     surface contacts, not containment: narrow/containment.h) unless solid_start.h
+//     certifies that neither holds a containment point of the other at t = 0.
 //  3. the exact link motions (motion::Chain::segment_motions, lazily: only the links of
 //     the pairs left, and their ancestors) and the exact solve of those pairs, in order
 //     (scene.h, solve_planned: decide mode stops at the first pair in contact; first-
