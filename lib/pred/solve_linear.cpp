@@ -19,12 +19,13 @@ namespace {
 // the side conditions there in interval arithmetic. The interval search then mostly
 // meets the same uncertain side conditions: of the distinct queries bench_linear
 // --workloads public ran (../shared/data/ccd-queries and its warm-up) that reached the
-// staged solver this way, 52 of 56 vertex-face and 83 of 95 edge-edge without a time
-// ended in the exact stage anyway (docs/benchmarks-tail.md). Used without a time only:
-// with one, the exact search resumes the interval search's bisection (solve.cpp), which
-// skipping loses, and 50 of 138 edge-edge such queries were decided by intervals;
-// skipping measured slower there. A prediction only: it picks which stage runs first,
-// never an answer (Solve_options::interval_search).
+// staged solver this way, 52 of 56 vertex-face and 83 of 95 edge-edge without a time,
+// and 130 of 142 vertex-face with a time, ended in the exact stage anyway
+// (docs/benchmarks-tail.md). Not used for edge-edge with a time: there the exact search
+// resumes the interval search's bisection (solve.cpp), which skipping loses, and 50 of
+// 138 such queries were decided by intervals; skipping measured slower there. A
+// prediction only: it picks which stage runs first, never an answer
+// (Solve_options::interval_search).
 bool interval_search_predicted_to_fail(const Cubic_bernstein &f) {
   if (!f.ok) return false;
   for (int k = 0; k < 4; ++k)
@@ -82,7 +83,7 @@ void solve_linear(int kind, size_t n, const double *p0, const double *p1, const 
       case Linear_verdict::unknown: break;
     }
     if (crossing_hit(kind, p0, p1, f, opt, out)) return;
-    if (!opt.want_time && interval_search_predicted_to_fail(f)) {
+    if ((!opt.want_time || kind == VERTEX_FACE) && interval_search_predicted_to_fail(f)) {
       Solve_options exact_only = opt;
       exact_only.interval_search = false;
       out = solve_staged(kind, n, p0, p1, exact_only);

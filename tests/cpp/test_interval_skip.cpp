@@ -8,9 +8,10 @@
 //    answer, the contact time 1/2 inside the enclosure (exact 1/2 when asked), and the
 //    staged solver with and without the interval search agree exactly (collides,
 //    enclosure, exactness, features), also with solve_linear;
-//  - a query of the public query set (../shared/data/ccd-queries) on which the
-//    interval search decides but the prediction fires: without a time, solve_linear
-//    now answers from the exact stage, with the staged solver's answer.
+//  - queries of the public query set (../shared/data/ccd-queries) on which the
+//    interval search decides but the prediction fires (vertex-face, without and with a
+//    time): solve_linear now answers from the exact stage, with the staged solver's
+//    answer.
 // Prints "N passed, N failed"; exit status 0 only when none failed.
 #include <cstdio>
 #include <functional>
@@ -122,6 +123,16 @@ int main() {
   expect(with.stage == pred::STAGE_INTERVAL && with.collides, "public case: the interval search decides it", 0);
   expect(lin.stage == pred::STAGE_EXACT, "public case: predicted, decided by the exact stage", 0);
   expect(lin.collides && lin.features == with.features, "public case: the staged solver's answer", 0);
+  // From ../shared/data/ccd-queries (unit-tests/vertex-face/data_0_0.csv): the same with
+  // a time (the prediction is used with a time for vertex-face): the same enclosure.
+  const double u0[12] = {0, 1, 0, -1, 0, 1, 1, 0, 1, 0, 0, -1};
+  const double u1[12] = {0, 0, -0x1p-23, -1, 1, 1, 1, 1, 1, 0, 1, -1};
+  Solve_options timed;
+  pred::solve_linear(pred::VERTEX_FACE, 4, u0, u1, timed, lin);
+  const Contact_result with_t = staged(pred::VERTEX_FACE, 4, u0, u1, timed);
+  expect(with_t.stage == pred::STAGE_INTERVAL, "public case with a time: the interval search decides it", 0);
+  expect(lin.stage == pred::STAGE_EXACT, "public case with a time: predicted, decided by the exact stage", 0);
+  expect(same(lin, with_t), "public case with a time: the staged solver's answer", 0);
   std::printf("%ld passed, %ld failed\n", passed, failed);
   return failed ? 1 : 0;
 }
