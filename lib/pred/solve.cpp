@@ -312,15 +312,15 @@ Contact_result solve_at(const Query_data<Interval> &iq,
   // from there: the midpoint bisection's steps do not depend on the stage taking them).
   poly::Search_state<Interval> progress;
   Feature_set<Interval> iset;
-  try {
-    iset = build_systems(iq);
-    poly::Search_result<Interval> r = search(iset, opt, &progress);
-    fill(out, iset, r);
-    out.stage = STAGE_INTERVAL;
-    decided = true;
-  } catch (const arith::Uncertain &) {
-    out = Contact_result();
-  }
+  if (opt.interval_search) try {
+      iset = build_systems(iq);
+      poly::Search_result<Interval> r = search(iset, opt, &progress);
+      fill(out, iset, r);
+      out.stage = STAGE_INTERVAL;
+      decided = true;
+    } catch (const arith::Uncertain &) {
+      out = Contact_result();
+    }
   if (decided && !(out.collides && opt.want_time && opt.want_exact && !out.exact)) return out;
 
   // A time was enclosed in intervals and may be rational. Most are not, which a cheap

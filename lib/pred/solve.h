@@ -40,6 +40,13 @@ struct Solve_options {
     delta = d;
     delta_box = arith::enclose(d);
   }
+  // Run the interval search (build_systems on intervals, poly/earliest.h) before the
+  // exact one. Off only where a caller predicts the interval search cannot decide
+  // (solve_linear.cpp): then the exact search starts from [0, 1] instead of the
+  // interval one's last state, with the same answer (the midpoint bisection's steps do
+  // not depend on the stage taking them); only the stage reported may differ. Never
+  // changes whether or when a contact is found.
+  bool interval_search = true;
   // The one test of "a minimum distance is set" (config.min_distance > 0).
   bool min_distance() const { return sgn(delta) > 0; }
 };

@@ -4,12 +4,34 @@
 #include "arith/interval.h"
 #include "pred/delta_filter.h"
 
+#include <cmath>
+
 namespace pccd::pred {
 
 using arith::Interval;
 using arith::Rational;
 
 namespace {
+
+// True when the certified Bernstein coefficients of the contact cubic f all have a
+// certain sign (linear_filter.h) and yet the filters could not decide: f certainly
+// changes sign in (0, 1), and the crossing filter (linear_crossing.h) could not tell
+// the side conditions there in interval arithmetic. The interval search then mostly
+// meets the same uncertain side conditions: of the distinct queries bench_linear
+// --workloads public ran (../shared/data/ccd-queries and its warm-up) that reached the
+// staged solver this way, 52 of 56 vertex-face and 83 of 95 edge-edge without a time,
+// and 130 of 142 vertex-face with a time, ended in the exact stage anyway
+// (docs/benchmarks-tail.md). Not used for edge-edge with a time: there the exact search
+// resumes the interval search's bisection (solve.cpp), which skipping loses, and 50 of
+// 138 such queries were decided by intervals; skipping measured slower there. A
+// prediction only: it picks which stage runs first, never an answer
+// (Solve_options::interval_search).
+bool interval_search_predicted_to_fail(const Cubic_bernstein &f) {
+  if (!f.ok) return false;
+  for (int k = 0; k < 4; ++k)
+    if (!(std::fabs(f.value[k]) > f.bound[k])) return false;
+  return true;
+}
 
 // The staged solver on n points with finite coordinates.
 Contact_result solve_staged(int kind, size_t n, const double *p0, const double *p1,
@@ -61,6 +83,12 @@ void solve_linear(int kind, size_t n, const double *p0, const double *p1, const 
       case Linear_verdict::unknown: break;
     }
     if (crossing_hit(kind, p0, p1, f, opt, out)) return;
+    if ((!opt.want_time || kind == VERTEX_FACE) && interval_search_predicted_to_fail(f)) {
+      Solve_options exact_only = opt;
+      exact_only.interval_search = false;
+      out = solve_staged(kind, n, p0, p1, exact_only);
+      return;
+    }
   } else {
     // The staged solver's first test with a minimum distance (delta_filter.h), on the
     // same enclosures, before its interval query is built.

@@ -4,7 +4,9 @@
 // the staged solver (solve.h) only when neither decides. With a minimum distance those
 // fast paths are skipped (they assume delta = 0); the staged solver's first test, the
 // separating-direction filter (delta_filter.h), runs on the doubles before its interval
-// query is built. The answer and stage are the staged solver's.
+// query is built. The answer and stage are the staged solver's, except that its
+// interval search may be skipped where it is predicted not to decide
+// (solve_linear.cpp): the same answer, then from the exact stage.
 #pragma once
 #include <cstddef>
 
