@@ -19,8 +19,9 @@
 // [0, 1], earlier half first, carrying a front of node pairs from a piece to its halves
 // (as bvh/bvh_source.h does with exact-motion enclosures): a node pair whose world boxes
 // miss is dropped with both subtrees for the piece and its sub-pieces; a meeting pair
-// splits its larger node while that node is larger than the piece's spread (what the
-// motion adds to a box), else waits for the halves. A piece whose front empties is
+// splits its larger node while that node is larger than kSplit_factor (link_filter.cpp)
+// times the piece's spread (what the motion adds to a box; on the finest piece, which
+// has no halves, than the spread), else waits for the halves. A piece whose front empties is
 // separated: no element pair touches at any t of it (a touching pair of elements lies
 // in leaves whose boxes, and whose ancestors' boxes, all meet on every piece holding
 // that t). A front that outgrows kMax_front on a piece hands its unprocessed pairs to
