@@ -109,6 +109,13 @@ Scene_report solve_exact(const Robot_model &r, const double *q0, const double *q
   };
   Scene_options o = opt;
   if (win.on) o.solve.until = 1;  // the window ends at the witness: every contact up to it
+  // The time tolerance is one of t: a width tol / (hi - lo) in s is tol in t (the report's
+  // enclosures, combine.h's included, map back scaled by hi - lo). The same tol in s asked
+  // for enclosures 2^14 times tighter than tol on a window of 2^-14, below the spacing
+  // of doubles there, so the interval stage could not isolate the first time and the
+  // contact pair went to the exact stage (issue 30: 8 of the 23 ms of a colliding Panda
+  // segment, and most of the min_distance cost).
+  if (win.on) o.solve.tol = opt.solve.tol / (Rational(win.hi) - Rational(win.lo));
   // On the window (2^-14 wide on the bench's colliding segments) the automatic phase is
   // bvh: its certified spreads are tiny there, so it hands over a few dozen candidates
   // that the interval stages decide, where the range phase chosen by estimate paid about
