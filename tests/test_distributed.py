@@ -195,6 +195,11 @@ def test_a_killed_worker_loses_no_result(client):
             killed = next(iter(pids.values()))
             os.kill(killed, signal.SIGKILL)
     assert killed is not None and got == serial
+    rejoined(client, killed, pids)
+
+
+def rejoined(client, killed, pids):
+    """Waits until the nanny's new worker has joined (2 workers, none the killed one)."""
     deadline = time.time() + 60
     while time.time() < deadline:  # the nanny's new worker joins
         try:
@@ -205,6 +210,29 @@ def test_a_killed_worker_loses_no_result(client):
             break
         time.sleep(0.2)
     assert killed not in now.values() and len(now) == 2, (pids, now)
+
+
+def test_a_lost_shared_copy_is_scattered_again(client):
+    """The body an index_map shares lives on one worker only (dask's memory manager may
+    drop the copies of a broadcast), and that worker is killed: the chunks cancelled for
+    the lost body are sent again with the body scattered again, and every answer
+    arrives, equal to the serial run. (The clean-clone CI rehearsal of 2026-11-28 saw
+    test_a_killed_worker_loses_no_result fail this way: a FutureCancelledError where a
+    chunk's answers belonged.)"""
+    queries = query_bodies(400, hit_every=1)
+    serial = Index(PLATE).query_many(queries)
+    holder = sorted(client.scheduler_info()["workers"])[0]
+    pd._SCATTERED[(client.id, pd._body_token(PLATE))] = \
+        client.scatter([PLATE], workers=[holder], hash=False)[0]  # index_map finds it
+    pids = client.run(os.getpid)
+    got, killed = [], None
+    for r in pd.index_map(PLATE, queries, client=client, chunk_size=25):
+        got.append(r)
+        if killed is None and len(got) >= 25:
+            killed = pids[holder]
+            os.kill(killed, signal.SIGKILL)
+    assert killed is not None and got == serial
+    rejoined(client, killed, pids)
 
 
 def test_a_bad_item_gets_its_own_error_and_the_others_their_answers(client, tmp_path):

@@ -76,6 +76,9 @@ EMBEDDED_CONFIG = {"distributed.scheduler.worker-saturation": float("inf"),
                    "distributed.worker.memory.monitor-interval": "1s"}
 
 
+K_RETRIES = 3  # map_chunks: times a chunk cancelled by a lost shared copy is sent again
+
+
 @contextmanager
 def cluster(client=None, *, scheduler=None, workers=None, threads_per_worker=1, dashboard=False,
             processes=True):
@@ -147,21 +150,30 @@ def _fixed_size(chunk_size):
 
 
 def map_chunks(fn, items, *shared, client=None, chunk_size=None, progress=None,
-               desc="polyccd", unit="it"):
+               desc="polyccd", unit="it", rescatter=None):
     """Yields ``fn(chunk, *shared)`` item by item, in the order of items: items are cut into
     chunks (lists), fn returns one answer per item of its chunk. chunk_size: items per
     chunk, or None: sized by the cost per item measured on the workers (_chunks.Sizer:
     small probes first, then chunks of about 0.1 s of work). shared: objects every task
     needs, scattered once to every worker (fn gets them as they were); a Future is
-    passed as it is. fn must be importable by the workers (a module-level function)."""
+    passed as it is. fn must be importable by the workers (a module-level function).
+    A chunk cancelled because a worker that held the only copy of a shared object died
+    (dask's memory manager keeps fewer copies than a broadcast made) is sent again with
+    the shared objects scattered again: rescatter() gives the Futures given in shared
+    anew (index_map: its body), the other objects are scattered from shared; at most
+    K_RETRIES times a chunk, then an InternalError."""
     client = _client(client)
     items = list(items)
     workers = len(client.scheduler_info().get("workers", {}))
     sizer = Sizer(len(items), workers, _fixed_size(chunk_size))
     # One future per object (a list or dict given to scatter would be split up); a
     # future given in shared (index_map's body, kept across calls) is passed as it is.
-    scattered = [s if isinstance(s, _distributed.Future)
-                 else client.scatter([s], broadcast=True, hash=False)[0] for s in shared]
+    def place(fresh=None):
+        return [(fresh.pop(0) if fresh else s) if isinstance(s, _distributed.Future)
+                else client.scatter([s], broadcast=True, hash=False)[0] for s in shared]
+
+    scattered = place()
+    retries = {}  # chunk -> times sent again
     task = functools.partial(timed_chunk, fn)
     bounds, live = [], {}  # chunk k's (start, end); future key -> (k, future)
     running = _distributed.as_completed(loop=client.loop, with_results=True)
@@ -183,9 +195,20 @@ def map_chunks(fn, items, *shared, client=None, chunk_size=None, progress=None,
     try:
         submit(sizer.in_flight())
         for batch in running.batches():  # what finished since the last: one round trip
-            for future, (answers, seconds) in batch:
+            for future, result in batch:
                 k, _ = live.pop(future.key)
                 a, b = bounds[k]
+                if isinstance(result, BaseException):  # cancelled: a shared copy was lost
+                    retries[k] = retries.get(k, 0) + 1
+                    if retries[k] > K_RETRIES:
+                        raise InternalError(f"{fn.__name__}: chunk {k} (items {a}..{b - 1}) was "
+                                            f"cancelled {retries[k]} times: {result!r}")
+                    scattered = place(list(rescatter()) if rescatter else None)
+                    again = client.submit(task, items[a:b], *scattered, pure=False)
+                    live[again.key] = (k, again)
+                    running.add(again)
+                    continue
+                answers, seconds = result
                 if len(answers) != b - a:
                     raise InputError(f"{fn.__name__}: {len(answers)} answers for a chunk of "
                                      f"{b - a}")
@@ -293,7 +316,8 @@ def index_map(index, queries, *, client=None, chunk_size=None, progress=None, **
     shared = _broadcast_body(client, token, body)
     answers = map_chunks(_index_chunk, list(enumerate(queries)), shared, token, options,
                          client=client, chunk_size=chunk_size, progress=progress,
-                         desc="index queries", unit="query")
+                         desc="index queries", unit="query",
+                         rescatter=lambda: [_broadcast_body(client, token, body)])
     for q, r in zip(queries, answers):
         if not isinstance(r, Exception):
             object.__setattr__(r, "bodies", (body, q))
