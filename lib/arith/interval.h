@@ -107,11 +107,13 @@ inline Interval operator*(const Interval &a, const Interval &b) {
     }
   }
   double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-  double lo = std::fmin(std::fmin(p1, p2), std::fmin(p3, p4));
-  double hi = std::fmax(std::fmax(p1, p2), std::fmax(p3, p4));
   if (std::isnan(p1) || std::isnan(p2) || std::isnan(p3) || std::isnan(p4))
     return {-HUGE_VAL, HUGE_VAL};
-  return {round_down(lo), round_up(hi)};
+  // No NaN: plain comparisons (one instruction each; std::fmin is a libm call, and its
+  // only other difference, the sign of a zero, is lost in round_down / round_up).
+  auto mn = [](double x, double y) { return y < x ? y : x; };
+  auto mx = [](double x, double y) { return x < y ? y : x; };
+  return {round_down(mn(mn(p1, p2), mn(p3, p4))), round_up(mx(mx(p1, p2), mx(p3, p4)))};
 }
 // Division needs a divisor that certainly excludes zero; otherwise Uncertain.
 inline Interval operator/(const Interval &a, const Interval &b) {

@@ -80,6 +80,7 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
   origin_.resize(n);
   axis2_.resize(n);
   axis_.resize(n);
+  consts_.resize(n);
   for (size_t k = 0; k < n; ++k) {
     const Chain_link &L = c.link(k);
     ends_[k] = joint_doubles(L, q0[k], q1[k]);
@@ -89,6 +90,18 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
       a[i] = Interval(axis_[k][i]);
     }
     axis2_[k] = sq(a[0]) + sq(a[1]) + sq(a[2]);
+    Link_consts &C = consts_[k];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) C.B[i][j] = a[i] * a[j] - (i == j ? axis2_[k] : Interval(0.0));
+    // |a| enclosed: sqrt is within one ulp in any rounding mode, so two steps out suffice.
+    const double an_lo = std::sqrt(axis2_[k].lo), an_hi = std::sqrt(axis2_[k].hi);
+    C.A = Interval(round_down(round_down(an_lo)), round_up(round_up(an_hi)));
+    const Joint_doubles &d = ends_[k];
+    C.dc = Interval(d.c1) - Interval(d.c0);
+    C.ds = Interval(d.s1) - Interval(d.s0);
+    const Interval K = Interval(d.c0) * C.ds - Interval(d.s0) * C.dc;
+    const double mK = std::max(std::fabs(K.lo), std::fabs(K.hi));
+    C.akt = Interval(2.0) * C.A * Interval(mK);  // >= |2 A K|
     Interval w = L.origin_q_d[0], x = L.origin_q_d[1], y = L.origin_q_d[2], z = L.origin_q_d[3];
     const Interval ww = sq(w), xx = sq(x), yy = sq(y), zz = sq(z);
     const Interval nq = ww + xx + yy + zz;  // > 0: add_link refuses the zero quaternion
@@ -180,12 +193,12 @@ void Chain_path::ball_of_link(size_t k, const Interval &T, std::vector<Pose_boun
       alpha = clip(alpha, -1, 1);
       beta = clip(beta, 0, 2);
     }
-    // I + alpha [a]x + beta (a a^T - |a|^2 I)
-    const Interval A[3] = {ax[0], ax[1], ax[2]};
-    const Interval cross[3][3] = {{0.0, -A[2], A[1]}, {A[2], 0.0, -A[0]}, {-A[1], A[0], 0.0}};
+    // I + alpha [a]x + beta (a a^T - |a|^2 I), the last matrix made once (consts_)
+    const Interval(&B)[3][3] = consts_[k].B;
+    const double cross[3][3] = {{0.0, -ax[2], ax[1]}, {ax[2], 0.0, -ax[0]}, {-ax[1], ax[0], 0.0}};
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
-        Interval v = beta * (A[i] * A[j] - (i == j ? axis2_[k] : Interval(0.0))) + alpha * cross[i][j];
+        Interval v = beta * B[i][j] + alpha * Interval(cross[i][j]);
         if (i == j) v = Interval(1.0) + v;
         J[i][j] = clip(v, -1, 1);
       }
@@ -215,9 +228,8 @@ void Chain_path::derivs_of_link(size_t k, const Interval &T, std::vector<Path_de
     d2p = Interval(Q.d2);
     o2p = Interval(Q.o2);
   }
-  // |a| enclosed: sqrt is within one ulp in any rounding mode, so two steps out suffice.
-  const double an_lo = std::sqrt(axis2_[k].lo), an_hi = std::sqrt(axis2_[k].hi);
-  const Interval A(round_down(round_down(an_lo)), round_up(round_up(an_hi)));
+  const Link_consts &C = consts_[k];
+  const Interval &A = C.A;
   const double *po = origin_[k].om;
   double vmax = norm(po), v1 = 0;
   Interval th1(0.0), th2(0.0);
@@ -225,8 +237,7 @@ void Chain_path::derivs_of_link(size_t k, const Interval &T, std::vector<Path_de
     vmax = up(vmax + up(A.hi * std::max(std::fabs(d.e0), std::fabs(d.e1))));
     v1 = mag(A * (Interval(d.e1) - Interval(d.e0)));  // |v'| = |A (e1 - e0)|
   } else if (L.joint == Joint_type::revolute || L.joint == Joint_type::continuous) {
-    const Interval dc = Interval(d.c1) - Interval(d.c0), ds = Interval(d.s1) - Interval(d.s0);
-    const Interval K = Interval(d.c0) * ds - Interval(d.s0) * dc;
+    const Interval &dc = C.dc, &ds = C.ds;
     const Interval c = line(d.c0, d.c1, T), s = line(d.s0, d.s1, T);
     const Interval nn = sq(c) + sq(s) * axis2_[k];
     if (!(nn.lo > 0)) {
@@ -234,7 +245,7 @@ void Chain_path::derivs_of_link(size_t k, const Interval &T, std::vector<Path_de
       return;
     }
     const Interval nlo(nn.lo), np = Interval(2.0) * (c * dc + axis2_[k] * s * ds);
-    const Interval akt = Interval(2.0) * A * Interval(mag(K));  // >= |2 A K|
+    const Interval &akt = C.akt;  // >= |2 A K|
     th1 = Interval(mag(akt / nlo));
     th2 = Interval(mag(akt * Interval(mag(np)) / (nlo * nlo)));
   }

@@ -100,6 +100,15 @@ class Chain_path {
   std::vector<Pose_bounds> origin_;  // each link's origin pose (R of origin_q, p: rho = 0)
   std::vector<arith::Interval> axis2_;  // |a|^2 of each joint axis
   std::vector<std::array<double, 3>> axis_;  // each joint axis (doubles, exact)
+  // Per link, the piece-independent parts, made once by the constructor with the same
+  // interval operations the per-piece formulas would apply (so the same intervals):
+  // a a^T - |a|^2 I of the revolute factor, and for derivs_of_link |a| enclosed, the
+  // slopes c1 - c0, s1 - s0, and |2 A K| (its upper end), K = c0 (s1 - s0) - s0 (c1 - c0).
+  struct Link_consts {
+    arith::Interval B[3][3];
+    arith::Interval A, dc, ds, akt;
+  };
+  std::vector<Link_consts> consts_;
 };
 
 }  // namespace pccd::motion

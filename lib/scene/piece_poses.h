@@ -3,8 +3,8 @@
 // each computed once per check, on its first demand.
 #pragma once
 #include <cmath>
-#include <map>
-#include <tuple>
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "motion/chain_path.h"
@@ -62,7 +62,7 @@ class Piece_poses {
     return link_pose(instant(base, d, i), base, k, t, t);
   }
   Side_piece obstacle(size_t k, int d, long i) {
-    Piece &p = at(-1, d, i);
+    Piece &p = with_obstacles(at(-1, d, i));
     if (!p.have_obstacle[k]) {
       const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
       p.obstacles[k] = still(k) || d == 0 ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], a, b);
@@ -74,7 +74,7 @@ class Piece_poses {
     return s;
   }
   const enclose::Pose_piece &obstacle_at(size_t k, int d, long i) {
-    Piece &p = instant(-1, d, i);
+    Piece &p = with_obstacles(instant(-1, d, i));
     if (!p.have_obstacle[k]) {
       const double t = std::ldexp(static_cast<double>(i), -d);
       p.obstacles[k] = still(k) ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], t, t);
@@ -98,16 +98,20 @@ class Piece_poses {
   };
   // A stationary obstacle's pose is the same on every piece.
   bool still(size_t k) const { return obstacles_[k].mo == narrow::identity_motion(); }
-  Piece &start(Piece &p) {
+  // A piece's link and obstacle slots are made on the first demand of their kind (a
+  // piece relative to a link base never holds obstacles).
+  Piece &with_obstacles(Piece &p) {
     if (p.have_obstacle.empty()) {
       p.obstacles.resize(obstacles_.size());
       p.have_obstacle.assign(obstacles_.size() + 1, false);  // + 1: never empty after this
-      p.links.resize(path_.size());
-      p.have_links.assign(path_.size(), 0);
     }
     return p;
   }
   const enclose::Pose_piece &link_pose(Piece &p, long base, size_t k, double a, double b) {
+    if (p.have_links.empty()) {
+      p.links.resize(path_.size());
+      p.have_links.assign(path_.size(), 0);
+    }
     if (!p.have_links[k]) {
       path_.enclose_link(a, b, k, base, p.bounds, p.have_bounds);
       p.links[k] = pose_piece(p.bounds[k]);
@@ -115,7 +119,9 @@ class Piece_poses {
     }
     return p.links[k];
   }
-  Piece &at(long base, int d, long i) { return start(pieces_[{base, d, i}]); }
+  // Looked up through a one-entry memo: the filter asks for both sides of a pair on the
+  // same piece in a row, and a side's pieces run through depths at one index pattern.
+  Piece &at(long base, int d, long i) { return find(pieces_, last_piece_, {base, d, i}); }
   // The instant i / 2^d, kept under its lowest terms (the end of one piece is the start
   // of the next, and of pieces of other depths).
   Piece &instant(long base, int d, long i) {
@@ -124,15 +130,39 @@ class Piece_poses {
       --d;
     }
     if (i == 0) d = 0;
-    return start(instants_[{base, d, i}]);
+    return find(instants_, last_instant_, {base, d, i});
   }
 
   const motion::Chain_path &path_;
   const std::vector<Moving_body> &obstacles_;
   // Keyed by (base, depth, index): links relative to link base (-1: the world, and the
-  // obstacles), on the piece or at the instant index / 2^depth.
-  std::map<std::tuple<long, int, long>, Piece> pieces_;
-  std::map<std::tuple<long, int, long>, Piece> instants_;
+  // obstacles), on the piece or at the instant index / 2^depth. Hashed (the filter asks
+  // for a pose per pair and piece: an ordered map's lookups were 2-3% of a check);
+  // unordered_map never moves its elements, so the references handed out stay valid.
+  struct Key {
+    long base;
+    int d;
+    long i;
+    bool operator==(const Key &o) const { return base == o.base && d == o.d && i == o.i; }
+  };
+  struct Key_hash {
+    size_t operator()(const Key &k) const {
+      uint64_t h = static_cast<uint64_t>(k.i) * 0x9E3779B97F4A7C15ull;  // Fibonacci hashing
+      h ^= (static_cast<uint64_t>(k.base + 1) << 8 | static_cast<uint64_t>(k.d)) * 0xC2B2AE3D27D4EB4Full;
+      return static_cast<size_t>(h ^ (h >> 29));
+    }
+  };
+  using Map = std::unordered_map<Key, Piece, Key_hash>;
+  struct Memo {
+    Key key{0, -1, 0};  // depth -1: no key yet
+    Piece *piece = nullptr;
+  };
+  static Piece &find(Map &m, Memo &last, const Key &k) {
+    if (!(last.piece && last.key == k)) last = {k, &m[k]};
+    return *last.piece;
+  }
+  Map pieces_, instants_;
+  Memo last_piece_, last_instant_;
 };
 
 }  // namespace pccd::scene
