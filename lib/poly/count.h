@@ -65,7 +65,7 @@ long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT
   constexpr bool exact = std::is_same<NT, Rational>::value;
   const NT zero = arith::from_int<NT>(0), one = arith::from_int<NT>(1);
   Poly<NT> F = reparametrize(f, a, b);
-  if constexpr (exact) F = primitive_monic_sign(F);  // same roots, integers, lc > 0
+  if constexpr (exact) F = primitive_monic_sign(std::move(F));  // same roots, integers, lc > 0
   // The exact path reads the same signs from integer multiples of the Bernstein
   // vectors (subdivide.h: bernstein_integer), the same decisions without fractions.
   if (filters) {
@@ -83,7 +83,7 @@ long count_roots(const Poly<NT> &f, const std::vector<Poly<NT>> &conds, const NT
     Poly<NT> G = reparametrize(g, a, b);
     int s = 0;
     if constexpr (exact) {
-      G = primitive_positive(G);  // same signs, integers
+      G = primitive_positive(std::move(G));  // same signs, integers
       if (filters) s = certain_sign_on_integers(G);
     } else if (filters) {
       s = certain_sign_on(G, zero, one);

@@ -69,8 +69,8 @@ bool coprime_mod_p(const Poly<Rational> &a, const Poly<Rational> &b) {
 Poly<Rational> gcd(Poly<Rational> a, Poly<Rational> b) {
   if (a.c.empty()) return monic(std::move(b));
   if (b.c.empty()) return monic(std::move(a));
-  a = primitive_monic_sign(a);
-  b = primitive_monic_sign(b);
+  a = primitive_monic_sign(std::move(a));
+  b = primitive_monic_sign(std::move(b));
   if (a.degree() < b.degree()) std::swap(a, b);
   // Coprime polynomials (most pairs the feature systems ask about) are recognized
   // modulo one prime at a negligible cost; the sequence below is for the rest.
@@ -79,7 +79,7 @@ Poly<Rational> gcd(Poly<Rational> a, Poly<Rational> b) {
     util::work_step();  // a remainder of long numbers can take long (util/work_budget.h)
     Poly<Rational> r = prem_positive(std::move(a), b);  // primitive, c * (a mod b)
     a = std::move(b);
-    b = primitive_monic_sign(r);
+    b = primitive_monic_sign(std::move(r));
   }
   return monic(std::move(a));
 }

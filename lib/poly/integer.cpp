@@ -4,7 +4,9 @@
 
 namespace pccd::poly {
 
-Poly<Rational> primitive_positive(const Poly<Rational> &p) {
+// p by value: a caller that passes a temporary (std::move) gets its coefficients
+// divided in place, without a copy of each Rational (two allocations apiece).
+Poly<Rational> primitive_positive(Poly<Rational> p) {
   if (p.c.empty()) return p;
   // Integer coefficients (the exact stage's normal form): the gcd of the numerators
   // alone (the general route below with l = 1, without its divisions and copies).
@@ -17,10 +19,9 @@ Poly<Rational> primitive_positive(const Poly<Rational> &p) {
       mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), mpq_numref(x.get_mpq_t()));
     }
     if (g == 1 || g == 0) return p;  // primitive already (0: all zero, untrimmed)
-    std::vector<Rational> out(p.c.size());
-    for (size_t i = 0; i < p.c.size(); ++i)
-      mpz_divexact(mpq_numref(out[i].get_mpq_t()), mpq_numref(p.c[i].get_mpq_t()), g.get_mpz_t());
-    return Poly<Rational>(std::move(out));
+    for (Rational &x : p.c)  // denominators stay 1: still canonical
+      mpz_divexact(mpq_numref(x.get_mpq_t()), mpq_numref(x.get_mpq_t()), g.get_mpz_t());
+    return p;
   }
   arith::Integer l = 1, g = 0;
   for (const Rational &x : p.c) {
@@ -41,29 +42,38 @@ Poly<Rational> primitive_positive(const Poly<Rational> &p) {
   return Poly<Rational>(std::move(out));
 }
 
-Poly<Rational> primitive_monic_sign(const Poly<Rational> &p) {
-  Poly<Rational> q = primitive_positive(p);
+Poly<Rational> primitive_monic_sign(Poly<Rational> p) {
+  Poly<Rational> q = primitive_positive(std::move(p));
   if (!q.c.empty() && sgn(q.lc()) < 0)
-    for (Rational &x : q.c) x = -x;
+    for (Rational &x : q.c) mpq_neg(x.get_mpq_t(), x.get_mpq_t());  // in place, canonical
   return q;
 }
 
 Poly<Rational> prem_positive(Poly<Rational> a, const Poly<Rational> &b) {
   const int db = b.degree();
   if (db < 0 || sgn(b.lc()) <= 0) throw arith::Internal_error("prem_positive: bad divisor");
-  const arith::Integer lb = b.lc().get_num();
+  const mpz_srcptr lb = mpq_numref(b.lc().get_mpq_t());
+  arith::Integer la;  // one buffer for every step's leading coefficient
   while (a.degree() >= db) {
     const int da = a.degree();
-    const arith::Integer la = a.lc().get_num();
-    util::work_cost([&] { return limbs(a) * limbs(lb) + limbs(la) * limbs(b); });
-    // a <- lb * a - la * t^(da-db) * b: the leading term cancels.
-    for (int i = 0; i < da - db; ++i) a.c[i] = Rational(a.c[i].get_num() * lb);
-    for (int i = 0; i <= db; ++i)
-      a.c[da - db + i] = Rational(a.c[da - db + i].get_num() * lb - la * b.c[i].get_num());
+    // a <- lb * a - la * t^(da-db) * b: the leading term cancels, so it is not computed;
+    // it is swapped out into la (its slot is popped below). Integer coefficients
+    // (denominators 1) are updated in place on their numerators: no temporaries.
+    util::work_cost([&] { return limbs(a) * mpz_size(lb) + limbs(a.c[da]) * limbs(b); });
+    mpz_swap(la.get_mpz_t(), mpq_numref(a.c[da].get_mpq_t()));
+    for (int i = 0; i < da - db; ++i) {
+      const mpz_ptr x = mpq_numref(a.c[i].get_mpq_t());
+      mpz_mul(x, x, lb);
+    }
+    for (int i = 0; i < db; ++i) {
+      const mpz_ptr x = mpq_numref(a.c[da - db + i].get_mpq_t());
+      mpz_mul(x, x, lb);
+      mpz_submul(x, la.get_mpz_t(), mpq_numref(b.c[i].get_mpq_t()));
+    }
     a.c.pop_back();
     a.trim();
   }
-  return primitive_positive(a);
+  return primitive_positive(std::move(a));
 }
 
 arith::Integer scaled_value(const Poly<Rational> &F, const Rational &t) {

@@ -8,11 +8,12 @@
 namespace pccd::poly {
 
 // c * p with c > 0 chosen so the result has coprime integer coefficients.
-Poly<Rational> primitive_positive(const Poly<Rational> &p);
+// (By value: pass a temporary to have it reduced in place.)
+Poly<Rational> primitive_positive(Poly<Rational> p);
 
 // The same, and also multiplied by -1 if needed for a positive leading coefficient
 // (for an f whose roots, not signs, matter).
-Poly<Rational> primitive_monic_sign(const Poly<Rational> &p);
+Poly<Rational> primitive_monic_sign(Poly<Rational> p);
 
 // c * (a mod b) with c > 0, for integer a and b with lc(b) > 0: pseudo-division
 // multiplying by lc(b) (positive) at each step, then made primitive.

@@ -145,6 +145,30 @@ Poly<Rational> operator+(const Poly<Rational> &a, const Poly<Rational> &b);
 template <>
 Poly<Rational> operator-(const Poly<Rational> &a, const Poly<Rational> &b);
 
+// sum_k sign[k] a[k] b[k] (sign +1 or -1) for n terms: the products and sums of the
+// motion layer's cross and dot products in one pass. Generic: by the operators above.
+template <class NT>
+Poly<NT> signed_products_generic(const Poly<NT> *const *a, const Poly<NT> *const *b,
+                                 const int *sign, size_t n) {
+  if (n == 0) return Poly<NT>();
+  Poly<NT> r = *a[0] * *b[0];  // the same operations as a0 b0 +- a1 b1 ... written out
+  if (sign[0] < 0) r = -r;
+  for (size_t k = 1; k < n; ++k) r = sign[k] > 0 ? r + *a[k] * *b[k] : r - *a[k] * *b[k];
+  return r;
+}
+template <class NT>
+Poly<NT> signed_products(const Poly<NT> *const *a, const Poly<NT> *const *b, const int *sign,
+                         size_t n) {
+  return signed_products_generic(a, b, sign, n);
+}
+// Integer inputs (the exact stage's normal form, rational_product.cpp): one integer
+// convolution into the result's numerators (mpz_addmul / mpz_submul), without the
+// temporaries of each product and sum (each Rational costs two allocations); other
+// rationals by the generic loop.
+template <>
+Poly<Rational> signed_products(const Poly<Rational> *const *a, const Poly<Rational> *const *b,
+                               const int *sign, size_t n);
+
 template <class NT>
 Poly<NT> operator*(const NT &s, const Poly<NT> &a) {
   std::vector<NT> r(a.c.size());

@@ -133,6 +133,32 @@ Poly<Rational> operator*(const Poly<Rational> &a, const Poly<Rational> &b) {
 }
 
 template <>
+Poly<Rational> signed_products(const Poly<Rational> *const *a, const Poly<Rational> *const *b,
+                               const int *sign, size_t n) {
+  size_t size = 0;
+  for (size_t k = 0; k < n; ++k) {
+    if (!integral(*a[k]) || !integral(*b[k])) return signed_products_generic(a, b, sign, n);
+    if (!a[k]->c.empty() && !b[k]->c.empty()) size = std::max(size, a[k]->c.size() + b[k]->c.size() - 1);
+  }
+  std::vector<Rational> r(size);  // each 0 / 1; numerators accumulate, denominators stay 1
+  for (size_t k = 0; k < n; ++k) {
+    const std::vector<Rational> &x = a[k]->c, &y = b[k]->c;
+    if (x.empty() || y.empty()) continue;  // a zero product (r may be shorter than x)
+    std::uint64_t size_y = 0;
+    if (util::current_budget())
+      for (const Rational &v : y) size_y += limbs(v);
+    const auto op = sign[k] > 0 ? mpz_addmul : mpz_submul;
+    for (size_t i = 0; i < x.size(); ++i) {
+      const mpz_srcptr xi = mpq_numref(x[i].get_mpq_t());
+      if (mpz_sgn(xi) == 0) continue;
+      util::work_cost([&] { return limbs(x[i]) * size_y + limbs(r[i]) * y.size(); });  // as integer_product
+      for (size_t j = 0; j < y.size(); ++j) op(mpq_numref(r[i + j].get_mpq_t()), xi, mpq_numref(y[j].get_mpq_t()));
+    }
+  }
+  return Poly<Rational>(std::move(r));  // trimmed: the sum may cancel leading terms
+}
+
+template <>
 Rational Poly<Rational>::eval(const Rational &t) const {
   // c_i = C_i / L (L the lcm of the denominators) and t = p / q:
   // f(t) = (sum C_i p^i q^(n-i)) / (L q^n), the sum by Horner's rule in integers.

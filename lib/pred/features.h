@@ -75,7 +75,7 @@ inline bool common_zeros(const std::vector<Poly<arith::Rational>> &ps, Poly<arit
                          const std::vector<Poly<arith::Rational>> *positive = nullptr) {
   f = Poly<arith::Rational>();
   for (const Poly<arith::Rational> &p : ps) {
-    f = poly::gcd(f, positive ? poly::divide_out_positive(p, *positive) : p);
+    f = poly::gcd(std::move(f), positive ? poly::divide_out_positive(p, *positive) : p);
     if (f.degree() == 0) return false;  // a nonzero constant gcd: no common zero at all
   }
   all_zero = f.c.empty();
@@ -117,9 +117,10 @@ void add_vertex_vertex(Feature_set<NT> &set, const Point_traj<NT> &a, const Poin
   auto d = a - b;
   Poly<NT> f;
   bool all_zero = false;
-  if (!common_zeros(std::vector<Poly<NT>>{d[0], d[1], d[2]}, f, all_zero, set.positive))
-    return skip_feature(set, feat);
-  add_system(set, feat, all_zero ? K::zero_f : K::roots, f, {});
+  std::vector<Poly<NT>> ds;  // moved, not copied (an initializer list copies)
+  for (auto &x : d.v) ds.push_back(std::move(x));
+  if (!common_zeros(ds, f, all_zero, set.positive)) return skip_feature(set, feat);
+  add_system(set, feat, all_zero ? K::zero_f : K::roots, std::move(f), {});
 }
 
 // Own trajectories (Query_data::own): the points of one body may all carry one common
@@ -149,9 +150,10 @@ void add_vertex_edge(Feature_set<NT> &set, const Point_traj<NT> &v, const Point_
   auto u = motion::cross(e, v - e0);
   Poly<NT> f;
   bool all_zero = false;
-  if (!common_zeros(std::vector<Poly<NT>>{u[0], u[1], u[2]}, f, all_zero, set.positive))
-    return skip_feature(set, feat);
-  add_system(set, feat, all_zero ? K::zero_f : K::roots, f,
+  std::vector<Poly<NT>> us;  // moved, not copied (an initializer list copies)
+  for (auto &x : u.v) us.push_back(std::move(x));
+  if (!common_zeros(us, f, all_zero, set.positive)) return skip_feature(set, feat);
+  add_system(set, feat, all_zero ? K::zero_f : K::roots, std::move(f),
              {motion::dot(v - e0, e), motion::dot(e1 - v, e)});
 }
 
@@ -184,7 +186,8 @@ void add_vertex_face(Feature_set<NT> &set, const Point_traj<NT> &v,
   std::vector<Poly<NT>> g;
   for (int i = 0; i < 3; ++i)
     g.push_back(motion::dot(n, motion::cross(*o[(i + 1) % 3] - *o[i], v - *fv[i])));
-  add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f, std::move(g));
+  const auto kind = f.is_zero() ? K::zero_f : K::roots;  // before f is moved
+  add_system(set, feat, kind, std::move(f), std::move(g));
 }
 
 // Open segments (a0, a1) and (b0, b1) cross at one point: coplanar, not parallel, b0
@@ -206,7 +209,8 @@ void add_edge_edge(Feature_set<NT> &set, const Point_traj<NT> &a0, const Point_t
   Poly<NT> sb1 = motion::dot(n, motion::cross(ea, b1 - a0));
   Poly<NT> sa0 = motion::dot(n, motion::cross(eb, a0 - b0));
   Poly<NT> sa1 = motion::dot(n, motion::cross(eb, a1 - b0));
-  add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f,
+  const auto kind = f.is_zero() ? K::zero_f : K::roots;  // before f is moved
+  add_system(set, feat, kind, std::move(f),
              {-(sb0 * sb1), -(sa0 * sa1)});
 }
 
@@ -244,7 +248,8 @@ void add_ball_edge(Feature_set<NT> &set, const Point_traj<NT> &c, const Point_tr
   auto e = own_or(oe1, e1) - own_or(oe0, e0);
   auto u = motion::cross(e, c - e0);
   Poly<NT> f = motion::dot(u, u) - r2d2 * motion::dot(e, e);
-  add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f,
+  const auto kind = f.is_zero() ? K::zero_f : K::roots;  // before f is moved
+  add_system(set, feat, kind, std::move(f),
              {motion::dot(c - e0, e), motion::dot(e1 - c, e)});
 }
 
@@ -264,7 +269,8 @@ void add_ball_face(Feature_set<NT> &set, const Point_traj<NT> &c,
   std::vector<Poly<NT>> g;
   for (int i = 0; i < 3; ++i)
     g.push_back(motion::dot(n, motion::cross(*o[(i + 1) % 3] - *o[i], c - *fv[i])));
-  add_system(set, feat, f.is_zero() ? K::zero_f : K::roots, f, std::move(g));
+  const auto kind = f.is_zero() ? K::zero_f : K::roots;  // before f is moved
+  add_system(set, feat, kind, std::move(f), std::move(g));
 }
 
 }  // namespace pccd::pred
