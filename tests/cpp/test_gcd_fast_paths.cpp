@@ -23,15 +23,7 @@ using pccd::arith::Integer;
 using pccd::arith::Rational;
 using pccd::poly::Poly;
 
-static long passed = 0, failed = 0;
-
-static void expect(bool ok, const std::string &what) {
-  if (ok) {
-    ++passed;
-  } else if (++failed <= 20) {
-    std::printf("FAIL %s\n", what.c_str());
-  }
-}
+#include "expect.h"
 
 static Poly<Rational> linear(const Rational &root) {  // t - root
   return Poly<Rational>(std::vector<Rational>{-root, Rational(1)});

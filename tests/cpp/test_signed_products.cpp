@@ -20,15 +20,7 @@ using pccd::arith::Rational;
 using pccd::motion::Vec3p;
 using pccd::poly::Poly;
 
-static long passed = 0, failed = 0;
-
-static void expect(bool ok, const std::string &what) {
-  if (ok) {
-    ++passed;
-  } else if (++failed <= 20) {
-    std::printf("FAIL %s\n", what.c_str());
-  }
-}
+#include "expect.h"
 
 // sum_k sign_k a_k b_k coefficient by coefficient in mpq, then trimmed.
 static std::vector<Rational> oracle(const std::vector<const Poly<Rational> *> &a,

@@ -27,15 +27,7 @@ using pccd::arith::Interval;
 using pccd::arith::Rational;
 using pccd::poly::Poly;
 
-static long passed = 0, failed = 0;
-
-static void expect(bool ok, const std::string &what) {
-  if (ok) {
-    ++passed;
-  } else if (++failed <= 20) {
-    std::printf("FAIL %s\n", what.c_str());
-  }
-}
+#include "expect.h"
 
 static std::string show(const std::vector<Rational> &v) {
   std::string s;
