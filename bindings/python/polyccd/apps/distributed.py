@@ -203,7 +203,8 @@ def map_chunks(fn, items, *shared, client=None, chunk_size=None, progress=None,
                     if retries[k] > K_RETRIES:
                         raise InternalError(f"{fn.__name__}: chunk {k} (items {a}..{b - 1}) was "
                                             f"cancelled {retries[k]} times: {result!r}")
-                    scattered = place(list(rescatter()) if rescatter else None)
+                    if any(f.status != "finished" for f in scattered):  # once per loss
+                        scattered = place(list(rescatter()) if rescatter else None)
                     again = client.submit(task, items[a:b], *scattered, pure=False)
                     live[again.key] = (k, again)
                     running.add(again)
