@@ -59,14 +59,12 @@ void add_rotated(const double R[3][3], double e, const double vm[3], double vr, 
 Interval line(double x0, double x1, const Interval &T) { return Interval(x0) + T * (Interval(x1) - Interval(x0)); }
 
 // Makes link k and its ancestors below base that are not yet marked in have, parents
-// first (out and have sized to the chain on first use).
-template <class T, class Make>
-void make_lazily(const Chain &c, size_t k, long base, std::vector<T> &out, std::vector<char> &have, Make make) {
-  out.resize(c.size());
-  have.resize(c.size(), 0);
+// first.
+template <class Make>
+void make_lazily(const Chain &c, size_t k, long base, char *have, Make make) {
   if (have[k]) return;
   const long p = c.link(k).parent;
-  if (p >= 0 && p != base) make_lazily(c, static_cast<size_t>(p), base, out, have, make);
+  if (p >= 0 && p != base) make_lazily(c, static_cast<size_t>(p), base, have, make);
   make(k);
   have[k] = 1;
 }
@@ -122,9 +120,8 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
   }
 }
 
-void Chain_path::enclose_link(double a, double b, size_t k, long base, std::vector<Pose_bounds> &out,
-                              std::vector<char> &have) const {
-  make_lazily(c_, k, base, out, have, [&](size_t j) { ball_of_link(j, Interval(a, b), out, base); });
+void Chain_path::enclose_link(double a, double b, size_t k, long base, Pose_bounds *out, char *have) const {
+  make_lazily(c_, k, base, have, [&](size_t j) { ball_of_link(j, Interval(a, b), out, base); });
 }
 
 long Chain_path::common_ancestor(size_t i, size_t j) const {
@@ -144,7 +141,7 @@ long Chain_path::common_ancestor(size_t i, size_t j) const {
   return a;  // -1 when the two hang from different roots
 }
 
-void Chain_path::ball_of_link(size_t k, const Interval &T, std::vector<Pose_bounds> &out, long base) const {
+void Chain_path::ball_of_link(size_t k, const Interval &T, Pose_bounds *out, long base) const {
   const Chain_link &L = c_.link(k);
   const Joint_doubles &d = ends_[k];
   const Pose_bounds &O = origin_[k];
@@ -211,12 +208,11 @@ void Chain_path::ball_of_link(size_t k, const Interval &T, std::vector<Pose_boun
   compose(Rpo, epo, Jm, ej, P.Rm, P.eps);
 }
 
-void Chain_path::derivatives_link(double a, double b, size_t k, long base, std::vector<Path_derivs> &out,
-                                  std::vector<char> &have) const {
-  make_lazily(c_, k, base, out, have, [&](size_t j) { derivs_of_link(j, Interval(a, b), out, base); });
+void Chain_path::derivatives_link(double a, double b, size_t k, long base, Path_derivs *out, char *have) const {
+  make_lazily(c_, k, base, have, [&](size_t j) { derivs_of_link(j, Interval(a, b), out, base); });
 }
 
-void Chain_path::derivs_of_link(size_t k, const Interval &T, std::vector<Path_derivs> &out, long base) const {
+void Chain_path::derivs_of_link(size_t k, const Interval &T, Path_derivs *out, long base) const {
   auto mag = [](const Interval &x) { return std::max(std::fabs(x.lo), std::fabs(x.hi)); };
   const Chain_link &L = c_.link(k);
   const Joint_doubles &d = ends_[k];

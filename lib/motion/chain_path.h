@@ -78,23 +78,22 @@ class Chain_path {
   Chain_path(const Chain &c, const double *q0, const double *q1);
   // The pose bounds (enclose_link) and derivative bounds (derivatives_link) over [a, b],
   // 0 <= a <= b <= 1 (doubles), of link k and its ancestors below base alone, those not
-  // yet marked in have (one flag per link; out and have are resized on first use, then
-  // kept by the caller per piece), relative to link base: base an ancestor of k, or -1 (the world frame).
+  // yet marked in have (arrays of size() entries, one flag per link, kept by the caller
+  // per piece; an unmarked entry's value is never read), relative to link base: base an
+  // ancestor of k, or -1 (the world frame).
   // Relative to base, the poses are those of the chain below base with base's pose
   // taken as the identity: the motion of the ancestors that move both links of a
   // self-collision pair alike drops out (scene/robot.h).
-  void enclose_link(double a, double b, size_t k, long base, std::vector<Pose_bounds> &out,
-                    std::vector<char> &have) const;
-  void derivatives_link(double a, double b, size_t k, long base, std::vector<Path_derivs> &out,
-                        std::vector<char> &have) const;
+  void enclose_link(double a, double b, size_t k, long base, Pose_bounds *out, char *have) const;
+  void derivatives_link(double a, double b, size_t k, long base, Path_derivs *out, char *have) const;
   // The lowest link that is i or an ancestor of i and j or an ancestor of j; -1: none.
   long common_ancestor(size_t i, size_t j) const;
   size_t size() const { return ends_.size(); }
 
  private:
   // Link k over T, its parent's entry of out already made.
-  void ball_of_link(size_t k, const arith::Interval &T, std::vector<Pose_bounds> &out, long base) const;
-  void derivs_of_link(size_t k, const arith::Interval &T, std::vector<Path_derivs> &out, long base) const;
+  void ball_of_link(size_t k, const arith::Interval &T, Pose_bounds *out, long base) const;
+  void derivs_of_link(size_t k, const arith::Interval &T, Path_derivs *out, long base) const;
   const Chain &c_;
   std::vector<Joint_doubles> ends_;
   std::vector<Pose_bounds> origin_;  // each link's origin pose (R of origin_q, p: rho = 0)

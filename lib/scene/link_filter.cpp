@@ -277,7 +277,7 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
   const narrow::Body_data &A = *SA.data, &B = *SB.data;
   const bvh::Hierarchy &ha = bvh::hierarchy(A), &hb = bvh::hierarchy(B);
   const double yna = norm_bound(A), ynb = norm_bound(B);
-  if ((reach > 0 && !(lim.delta_lo > 0)) || !A.mesh || !B.mesh || !SA.instant || !SB.instant) w = nullptr;
+  if ((reach > 0 && !(lim.delta_lo > 0)) || !A.mesh || !B.mesh || !SA.has_instant() || !SB.has_instant()) w = nullptr;
   size_t witness_spent = 0;  // node pairs tested at midpoints
   struct Item {
     int d;
@@ -383,7 +383,7 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
 
 bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w, double reach,
                    double delta_lo, size_t tests) {
-  if (!A.data->mesh || !B.data->mesh || !A.instant || !B.instant || !(lower >= 0 && lower < 1)) return false;
+  if (!A.data->mesh || !B.data->mesh || !A.has_instant() || !B.has_instant() || !(lower >= 0 && lower < 1)) return false;
   const long base = std::lround(std::ldexp(lower, kMax_depth));  // exact: lower is on the grid
   for (int k = kMax_depth; k >= 1; k -= 2) {
     const long i = base + (1L << (kMax_depth - k));

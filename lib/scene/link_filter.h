@@ -42,7 +42,6 @@
 // delta" throughout; a witness is then a triangle pair certainly within
 // delta at the midpoint (delta_witness.h; Filter_limits::delta_lo, issue 33).
 #pragma once
-#include <functional>
 #include <utility>
 #include <vector>
 
@@ -66,11 +65,22 @@ struct Side_piece {
   double g_rot = 0, g_off = 0;  // (b - a)^2 / 8 times d2, o2 (rounded up)
 };
 
+// A body pair's side: its data, and its poses from a source the caller keeps alive
+// while the side is used (piece_poses.h for a robot check): piece_of(src, base, k, d, i)
+// over the dyadic piece [i, i + 1] / 2^d, instant_of(...) at the instant i / 2^d (an
+// enclosure of the exact pose then; null: none). Plain function pointers, not
+// std::function: a check makes two sides per pair and asks for a pose per piece, and
+// std::function's copies and calls were about 3% of a free Panda segment (issue 30).
 struct Filter_side {
   const narrow::Body_data *data = nullptr;
-  std::function<Side_piece(int depth, long index)> piece;  // over the dyadic piece
-  // The pose at the instant index / 2^depth (an enclosure of the exact pose then).
-  std::function<const enclose::Pose_piece &(int depth, long index)> instant;
+  void *src = nullptr;
+  long base = -1;
+  size_t k = 0;
+  const Side_piece &(*piece_of)(void *src, long base, size_t k, int depth, long index) = nullptr;
+  const enclose::Pose_piece &(*instant_of)(void *src, long base, size_t k, int depth, long index) = nullptr;
+  const Side_piece &piece(int depth, long index) const { return piece_of(src, base, k, depth, index); }
+  const enclose::Pose_piece &instant(int depth, long index) const { return instant_of(src, base, k, depth, index); }
+  bool has_instant() const { return instant_of != nullptr; }
 };
 
 // A certified contact: elements a (of A) and b (of B) share a point at t = index / 2^depth.

@@ -1,14 +1,16 @@
 // The poses a robot check's filter (robot.h, link_filter.h) visits: every link's and
 // obstacle's pose enclosure on the dyadic pieces and at the dyadic instants of [0, 1],
-// each computed once per check, on its first demand.
+// each computed once per check, on its first demand, and shared by every body pair
+// that asks for it (a link against each obstacle asks for the same piece in turn).
 #pragma once
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
+#include <memory>
 #include <vector>
 
 #include "motion/chain_path.h"
 #include "scene/link_filter.h"
+#include "scene/pose_store.h"
 
 namespace pccd::scene {
 
@@ -32,17 +34,26 @@ inline enclose::Pose_piece pose_piece(const motion::Pose_bounds &p) {
 }
 
 // The poses of every link and obstacle on the dyadic pieces and at the dyadic instants
-// the filter visits, each computed once per check.
+// the filter visits, each computed once per check. Storage: a Pose_store
+// (pose_store.h) borrowed for the check from the thread's, so a check allocates nothing
+// once its thread has checked a segment as large (issue 30: the hashed map of per-piece
+// vectors and its allocations were about a fifth of a free segment's filter time).
 class Piece_poses {
  public:
   Piece_poses(const motion::Chain_path &path, const std::vector<Moving_body> &obstacles)
-      : path_(path), obstacles_(obstacles) {}
+      : path_(path), obstacles_(obstacles), store_(Pose_store::borrow(path.size(), obstacles.size())),
+        still_(&store_->piece(-2, 0, 0)) {}
+  ~Piece_poses() { Pose_store::give_back(std::move(store_)); }
+  Piece_poses(const Piece_poses &) = delete;
+  Piece_poses &operator=(const Piece_poses &) = delete;
 
   // Link k over the piece: the ball, and the second-order enclosure (link_filter.h) when
   // its chords' growth is at most half the ball's radii (at the coarse pieces the ball
-  // is tighter; the choice is a heuristic, both enclosures hold).
-  Side_piece link(long base, size_t k, int d, long i) {
-    Piece &p = at(base, d, i);
+  // is tighter; the choice is a heuristic, both enclosures hold). Made once per piece
+  // and base, then handed out as made.
+  const Side_piece &link(long base, size_t k, int d, long i) {
+    Pose_store::Slots &p = store_->piece(base, d, i);
+    if (p.have_side[k]) return p.side[k];
     const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
     Side_piece s;
     s.ball = &link_pose(p, base, k, a, b);
@@ -55,63 +66,54 @@ class Piece_poses {
       s.g_rot = gr;
       s.g_off = go;
     }
-    return s;
+    p.side[k] = s;
+    p.have_side[k] = 1;
+    return p.side[k];
   }
   const enclose::Pose_piece &link_at(long base, size_t k, int d, long i) {
     const double t = std::ldexp(static_cast<double>(i), -d);
-    return link_pose(instant(base, d, i), base, k, t, t);
+    return link_pose(store_->instant(base, d, i), base, k, t, t);
   }
-  Side_piece obstacle(size_t k, int d, long i) {
-    Piece &p = with_obstacles(at(-1, d, i));
-    if (!p.have_obstacle[k]) {
+  // A stationary obstacle's pose is the same on every piece and instant: made once.
+  const Side_piece &obstacle(size_t k, int d, long i) {
+    if (still(k)) return still_side(k);
+    Pose_store::Slots &p = store_->piece(-1, d, i);
+    if (!p.have_obst[k]) {
       const double a = std::ldexp(static_cast<double>(i), -d), b = std::ldexp(static_cast<double>(i + 1), -d);
-      p.obstacles[k] = still(k) || d == 0 ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], a, b);
-      p.have_obstacle[k] = true;
+      p.obstacles[k] = d == 0 ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], a, b);
+      p.obst_side[k] = Side_piece{};
+      p.obst_side[k].ball = &p.obstacles[k];
+      p.have_obst[k] = 1;
     }
-    Side_piece s;
-    s.ball = &p.obstacles[k];
-    s.identity = still(k);
-    return s;
+    return p.obst_side[k];
   }
   const enclose::Pose_piece &obstacle_at(size_t k, int d, long i) {
-    Piece &p = with_obstacles(instant(-1, d, i));
-    if (!p.have_obstacle[k]) {
+    if (still(k)) return *still_side(k).ball;
+    Pose_store::Slots &p = store_->instant(-1, d, i);
+    if (!p.have_obst[k]) {
       const double t = std::ldexp(static_cast<double>(i), -d);
-      p.obstacles[k] = still(k) ? enclose::whole_pose(obstacles_[k]) : enclose::enclose_pose(obstacles_[k], t, t);
-      p.have_obstacle[k] = true;
+      p.obstacles[k] = enclose::enclose_pose(obstacles_[k], t, t);
+      p.have_obst[k] = 1;
     }
     return p.obstacles[k];
   }
 
  private:
-  // The poses over one piece or at one instant, each link's made on its first demand
-  // (with its ancestors': motion/chain_path.h, enclose_link).
-  struct Piece {
-    std::vector<motion::Pose_bounds> bounds;
-    std::vector<char> have_bounds;
-    std::vector<enclose::Pose_piece> links;
-    std::vector<char> have_links;
-    std::vector<motion::Path_derivs> derivs;  // pieces only
-    std::vector<char> have_derivs;
-    std::vector<enclose::Pose_piece> obstacles;
-    std::vector<bool> have_obstacle;
-  };
-  // A stationary obstacle's pose is the same on every piece.
   bool still(size_t k) const { return obstacles_[k].mo == narrow::identity_motion(); }
-  // A piece's link and obstacle slots are made on the first demand of their kind (a
-  // piece relative to a link base never holds obstacles).
-  Piece &with_obstacles(Piece &p) {
-    if (p.have_obstacle.empty()) {
-      p.obstacles.resize(obstacles_.size());
-      p.have_obstacle.assign(obstacles_.size() + 1, false);  // + 1: never empty after this
+  // The still obstacle k's pose (enclose::whole_pose) and Side_piece, in slot k of the
+  // store's piece of base -2 (no link base is -2: no other demand finds it).
+  const Side_piece &still_side(size_t k) {
+    Pose_store::Slots &p = *still_;
+    if (!p.have_obst[k]) {
+      p.obstacles[k] = enclose::whole_pose(obstacles_[k]);
+      p.obst_side[k] = Side_piece{};
+      p.obst_side[k].ball = &p.obstacles[k];
+      p.obst_side[k].identity = true;
+      p.have_obst[k] = 1;
     }
-    return p;
+    return p.obst_side[k];
   }
-  const enclose::Pose_piece &link_pose(Piece &p, long base, size_t k, double a, double b) {
-    if (p.have_links.empty()) {
-      p.links.resize(path_.size());
-      p.have_links.assign(path_.size(), 0);
-    }
+  const enclose::Pose_piece &link_pose(Pose_store::Slots &p, long base, size_t k, double a, double b) {
     if (!p.have_links[k]) {
       path_.enclose_link(a, b, k, base, p.bounds, p.have_bounds);
       p.links[k] = pose_piece(p.bounds[k]);
@@ -119,50 +121,11 @@ class Piece_poses {
     }
     return p.links[k];
   }
-  // Looked up through a one-entry memo: the filter asks for both sides of a pair on the
-  // same piece in a row, and a side's pieces run through depths at one index pattern.
-  Piece &at(long base, int d, long i) { return find(pieces_, last_piece_, {base, d, i}); }
-  // The instant i / 2^d, kept under its lowest terms (the end of one piece is the start
-  // of the next, and of pieces of other depths).
-  Piece &instant(long base, int d, long i) {
-    while (d > 0 && i % 2 == 0) {
-      i /= 2;
-      --d;
-    }
-    if (i == 0) d = 0;
-    return find(instants_, last_instant_, {base, d, i});
-  }
 
   const motion::Chain_path &path_;
   const std::vector<Moving_body> &obstacles_;
-  // Keyed by (base, depth, index): links relative to link base (-1: the world, and the
-  // obstacles), on the piece or at the instant index / 2^depth. Hashed (the filter asks
-  // for a pose per pair and piece: an ordered map's lookups were 2-3% of a check);
-  // unordered_map never moves its elements, so the references handed out stay valid.
-  struct Key {
-    long base;
-    int d;
-    long i;
-    bool operator==(const Key &o) const { return base == o.base && d == o.d && i == o.i; }
-  };
-  struct Key_hash {
-    size_t operator()(const Key &k) const {
-      uint64_t h = static_cast<uint64_t>(k.i) * 0x9E3779B97F4A7C15ull;  // Fibonacci hashing
-      h ^= (static_cast<uint64_t>(k.base + 1) << 8 | static_cast<uint64_t>(k.d)) * 0xC2B2AE3D27D4EB4Full;
-      return static_cast<size_t>(h ^ (h >> 29));
-    }
-  };
-  using Map = std::unordered_map<Key, Piece, Key_hash>;
-  struct Memo {
-    Key key{0, -1, 0};  // depth -1: no key yet
-    Piece *piece = nullptr;
-  };
-  static Piece &find(Map &m, Memo &last, const Key &k) {
-    if (!(last.piece && last.key == k)) last = {k, &m[k]};
-    return *last.piece;
-  }
-  Map pieces_, instants_;
-  Memo last_piece_, last_instant_;
+  std::unique_ptr<Pose_store> store_;
+  Pose_store::Slots *still_;
 };
 
 }  // namespace pccd::scene

@@ -155,38 +155,48 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     // Body k of pair p's side: a link body relative to the pair's base (the links' lowest
     // common ancestor for a self pair: the motion of the joints above it moves both
     // alike and drops out; -1 against an obstacle), the base's own bodies standing still.
-    static const enclose::Pose_piece identity_pose = [] {
-      enclose::Pose_piece p;
+    static const Side_piece identity_side = [] {
+      static enclose::Pose_piece p;
       for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
           p.Rm[i][j] = i == j ? 1 : 0;
           p.Rr[i][j] = 0;
         }
-      return p;
+      Side_piece x;
+      x.ball = &p;
+      x.identity = true;
+      return x;
     }();
     auto side = [&](size_t k, long base) {
       Filter_side s;
+      s.src = &poses;
+      s.base = base;
       if (k < nr) {
         const size_t link = r.bodies[k].link;
         s.data = r.bodies[k].body.get();
+        s.k = link;
         if (static_cast<long>(link) == base) {
-          s.piece = [](int, long) {
-            Side_piece x;
-            x.ball = &identity_pose;
-            x.identity = true;
-            return x;
+          s.piece_of = [](void *, long, size_t, int, long) -> const Side_piece & { return identity_side; };
+          s.instant_of = [](void *, long, size_t, int, long) -> const enclose::Pose_piece & {
+            return *identity_side.ball;
           };
-          s.instant = [](int, long) -> const enclose::Pose_piece & { return identity_pose; };
         } else {
-          s.piece = [&poses, base, link](int d, long i) { return poses.link(base, link, d, i); };
-          s.instant = [&poses, base, link](int d, long i) -> const enclose::Pose_piece & {
-            return poses.link_at(base, link, d, i);
+          s.piece_of = [](void *src, long b, size_t l, int d, long i) -> const Side_piece & {
+            return static_cast<Piece_poses *>(src)->link(b, l, d, i);
+          };
+          s.instant_of = [](void *src, long b, size_t l, int d, long i) -> const enclose::Pose_piece & {
+            return static_cast<Piece_poses *>(src)->link_at(b, l, d, i);
           };
         }
       } else {
         s.data = obst[k - nr].data.get();
-        s.piece = [&poses, o = k - nr](int d, long i) { return poses.obstacle(o, d, i); };
-        s.instant = [&poses, o = k - nr](int d, long i) -> const enclose::Pose_piece & { return poses.obstacle_at(o, d, i); };
+        s.k = k - nr;
+        s.piece_of = [](void *src, long, size_t o, int d, long i) -> const Side_piece & {
+          return static_cast<Piece_poses *>(src)->obstacle(o, d, i);
+        };
+        s.instant_of = [](void *src, long, size_t o, int d, long i) -> const enclose::Pose_piece & {
+          return static_cast<Piece_poses *>(src)->obstacle_at(o, d, i);
+        };
       }
       return s;
     };
@@ -257,7 +267,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         for (const Pair_plan &p : plans) {
           const long base = base_of(p);
           const Filter_side a = side(p.i, base), b = side(p.j, base);
-          if (!a.data->mesh || !b.data->mesh || !a.instant || !b.instant) continue;
+          if (!a.data->mesh || !b.data->mesh || !a.has_instant() || !b.has_instant()) continue;
           size_t budget = kScan_tests;
           Witness w;
           if (touching_at(*a.data, a.instant(static_cast<int>(m[0]), m[1]), *b.data,

@@ -46,7 +46,7 @@ bool solid(const narrow::Body_data &d) { return d.mesh && d.mesh->solid(); }
 }  // namespace
 
 bool solids_apart_at_zero(const Filter_side &A, const Filter_side &B) {
-  if (!A.instant || !B.instant) return false;
+  if (!A.has_instant() || !B.has_instant()) return false;
   const enclose::Pose_piece &pa = A.instant(0, 0), &pb = B.instant(0, 0);
   if (solid(*A.data) && !points_outside(*A.data, pa, *B.data, pb)) return false;
   if (solid(*B.data) && !points_outside(*B.data, pb, *A.data, pa)) return false;
