@@ -17,6 +17,7 @@ namespace pccd::scene {
 namespace {
 
 using Front = Node_pairs;
+const Front kRoots{{0, 0}};  // the front of the two roots
 
 constexpr double kSqrt3_up = 1.7320508075688774;  // > sqrt(3)
 
@@ -238,10 +239,13 @@ bool triangles_touch(const narrow::Body_data &A, uint32_t ea, const enclose::Pos
 }  // namespace
 
 bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
-                 const enclose::Pose_piece &pb, Node_pairs front, size_t &budget, uint32_t &ea, uint32_t &eb,
-                 double reach, double delta_lo) {
+                 const enclose::Pose_piece &pb, const Node_pairs &start, size_t &budget, uint32_t &ea, uint32_t &eb,
+                 double reach, double delta_lo, const bvh::Hierarchy *pha, const bvh::Hierarchy *phb) {
   if (!A.mesh || !B.mesh || !pa.finite || !pb.finite) return false;
-  const bvh::Hierarchy &ha = bvh::hierarchy(A), &hb = bvh::hierarchy(B);
+  const bvh::Hierarchy &ha = pha ? *pha : bvh::hierarchy(A), &hb = phb ? *phb : bvh::hierarchy(B);
+  thread_local Front tl_front;  // the node pairs left, reused (no allocation per call)
+  Front &front = tl_front;
+  front.assign(start.begin(), start.end());
   for (; !front.empty() && budget > 0; --budget) {
     const auto [ka, kb] = front.back();
     front.pop_back();
@@ -271,42 +275,79 @@ bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, cons
   return false;
 }
 
+namespace {
+
+// first_uncleared's working memory, kept per thread: the stack of pieces still to look
+// at, each with its front in one of fronts (those not in use listed in unused), and the
+// node memos. Reset at each call's start (a call ended by an exception leaves it as is).
+struct Scratch {
+  struct Item {
+    int d;
+    long i;
+    uint32_t f;  // its front: fronts[f]
+  };
+  std::vector<Item> stack;
+  std::vector<Front> fronts;
+  std::vector<uint32_t> unused;
+  Front next, work;
+  Node_memo memo_a, memo_b;
+  void start() {
+    stack.clear();
+    unused.clear();
+    for (uint32_t k = 0; k < fronts.size(); ++k) unused.push_back(k);
+  }
+  // A front holding a copy of f (its buffer reused).
+  uint32_t take(const Front &f) {
+    if (unused.empty()) {
+      fronts.emplace_back();
+      unused.push_back(static_cast<uint32_t>(fronts.size() - 1));
+    }
+    const uint32_t k = unused.back();
+    unused.pop_back();
+    fronts[k].assign(f.begin(), f.end());
+    return k;
+  }
+  void give_back(uint32_t k) { unused.push_back(k); }
+};
+
+}  // namespace
+
 double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reach, const Filter_limits &lim,
                        Witness *w) {
   const double until = lim.until;
   const narrow::Body_data &A = *SA.data, &B = *SB.data;
-  const bvh::Hierarchy &ha = bvh::hierarchy(A), &hb = bvh::hierarchy(B);
+  const bvh::Hierarchy &ha = SA.tree ? *SA.tree : bvh::hierarchy(A), &hb = SB.tree ? *SB.tree : bvh::hierarchy(B);
   const double yna = norm_bound(A), ynb = norm_bound(B);
   if ((reach > 0 && !(lim.delta_lo > 0)) || !A.mesh || !B.mesh || !SA.has_instant() || !SB.has_instant()) w = nullptr;
   size_t witness_spent = 0;  // node pairs tested at midpoints
-  struct Item {
-    int d;
-    long i;
-    Front front;
-  };
   if (w && reach > 0 && until > 0) {
     // Minimum separation: a pair within delta at t = 0 (a start pose closer than delta,
     // common where the start is only checked for touching) has its first contact at 0;
     // a witness there ends the search at once (kWitness_tests node pairs).
     size_t budget = kWitness_tests;
-    if (touching_at(A, SA.instant(0, 0), B, SB.instant(0, 0), {{0, 0}}, budget, w->a, w->b, reach, lim.delta_lo)) {
+    if (touching_at(A, SA.instant(0, 0), B, SB.instant(0, 0), kRoots, budget, w->a, w->b, reach, lim.delta_lo, &ha,
+                    &hb)) {
       w->found = true;
       w->depth = 0;
       w->index = 0;
       return 0;
     }
   }
-  // Each node's box and each leaf's element boxes once per piece and side (node_memo.h).
-  thread_local Node_memo memo_a, memo_b;
+  // Each node's box and each leaf's element boxes once per piece and side (node_memo.h);
+  // the pieces' fronts in buffers reused from call to call (no allocation per piece).
+  thread_local Scratch tl_scratch;
+  Scratch &S = tl_scratch;
+  Node_memo &memo_a = S.memo_a, &memo_b = S.memo_b;
   memo_a.start(ha.nodes.size(), ha.elems.size());
   memo_b.start(hb.nodes.size(), hb.elems.size());
-  std::vector<Item> stack;
-  stack.push_back({0, 0, Front{{0, 0}}});
-  Front next, work;
+  S.start();
+  S.stack.push_back({0, 0, S.take(kRoots)});
+  Front &next = S.next, &work = S.work;
+  next.clear();
   size_t tests = 0;  // node pairs taken from fronts (kMax_tests)
-  while (!stack.empty()) {
-    Item it = std::move(stack.back());
-    stack.pop_back();
+  while (!S.stack.empty()) {
+    const Scratch::Item it = S.stack.back();
+    S.stack.pop_back();
     const double start = std::ldexp(static_cast<double>(it.i), -it.d);
     if (start >= until) return start;  // every earlier piece is separated
     const Side_piece pa = SA.piece(it.d, it.i), pb = SB.piece(it.d, it.i);
@@ -314,13 +355,16 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
     // Nodes up to kSplit_factor spreads wait for the halves (the finest piece has none:
     // there, down to one spread).
     const double wait_below = spread * (it.d == kMax_depth ? 1 : kSplit_factor);
-    util::work_step(1 + it.front.size() / 1024);
-    tests += it.front.size();
+    const size_t front_size = S.fronts[it.f].size();
+    util::work_step(1 + front_size / 1024);
+    tests += front_size;
     if (tests > lim.max_tests) return start;  // this piece's start
     next.clear();
     memo_a.next_piece();
     memo_b.next_piece();
-    work = std::move(it.front);
+    work.clear();
+    work.swap(S.fronts[it.f]);
+    S.give_back(it.f);
     while (!work.empty()) {
       const auto [ka, kb] = work.back();
       work.pop_back();
@@ -364,7 +408,7 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
       const int md = it.d + 1;
       const long mi = 2 * it.i + 1;
       bool hit = touching_at(A, SA.instant(md, mi), B, SB.instant(md, mi), next, budget, w->a, w->b, reach,
-                             lim.delta_lo);
+                             lim.delta_lo, &ha, &hb);
       witness_spent += before - budget;
       if (hit) {
         w->found = true;
@@ -374,9 +418,8 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
       }
     }
     if (it.d == kMax_depth) return start;  // exact
-    stack.push_back({it.d + 1, 2 * it.i + 1, next});
-    stack.push_back({it.d + 1, 2 * it.i, std::move(next)});
-    next = Front();
+    S.stack.push_back({it.d + 1, 2 * it.i + 1, S.take(next)});
+    S.stack.push_back({it.d + 1, 2 * it.i, S.take(next)});
   }
   return kNever;
 }
@@ -389,8 +432,8 @@ bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Wit
     const long i = base + (1L << (kMax_depth - k));
     if (i >= (1L << kMax_depth)) break;
     size_t budget = tests;
-    if (touching_at(*A.data, A.instant(kMax_depth, i), *B.data, B.instant(kMax_depth, i), {{0, 0}}, budget, w.a,
-                    w.b, reach, delta_lo)) {
+    if (touching_at(*A.data, A.instant(kMax_depth, i), *B.data, B.instant(kMax_depth, i), kRoots, budget, w.a,
+                    w.b, reach, delta_lo, A.tree, B.tree)) {
       w.found = true;
       w.depth = kMax_depth;
       w.index = i;

@@ -47,6 +47,10 @@
 
 #include "enclose/enclose.h"
 
+namespace pccd::bvh {
+struct Hierarchy;
+}
+
 namespace pccd::scene {
 
 constexpr int kMax_depth = 14;         // pieces of 1/16384 at the finest
@@ -73,6 +77,7 @@ struct Side_piece {
 // std::function's copies and calls were about 3% of a free Panda segment (issue 30).
 struct Filter_side {
   const narrow::Body_data *data = nullptr;
+  const bvh::Hierarchy *tree = nullptr;  // bvh::hierarchy(*data) when the caller has it
   void *src = nullptr;
   long base = -1;
   size_t k = 0;
@@ -121,8 +126,10 @@ bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Wit
 // meshes only; each node pair tested takes one from budget, and none is tested once it
 // is 0 (then: none found). reach > 0: A's boxes grow by reach and a leaf pair certainly
 // within delta_lo (delta_witness.h) is found too.
+// ha, hb: bvh::hierarchy(A), (B) when the caller has them (else looked up: a lock).
 bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
-                 const enclose::Pose_piece &pb, Node_pairs front, size_t &budget, uint32_t &ea, uint32_t &eb,
-                 double reach = 0, double delta_lo = 0);
+                 const enclose::Pose_piece &pb, const Node_pairs &front, size_t &budget, uint32_t &ea, uint32_t &eb,
+                 double reach = 0, double delta_lo = 0, const bvh::Hierarchy *ha = nullptr,
+                 const bvh::Hierarchy *hb = nullptr);
 
 }  // namespace pccd::scene

@@ -5,6 +5,7 @@
 #include <string>
 #include <tuple>
 
+#include "bvh/hierarchy.h"
 #include "motion/chain_path.h"
 #include "poly/poly.h"
 #include "scene/link_filter.h"
@@ -167,6 +168,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       x.identity = true;
       return x;
     }();
+    // Each body's hierarchy, looked up once per check (bvh::hierarchy takes a lock).
+    std::vector<const bvh::Hierarchy *> trees(nr + obst.size(), nullptr);
     auto side = [&](size_t k, long base) {
       Filter_side s;
       s.src = &poses;
@@ -198,6 +201,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
           return static_cast<Piece_poses *>(src)->obstacle_at(o, d, i);
         };
       }
+      if (!trees[k]) trees[k] = &bvh::hierarchy(*s.data);
+      s.tree = trees[k];
       return s;
     };
     auto base_of = [&](const Pair_plan &p) {
@@ -263,6 +268,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       // pairs 1.73 / 0.81 (a near pair needs more to reach its leaves).
       constexpr size_t kScan_tests = 64;
       static const long kScan[3][2] = {{1, 1}, {2, 1}, {2, 3}};  // (depth, index): 1/2, 1/4, 3/4
+      static const Node_pairs roots{{0, 0}};
       for (const auto &m : kScan) {
         for (const Pair_plan &p : plans) {
           const long base = base_of(p);
@@ -271,7 +277,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
           size_t budget = kScan_tests;
           Witness w;
           if (touching_at(*a.data, a.instant(static_cast<int>(m[0]), m[1]), *b.data,
-                          b.instant(static_cast<int>(m[0]), m[1]), {{0, 0}}, budget, w.a, w.b, reach, lim.delta_lo)) {
+                          b.instant(static_cast<int>(m[0]), m[1]), roots, budget, w.a, w.b, reach, lim.delta_lo,
+                          a.tree, b.tree)) {
             w.found = true;
             w.depth = static_cast<int>(m[0]);
             w.index = m[1];
