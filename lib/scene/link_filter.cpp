@@ -8,6 +8,7 @@
 #include "bvh/hierarchy.h"
 #include "pred/closest_axis.h"
 #include "scene/delta_witness.h"
+#include "scene/filter_scratch.h"
 #include "scene/node_memo.h"
 #include "pred/static_contact.h"
 #include "util/work_budget.h"
@@ -275,43 +276,6 @@ bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, cons
   return false;
 }
 
-namespace {
-
-// first_uncleared's working memory, kept per thread: the stack of pieces still to look
-// at, each with its front in one of fronts (those not in use listed in unused), and the
-// node memos. Reset at each call's start (a call ended by an exception leaves it as is).
-struct Scratch {
-  struct Item {
-    int d;
-    long i;
-    uint32_t f;  // its front: fronts[f]
-  };
-  std::vector<Item> stack;
-  std::vector<Front> fronts;
-  std::vector<uint32_t> unused;
-  Front next, work;
-  Node_memo memo_a, memo_b;
-  void start() {
-    stack.clear();
-    unused.clear();
-    for (uint32_t k = 0; k < fronts.size(); ++k) unused.push_back(k);
-  }
-  // A front holding a copy of f (its buffer reused).
-  uint32_t take(const Front &f) {
-    if (unused.empty()) {
-      fronts.emplace_back();
-      unused.push_back(static_cast<uint32_t>(fronts.size() - 1));
-    }
-    const uint32_t k = unused.back();
-    unused.pop_back();
-    fronts[k].assign(f.begin(), f.end());
-    return k;
-  }
-  void give_back(uint32_t k) { unused.push_back(k); }
-};
-
-}  // namespace
-
 double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reach, const Filter_limits &lim,
                        Witness *w) {
   const double until = lim.until;
@@ -422,6 +386,14 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
     S.stack.push_back({it.d + 1, 2 * it.i, S.take(next)});
   }
   return kNever;
+}
+
+bool roots_apart(const Filter_side &SA, const Filter_side &SB, double reach) {
+  const narrow::Body_data &A = *SA.data, &B = *SB.data;
+  const bvh::Hierarchy &ha = SA.tree ? *SA.tree : bvh::hierarchy(A), &hb = SB.tree ? *SB.tree : bvh::hierarchy(B);
+  const Side_piece &pa = SA.piece(0, 0), &pb = SB.piece(0, 0);
+  return !enclose::boxes_within(box_of(pa, ha.nodes[0].c, ha.nodes[0].h, norm_bound(A)),
+                                box_of(pb, hb.nodes[0].c, hb.nodes[0].h, norm_bound(B)), reach);
 }
 
 bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w, double reach,

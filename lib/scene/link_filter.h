@@ -109,6 +109,13 @@ struct Filter_limits {
 double first_uncleared(const Filter_side &A, const Filter_side &B, double reach, const Filter_limits &lim = {},
                        Witness *w = nullptr);
 
+// Whether the two bodies' root boxes over the whole of [0, 1] (piece 0 of A and B) are
+// apart by more than reach: then no element pair comes within reach at any t, so
+// first_uncleared's first piece is separated, no witness exists, and neither body can
+// hold a point of the other (nothing of either leaves its root box). A robot check's
+// decide scan skips such pairs (robot.cpp: the same answers, without their instants).
+bool roots_apart(const Filter_side &A, const Filter_side &B, double reach);
+
 // A witness at the instants lower + 2^-k, k = kMax_depth, kMax_depth - 2, ..., while
 // below 1 (lower: a pair's first_uncleared, on the dyadic grid of kMax_depth): after
 // the first uncleared piece, where a contact that first_uncleared's midpoints missed

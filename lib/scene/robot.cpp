@@ -242,6 +242,19 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
                                  enclose::frame_box(b.instant(0, 0), b.data->box_c, b.data->box_h)) &&
              !solids_apart_at_zero(a, b) && contained_exactly_at_zero(body_at_zero(p.i), body_at_zero(p.j));
     };
+    // Pairs whose root boxes over [0, 1] are apart (roots_apart, link_filter.h): no
+    // witness, no contact, no containment at t = 0, so the decide scan and the
+    // containment test skip them (their answers are known: none). Most pairs of a free
+    // segment are such; the scan's instant poses and traversals of them were about a
+    // tenth of a free Panda segment (perf, issue 30).
+    std::vector<signed char> far_of(plans.size(), -1);
+    auto far = [&](size_t q) {
+      if (far_of[q] < 0) {
+        const long base = base_of(plans[q]);
+        far_of[q] = roots_apart(side(plans[q].i, base), side(plans[q].j, base), reach);
+      }
+      return far_of[q] == 1;
+    };
     std::vector<Pair_plan> kept;
     Witness found;
     size_t found_i = 0, found_j = 0;
@@ -269,16 +282,30 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       constexpr size_t kScan_tests = 64;
       static const long kScan[3][2] = {{1, 1}, {2, 1}, {2, 3}};  // (depth, index): 1/2, 1/4, 3/4
       static const Node_pairs roots{{0, 0}};
+      // Each body's root box at the instant, made once per pose (touching_at's first test
+      // remade it per pair: a link's for each obstacle); a pair whose root boxes are not
+      // within reach is skipped, as touching_at would return at once.
+      std::vector<const enclose::Pose_piece *> root_pose(nr + obst.size(), nullptr);
+      std::vector<enclose::Box> root_box(nr + obst.size());
+      auto root_at = [&](size_t k, const Filter_side &s, const enclose::Pose_piece &pose) -> const enclose::Box & {
+        if (root_pose[k] != &pose) {
+          root_pose[k] = &pose;
+          root_box[k] = enclose::frame_box(pose, s.tree->nodes[0].c, s.tree->nodes[0].h);
+        }
+        return root_box[k];
+      };
       for (const auto &m : kScan) {
-        for (const Pair_plan &p : plans) {
+        for (size_t q = 0; q < plans.size(); ++q) {
+          const Pair_plan &p = plans[q];
           const long base = base_of(p);
           const Filter_side a = side(p.i, base), b = side(p.j, base);
-          if (!a.data->mesh || !b.data->mesh || !a.has_instant() || !b.has_instant()) continue;
+          if (!a.data->mesh || !b.data->mesh || !a.has_instant() || !b.has_instant() || far(q)) continue;
+          const enclose::Pose_piece &pa = a.instant(static_cast<int>(m[0]), m[1]);
+          const enclose::Pose_piece &pb = b.instant(static_cast<int>(m[0]), m[1]);
+          if (!enclose::boxes_within(root_at(p.i, a, pa), root_at(p.j, b, pb), reach)) continue;
           size_t budget = kScan_tests;
           Witness w;
-          if (touching_at(*a.data, a.instant(static_cast<int>(m[0]), m[1]), *b.data,
-                          b.instant(static_cast<int>(m[0]), m[1]), roots, budget, w.a, w.b, reach, lim.delta_lo,
-                          a.tree, b.tree)) {
+          if (touching_at(*a.data, pa, *b.data, pb, roots, budget, w.a, w.b, reach, lim.delta_lo, a.tree, b.tree)) {
             w.found = true;
             w.depth = static_cast<int>(m[0]);
             w.index = m[1];
@@ -287,7 +314,8 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         }
       }
     }
-    for (Pair_plan p : plans) {
+    for (size_t q = 0; q < plans.size(); ++q) {
+      Pair_plan p = plans[q];
       Witness w;
       const long base = base_of(p);
       p.lower = first_uncleared(side(p.i, base), side(p.j, base), reach, lim,
@@ -301,7 +329,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         if (decide) lim.max_tests = kAfter_tests;
       }
       // Such a pair goes to the exact solve (its containment test at t = 0) with bound 0.
-      if (p.lower > 0 && may_contain_at_zero(p)) p.lower = 0;
+      if (p.lower > 0 && !far(q) && may_contain_at_zero(p)) p.lower = 0;
       if (p.lower <= horizon) kept.push_back(p);
     }
     std::stable_sort(kept.begin(), kept.end(),
