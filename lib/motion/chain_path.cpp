@@ -180,7 +180,8 @@ void Chain_path::ball_of_link(size_t k, const Interval &T, Pose_bounds *out, lon
     return;
   }
   Interval J[3][3];
-  const Interval c = line(d.c0, d.c1, T), s = line(d.s0, d.s1, T);
+  // line(d.c0, d.c1, T) with its slope made once (consts_: the same interval operations)
+  const Interval c = Interval(d.c0) + T * consts_[k].dc, s = Interval(d.s0) + T * consts_[k].ds;
   const Interval nn = sq(c) + sq(s) * axis2_[k];
   double Jm[3][3], ej;
   if (nn.lo > 0) {
@@ -234,7 +235,7 @@ void Chain_path::derivs_of_link(size_t k, const Interval &T, Path_derivs *out, l
     v1 = mag(A * (Interval(d.e1) - Interval(d.e0)));  // |v'| = |A (e1 - e0)|
   } else if (L.joint == Joint_type::revolute || L.joint == Joint_type::continuous) {
     const Interval &dc = C.dc, &ds = C.ds;
-    const Interval c = line(d.c0, d.c1, T), s = line(d.s0, d.s1, T);
+    const Interval c = Interval(d.c0) + T * dc, s = Interval(d.s0) + T * ds;  // line(), slopes made once
     const Interval nn = sq(c) + sq(s) * axis2_[k];
     if (!(nn.lo > 0)) {
       out[k] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
