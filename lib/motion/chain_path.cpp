@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace pccd::motion {
 
@@ -71,35 +72,41 @@ void make_lazily(const Chain &c, size_t k, long base, char *have, Make make) {
 
 }  // namespace
 
-Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(c) {
-  c.check_segment(q0, q1);
+std::shared_ptr<const Chain_path::Fixed> Chain_path::fixed_parts(const Chain &c) {
   const size_t n = c.size();
-  ends_.resize(n);
-  origin_.resize(n);
-  axis2_.resize(n);
-  axis_.resize(n);
-  consts_.resize(n);
+  const bool nearest = arith::nearest_mode();
+  auto key_of = [](const Chain_link &L) {
+    return std::array<double, 10>{L.axis_d[0],      L.axis_d[1],      L.axis_d[2],      L.origin_p_d[0],
+                                  L.origin_p_d[1],  L.origin_p_d[2],  L.origin_q_d[0], L.origin_q_d[1],
+                                  L.origin_q_d[2], L.origin_q_d[3]};
+  };
+  thread_local std::shared_ptr<const Fixed> last;
+  if (last && last->nearest == nearest && last->links.size() == n) {
+    bool same = true;
+    for (size_t k = 0; k < n && same; ++k) {
+      const std::array<double, 10> key = key_of(c.link(k));
+      same = std::memcmp(key.data(), last->links[k].key.data(), sizeof key) == 0;  // bit for bit
+    }
+    if (same) return last;
+  }
+  auto f = std::make_shared<Fixed>();
+  f->nearest = nearest;
+  f->links.resize(n);
   for (size_t k = 0; k < n; ++k) {
     const Chain_link &L = c.link(k);
-    ends_[k] = joint_doubles(L, q0[k], q1[k]);
+    Link_fixed &F = f->links[k];
+    F.key = key_of(L);
     Interval a[3];
     for (int i = 0; i < 3; ++i) {
-      axis_[k][i] = L.axis_d[i];  // exact: the axis was given as doubles
-      a[i] = Interval(axis_[k][i]);
+      F.axis[i] = L.axis_d[i];  // exact: the axis was given as doubles
+      a[i] = Interval(F.axis[i]);
     }
-    axis2_[k] = sq(a[0]) + sq(a[1]) + sq(a[2]);
-    Link_consts &C = consts_[k];
+    F.axis2 = sq(a[0]) + sq(a[1]) + sq(a[2]);
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) C.B[i][j] = a[i] * a[j] - (i == j ? axis2_[k] : Interval(0.0));
+      for (int j = 0; j < 3; ++j) F.B[i][j] = a[i] * a[j] - (i == j ? F.axis2 : Interval(0.0));
     // |a| enclosed: sqrt is within one ulp in any rounding mode, so two steps out suffice.
-    const double an_lo = std::sqrt(axis2_[k].lo), an_hi = std::sqrt(axis2_[k].hi);
-    C.A = Interval(round_down(round_down(an_lo)), round_up(round_up(an_hi)));
-    const Joint_doubles &d = ends_[k];
-    C.dc = Interval(d.c1) - Interval(d.c0);
-    C.ds = Interval(d.s1) - Interval(d.s0);
-    const Interval K = Interval(d.c0) * C.ds - Interval(d.s0) * C.dc;
-    const double mK = std::max(std::fabs(K.lo), std::fabs(K.hi));
-    C.akt = Interval(2.0) * C.A * Interval(mK);  // >= |2 A K|
+    const double an_lo = std::sqrt(F.axis2.lo), an_hi = std::sqrt(F.axis2.hi);
+    F.A = Interval(round_down(round_down(an_lo)), round_up(round_up(an_hi)));
     Interval w = L.origin_q_d[0], x = L.origin_q_d[1], y = L.origin_q_d[2], z = L.origin_q_d[3];
     const Interval ww = sq(w), xx = sq(x), yy = sq(y), zz = sq(z);
     const Interval nq = ww + xx + yy + zz;  // > 0: add_link refuses the zero quaternion
@@ -114,9 +121,29 @@ Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(
     R[2][0] = two * (x * z - w * y) / nq;
     R[2][1] = two * (y * z + w * x) / nq;
     R[2][2] = (ww - xx - yy + zz) / nq;
-    Pose_bounds &O = origin_[k];
+    Pose_bounds &O = F.origin;
     ball_of(R, O.Rm, O.eps);
     for (int i = 0; i < 3; ++i) O.om[i] = L.origin_p_d[i];  // exact
+  }
+  last = f;
+  return f;
+}
+
+Chain_path::Chain_path(const Chain &c, const double *q0, const double *q1) : c_(c) {
+  c.check_segment(q0, q1);
+  const size_t n = c.size();
+  fixed_ = fixed_parts(c);
+  ends_.resize(n);
+  consts_.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    ends_[k] = joint_doubles(c.link(k), q0[k], q1[k]);
+    Link_consts &C = consts_[k];
+    const Joint_doubles &d = ends_[k];
+    C.dc = Interval(d.c1) - Interval(d.c0);
+    C.ds = Interval(d.s1) - Interval(d.s0);
+    const Interval K = Interval(d.c0) * C.ds - Interval(d.s0) * C.dc;
+    const double mK = std::max(std::fabs(K.lo), std::fabs(K.hi));
+    C.akt = Interval(2.0) * fx(k).A * Interval(mK);  // >= |2 A K|
   }
 }
 
@@ -144,7 +171,7 @@ long Chain_path::common_ancestor(size_t i, size_t j) const {
 void Chain_path::ball_of_link(size_t k, const Interval &T, Pose_bounds *out, long base) const {
   const Chain_link &L = c_.link(k);
   const Joint_doubles &d = ends_[k];
-  const Pose_bounds &O = origin_[k];
+  const Pose_bounds &O = fx(k).origin;
   Pose_bounds &P = out[k];
   double Rpo[3][3], epo;  // R_parent R_origin
   if (L.parent < 0 || L.parent == base) {
@@ -161,7 +188,7 @@ void Chain_path::ball_of_link(size_t k, const Interval &T, Pose_bounds *out, lon
     P.rho = Q.rho;
     add_rotated(Q.Rm, Q.eps, O.om, 0.0, P.om, P.rho);
   }
-  const double *ax = axis_[k].data();
+  const double *ax = fx(k).axis.data();
   if (L.joint == Joint_type::prismatic) {
     const Interval e = line(d.e0, d.e1, T);
     double vm[3], s = 0;
@@ -182,17 +209,17 @@ void Chain_path::ball_of_link(size_t k, const Interval &T, Pose_bounds *out, lon
   Interval J[3][3];
   // line(d.c0, d.c1, T) with its slope made once (consts_: the same interval operations)
   const Interval c = Interval(d.c0) + T * consts_[k].dc, s = Interval(d.s0) + T * consts_[k].ds;
-  const Interval nn = sq(c) + sq(s) * axis2_[k];
+  const Interval nn = sq(c) + sq(s) * fx(k).axis2;
   double Jm[3][3], ej;
   if (nn.lo > 0) {
     const Interval two(2.0);
     Interval alpha = two * c * s / nn, beta = two * sq(s) / nn;
-    if (axis2_[k].lo == 1 && axis2_[k].hi == 1) {
+    if (fx(k).axis2.lo == 1 && fx(k).axis2.hi == 1) {
       alpha = clip(alpha, -1, 1);
       beta = clip(beta, 0, 2);
     }
     // I + alpha [a]x + beta (a a^T - |a|^2 I), the last matrix made once (consts_)
-    const Interval(&B)[3][3] = consts_[k].B;
+    const Interval(&B)[3][3] = fx(k).B;
     const double cross[3][3] = {{0.0, -ax[2], ax[1]}, {ax[2], 0.0, -ax[0]}, {-ax[1], ax[0], 0.0}};
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
@@ -226,8 +253,8 @@ void Chain_path::derivs_of_link(size_t k, const Interval &T, Path_derivs *out, l
     o2p = Interval(Q.o2);
   }
   const Link_consts &C = consts_[k];
-  const Interval &A = C.A;
-  const double *po = origin_[k].om;
+  const Interval &A = fx(k).A;
+  const double *po = fx(k).origin.om;
   double vmax = norm(po), v1 = 0;
   Interval th1(0.0), th2(0.0);
   if (L.joint == Joint_type::prismatic) {
@@ -236,12 +263,12 @@ void Chain_path::derivs_of_link(size_t k, const Interval &T, Path_derivs *out, l
   } else if (L.joint == Joint_type::revolute || L.joint == Joint_type::continuous) {
     const Interval &dc = C.dc, &ds = C.ds;
     const Interval c = Interval(d.c0) + T * dc, s = Interval(d.s0) + T * ds;  // line(), slopes made once
-    const Interval nn = sq(c) + sq(s) * axis2_[k];
+    const Interval nn = sq(c) + sq(s) * fx(k).axis2;
     if (!(nn.lo > 0)) {
       out[k] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
       return;
     }
-    const Interval nlo(nn.lo), np = Interval(2.0) * (c * dc + axis2_[k] * s * ds);
+    const Interval nlo(nn.lo), np = Interval(2.0) * (c * dc + fx(k).axis2 * s * ds);
     const Interval &akt = C.akt;  // >= |2 A K|
     th1 = Interval(mag(akt / nlo));
     th2 = Interval(mag(akt * Interval(mag(np)) / (nlo * nlo)));

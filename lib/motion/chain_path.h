@@ -54,6 +54,7 @@
 // on which n may vanish gives infinite bounds (then only the ball serves).
 #pragma once
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "arith/interval.h"
@@ -96,16 +97,32 @@ class Chain_path {
   void derivs_of_link(size_t k, const arith::Interval &T, Path_derivs *out, long base) const;
   const Chain &c_;
   std::vector<Joint_doubles> ends_;
-  std::vector<Pose_bounds> origin_;  // each link's origin pose (R of origin_q, p: rho = 0)
-  std::vector<arith::Interval> axis2_;  // |a|^2 of each joint axis
-  std::vector<std::array<double, 3>> axis_;  // each joint axis (doubles, exact)
-  // Per link, the piece-independent parts, made once by the constructor with the same
-  // interval operations the per-piece formulas would apply (so the same intervals):
-  // a a^T - |a|^2 I of the revolute factor, and for derivs_of_link |a| enclosed, the
-  // slopes c1 - c0, s1 - s0, and |2 A K| (its upper end), K = c0 (s1 - s0) - s0 (c1 - c0).
-  struct Link_consts {
+  // Per link, the segment-independent parts, made from the link's doubles alone: its
+  // origin pose (R of origin_q, p: rho = 0), axis (doubles, exact), |a|^2, a a^T - |a|^2 I
+  // of the revolute factor and |a| enclosed. Shared by the segments of a chain: the
+  // thread keeps the last set made (fixed_parts) and hands it out again when every link's
+  // doubles (key) and the rounding mode match, so the intervals are the ones a remake
+  // would give (remade per segment they were ~3% of a free Panda segment, issue 30).
+  struct Link_fixed {
+    Pose_bounds origin;
+    arith::Interval axis2;
+    std::array<double, 3> axis;
     arith::Interval B[3][3];
-    arith::Interval A, dc, ds, akt;
+    arith::Interval A;
+    std::array<double, 10> key;  // axis_d, origin_p_d, origin_q_d
+  };
+  struct Fixed {
+    bool nearest;  // made in round-to-nearest (arith/interval.h: exact points then)
+    std::vector<Link_fixed> links;
+  };
+  static std::shared_ptr<const Fixed> fixed_parts(const Chain &c);
+  const Link_fixed &fx(size_t k) const { return fixed_->links[k]; }
+  std::shared_ptr<const Fixed> fixed_;
+  // Per link and segment, made once by the constructor with the same interval operations
+  // the per-piece formulas would apply (so the same intervals): the slopes c1 - c0,
+  // s1 - s0, and |2 A K| (its upper end), K = c0 (s1 - s0) - s0 (c1 - c0).
+  struct Link_consts {
+    arith::Interval dc, ds, akt;
   };
   std::vector<Link_consts> consts_;
 };
