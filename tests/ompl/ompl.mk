@@ -10,7 +10,7 @@ OMPL_INC      := $(firstword $(wildcard /usr/include/ompl-*))
 OMPL_SCENE    := $(BUILD)/ompl/panda_scene.txt
 OMPL_CXXFLAGS := -std=c++17 -O2 -g -Wall -Wextra -Iinclude -Ibindings/ompl \
                  -isystem $(OMPL_INC) -isystem /usr/include/eigen3
-OMPL_LIBS     := -L$(BUILD) -lpolyccd -lompl -Wl,-rpath,'$$ORIGIN'
+OMPL_LIBS     := -L$(BUILD) -lpolyccd -lompl -pthread -Wl,-rpath,'$$ORIGIN'
 OMPL_SKIP     := skipped (no OMPL headers: /usr/include/ompl-* is missing; apt-get install libompl-dev)
 
 BENCH_PLANNING_ARGS ?= --queries 10 --runs 3 --slot

@@ -9,6 +9,7 @@
 //  2. checkMotion with a last valid state: the motion's answer as above; when invalid,
 //     0 <= f < the first contact time, the state is the joint path's at f
 //     (pccd_chain_joint_values_s) and the path from s1 to it is free (pccd_robot_check).
+//     Two threads sharing the checks answer as one does.
 //  3. RRTConnect on the file's query, then OMPL's checked simplifiers: every segment of
 //     the returned path is free by an exact first-contact check, and poses every 0.01 rad
 //     along polyccd's joint path are free by exact static checks (dense).
@@ -22,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <thread>
 
 #include "../cpp/expect.h"
 #include "scene_file.hpp"
@@ -169,6 +171,20 @@ int main(int argc, char **argv) {
               states, colliding_states, edges, colliding_edges, backed_off);
   expect(colliding_states > 10 && edges - colliding_edges > 10 && colliding_edges > 10 && backed_off > 5,
          "the random cases reach every kind of answer");
+
+  // two threads sharing the validators answer as one thread does (Robot_checks keeps no
+  // per-call state; the C API shares a robot passed as const)
+  std::vector<std::vector<double>> poses(120, std::vector<double>(d));
+  for (auto &p : poses)
+    for (size_t i = 0; i < d; ++i) p[i] = sc.bounds[i].first + u(rng) * (sc.bounds[i].second - sc.bounds[i].first);
+  std::vector<int> serial(poses.size()), shared(poses.size());
+  for (size_t k = 0; k < poses.size(); ++k) serial[k] = checks->collides(poses[k].data(), poses[k].data());
+  auto half = [&](size_t from) {
+    for (size_t k = from; k < poses.size(); k += 2) shared[k] = checks->collides(poses[k].data(), poses[k].data());
+  };
+  std::thread t0(half, 0), t1(half, 1);
+  t0.join(), t1.join();
+  expect(serial == shared, "two threads sharing the checks answer as one");
 
   // bounds and errors
   double *x = a->as<Real_state>()->values;
