@@ -76,9 +76,10 @@ struct Answer {
 // double m 2^-k has k digits after the point), trailing zeros dropped: a rational string
 // the C API reads as exactly x.
 inline std::string exact_decimal(double x) {
-  char buf[1200];
-  std::snprintf(buf, sizeof buf, "%.1074f", x);
-  std::string s(buf);
+  int n = std::snprintf(nullptr, 0, "%.1074f", x);
+  std::string s(size_t(n) + 1, '\0');
+  std::snprintf(&s[0], s.size(), "%.1074f", x);
+  s.resize(size_t(n));
   size_t end = s.find_last_not_of('0');
   if (end != std::string::npos && s[end] == '.') --end;
   return s.substr(0, end + 1);
