@@ -185,11 +185,13 @@ test-py: lib venv $(BUILD)/poly_probe
 	  -n $(PYTEST_WORKERS) --dist loadfile tests
 
 # Builds and runs every test (C, C++ and Python) with what is installed: no apt-get.
-# Everything is built first, in parallel; then the C and C++ tests run, then pytest,
+# Everything is built first, in parallel; then the C and C++ tests run, then the C++
+# OMPL validators' test (tests/ompl/ompl.mk: it says "skipped" without OMPL's headers), then pytest,
 # whose summary line ("N passed ...") ends the output.
 check:
 	@$(MAKE) --no-print-directory $(PAR) lib venv $(CPP_TESTS) $(C_TESTS) $(BUILD)/poly_probe
 	@$(MAKE) --no-print-directory test-c
+	@$(MAKE) --no-print-directory test-ompl
 	@$(MAKE) --no-print-directory test-py
 
 test: deps
@@ -210,6 +212,7 @@ tsan: deps
 
 include tests/bench/bench.mk
 include tests/fuzz/fuzz.mk
+include tests/ompl/ompl.mk
 
 bench: all $(BUILD)/bench_linear $(BUILD)/bench_min_distance
 	$(BUILD)/bench_linear $(BENCH_LINEAR_ARGS)

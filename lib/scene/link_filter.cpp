@@ -330,7 +330,9 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
     work.swap(S.fronts[it.f]);
     S.give_back(it.f);
     while (!work.empty()) {
-      const auto [ka, kb] = work.back();
+      // Not a structured binding: lambdas below capture these (C++17 forbids capturing
+      // bindings; clang refuses, which broke the fuzz build).
+      const uint32_t ka = work.back().first, kb = work.back().second;
       work.pop_back();
       if (!enclose::boxes_within(memo_a.node(ka, [&] { return box_of(pa, ha.nodes[ka].c, ha.nodes[ka].h, yna); }),
                                  memo_b.node(kb, [&] { return box_of(pb, hb.nodes[kb].c, hb.nodes[kb].h, ynb); }),

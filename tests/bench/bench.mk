@@ -61,3 +61,6 @@ BENCH_ADV_ARGS ?=
 bench-adversarial: all
 	$(VPY) tests/bench/bench_adversarial.py $(BENCH_ADV_ARGS)
 bench: bench-adversarial
+
+# The planning benchmark of the C++ OMPL validators (tests/bench/bench_planning_cpp.py)
+# is added to `make bench` by tests/ompl/ompl.mk, only where OMPL's headers are installed.
