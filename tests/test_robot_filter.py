@@ -231,3 +231,28 @@ def test_built_near_misses_and_touches(name):
             box = gap_box(robot, q0, q1, rng, gap)
             seen[check_all_ways(robot, q0, q1, [box], False, (name, k, str(gap)))] += 1
     assert seen[True] and seen[False], seen  # both kinds were checked
+
+
+@needs_robots
+@pytest.mark.parametrize("name", sorted(URDFS))
+def test_states_through_the_filter(name):
+    """Robot states (q0 = q1, obstacles still: every time piece holds the same poses, so
+    the filter stops at the first piece it cannot separate, link_filter.h's frozen
+    sides, and the decide scan looks at one instant): the answers of the unfiltered
+    check, on the full meshes with obstacles where the links are (self-collision off and
+    on), and on the boxed arm against gap boxes touching, a hair from and a hair into a
+    link."""
+    robot = arm(name)
+    rng = random.Random(SEED + 17 * len(name))
+    for k in range(max(4, SEGMENTS)):
+        q, _ = random_segment(robot, rng)
+        obstacles = obstacles_near(robot, q, q, rng, n=3, spread=0.05)
+        check_all_ways(robot, q, q, obstacles, k % 2 == 1, (name, k))
+    boxes = boxed(robot)
+    seen = {True: 0, False: 0}
+    for k in range(3):
+        q, _ = random_segment(boxes, rng)
+        for gap in (F(0), F(1, 10 ** 9), F(-1, 10 ** 9)):
+            box = gap_box(boxes, q, q, rng, gap)
+            seen[check_all_ways(boxes, q, q, [box], False, (name, "gap", k, str(gap)))] += 1
+    assert seen[True] and seen[False], seen  # both kinds were checked

@@ -368,7 +368,7 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
       }
     }
     if (next.empty()) continue;  // separated on this piece
-    if (w && it.d >= kWitness_depth && witness_spent < kWitness_tests + tests / 2) {
+    if (w && (it.d >= kWitness_depth || lim.frozen) && witness_spent < kWitness_tests + tests / 2) {
       size_t budget = kWitness_tests + tests / 2 - witness_spent;
       const size_t before = budget;
       const int md = it.d + 1;
@@ -383,7 +383,7 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
         return start;
       }
     }
-    if (it.d == kMax_depth) return start;  // exact
+    if (it.d == kMax_depth || lim.frozen) return start;  // exact; frozen: deeper pieces are equal
     S.stack.push_back({it.d + 1, 2 * it.i + 1, S.take(next)});
     S.stack.push_back({it.d + 1, 2 * it.i, S.take(next)});
   }

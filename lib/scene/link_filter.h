@@ -102,6 +102,11 @@ struct Filter_limits {
   double until = 1;               // pieces starting at or after it are not looked at
   size_t max_tests = kMax_tests;  // front pairs per body pair
   double delta_lo = 0;            // with reach > 0: delta rounded down (witnesses within it)
+  // Both sides stand still over [0, 1] (a robot state: q0 = q1, obstacles fixed): every
+  // piece holds the same poses, so a halving separates nothing the whole piece did not.
+  // The first piece that is not separated gives its start (0) at once, after a witness
+  // try at its midpoint (decide mode): no descent to kMax_depth over equal pieces.
+  bool frozen = false;
 };
 
 // w: when not null (both bodies meshes; with reach > 0 only when lim.delta_lo > 0),
