@@ -291,11 +291,29 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         }
       }
     }
+    // First-contact mode with a minimum distance: a pair certainly within delta at t = 0
+    // (touching_at on the poses at 0, kWitness_tests node pairs) has bound 0, which is
+    // what its traversal returns (the piece holding 0 is never separated), and is a
+    // witness at 0 when none was found before. The traversal of such a pair went down to
+    // the finest piece with a front of thousands (links within 5 cm over a stretch:
+    // 50-100 ms each on the UR5's self pairs; issue 33), and a witness at 0 leaves the
+    // later pairs nothing to clear (until = 0).
+    const bool zero_witness = !decide && reach > 0 && lim.delta_lo > 0;
+    constexpr size_t kZero_tests = 4096;
     for (Pair_plan p : plans) {
       Witness w;
       const long base = base_of(p);
-      p.lower = first_uncleared(side(p.i, base), side(p.j, base), reach, lim,
-                                !opt.all_contacts && !found.found ? &w : nullptr);
+      const Filter_side a = side(p.i, base), b = side(p.j, base);
+      size_t budget = kZero_tests;
+      uint32_t ea = 0, eb = 0;
+      if (zero_witness && a.data->mesh && b.data->mesh &&
+          touching_at(*a.data, a.instant(0, 0), *b.data, b.instant(0, 0), {{0, 0}}, budget, ea, eb, reach,
+                      lim.delta_lo)) {
+        p.lower = 0;
+        if (!opt.all_contacts && !found.found) w = Witness{true, 0, 0, ea, eb};
+      } else {
+        p.lower = first_uncleared(a, b, reach, lim, !opt.all_contacts && !found.found ? &w : nullptr);
+      }
       if (w.found) {
         found = w;
         found_i = p.i;
