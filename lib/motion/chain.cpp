@@ -186,7 +186,8 @@ Rigid_motion Chain::joint_motion(size_t k, double q0, double q1) const {
 std::vector<Rigid_motion> Chain::segment_motions(const double *q0, const double *q1,
                                                 std::vector<Mat3_poly> *rn,
                                                 const std::vector<bool> *needed,
-                                                const Link_check *check) const {
+                                                const Link_check *check, long base) const {
+  if (base >= static_cast<long>(links_.size())) throw arith::Internal_error("segment_motions: no such base link");
   std::vector<Rigid_motion> out;
   out.reserve(links_.size());
   std::vector<Mat3_poly> local;
@@ -199,17 +200,24 @@ std::vector<Rigid_motion> Chain::segment_motions(const double *q0, const double 
     for (size_t k = links_.size(); k-- > 0;)
       if (need[k] && links_[k].parent >= 0) need[links_[k].parent] = true;
   }
+  std::vector<char> in_frame(links_.size(), 1);  // at or below base (parents come first)
+  if (base >= 0)
+    for (size_t k = 0; k < links_.size(); ++k) {
+      const long p = links_[k].parent;
+      in_frame[k] = static_cast<long>(k) == base || (p >= 0 && in_frame[p]);
+    }
   for (size_t k = 0; k < links_.size(); ++k) {
-    if (!need[k]) {
+    if (!need[k] || !in_frame[k] || static_cast<long>(k) == base) {
       out.emplace_back();
       R.emplace_back();
+      if (static_cast<long>(k) == base && need[k]) R.back() = rotation_numerator(out.back().r);
       continue;
     }
     Rigid_motion j = joint_motion(k, q0[k], q1[k]);
     // Every factor is valid by construction (a joint quaternion never vanishes, above),
     // so the composition needs no vanishing check. Links come after their parents.
     const long p = links_[k].parent;
-    out.push_back(p < 0 ? std::move(j) : compose_valid(out[p], j, &R[p]));
+    out.push_back(p < 0 || p == base ? std::move(j) : compose_valid(out[p], j, &R[p]));
     if (check) (*check)(k, out.back());
     R.push_back(rotation_numerator(out.back().r));
   }

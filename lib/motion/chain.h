@@ -93,10 +93,16 @@ class Chain {
   // the motions of the links its filter cannot clear: scene/robot.h).
   // check: when given, called on every link built (Link_check). The products are
   // counted by cost (poly.h), so the calling thread's work limits hold inside.
+  // base >= 0: the motions in link base's frame instead of the world's: base is the
+  // identity, a link below it the composition of the joints between them, and the links
+  // not below base are left as the identity. Two links at or below base have the same
+  // relative pose at every t in either frame (each world motion is base's world motion
+  // composed with these, exactly), so every distance and contact time between them is
+  // the same; the polynomials are of far lower degree (scene/robot.cpp: self pairs).
   std::vector<Rigid_motion> segment_motions(const double *q0, const double *q1,
                                             std::vector<Mat3_poly> *rn = nullptr,
                                             const std::vector<bool> *needed = nullptr,
-                                            const Link_check *check = nullptr) const;
+                                            const Link_check *check = nullptr, long base = -1) const;
   // Input_error as segment_motions for a segment it would reject, without building.
   void check_segment(const double *q0, const double *q1) const;
   // The joint values at time t in [0, 1] of the same segment (as above; fixed: 0).

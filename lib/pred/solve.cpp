@@ -89,7 +89,7 @@ bool meets_at_zero(const Query_data<NT> &q) {
   switch (q.kind) {
     case SPHERE_TRIANGLE:
     case VERTEX_FACE: return ball_meets_triangle(x[0], r2d2, {{x[1], x[2], x[3]}});
-    case VERTEX_EDGE: return ball_meets_triangle(x[0], r2d2, {{x[1], x[2], x[2]}});
+    case VERTEX_EDGE: return ball_meets_segment(x[0], r2d2, x[1], x[2]);
     case VERTEX_VERTEX: {
       Vec3<NT> e = sub(x[0], x[1]);
       return arith::sign(dot3(e, e) - r2d2) <= 0;

@@ -156,10 +156,22 @@ bool ball_meets_triangle(const Vec3<NT> &c, const NT &r2d2, const std::array<Vec
 }
 
 template <class NT>
+bool ball_meets_segment(const Vec3<NT> &c, const NT &r2d2, const Vec3<NT> &a, const Vec3<NT> &b) {
+  for (const Vec3<NT> *v : {&a, &b}) {
+    const Vec3<NT> d = sub(c, *v);
+    if (sign(dot3(d, d) - r2d2) <= 0) return true;
+  }
+  const Vec3<NT> e = sub(b, a);
+  if (sign(dot3(sub(c, a), e)) <= 0 || sign(dot3(sub(b, c), e)) <= 0) return false;  // also a = b
+  const Vec3<NT> u = cross3(e, sub(c, a));
+  return sign(dot3(u, u) - r2d2 * dot3(e, e)) <= 0;
+}
+
+template <class NT>
 bool segments_within(const Vec3<NT> &p, const Vec3<NT> &q, const Vec3<NT> &a, const Vec3<NT> &b,
                      const NT &r2d2) {
-  if (ball_meets_triangle(p, r2d2, {{a, b, b}}) || ball_meets_triangle(q, r2d2, {{a, b, b}}) ||
-      ball_meets_triangle(a, r2d2, {{p, q, q}}) || ball_meets_triangle(b, r2d2, {{p, q, q}}))
+  if (ball_meets_segment(p, r2d2, a, b) || ball_meets_segment(q, r2d2, a, b) ||
+      ball_meets_segment(a, r2d2, p, q) || ball_meets_segment(b, r2d2, p, q))
     return true;
   const Vec3<NT> ea = sub(q, p), eb = sub(b, a), w = sub(a, p);
   const Vec3<NT> n = cross3(ea, eb);
@@ -183,6 +195,10 @@ template bool ball_meets_triangle(const Vec3<arith::Rational> &, const arith::Ra
                                   const std::array<Vec3<arith::Rational>, 3> &);
 template bool ball_meets_triangle(const Vec3<arith::Interval> &, const arith::Interval &,
                                   const std::array<Vec3<arith::Interval>, 3> &);
+template bool ball_meets_segment(const Vec3<arith::Rational> &, const arith::Rational &,
+                                 const Vec3<arith::Rational> &, const Vec3<arith::Rational> &);
+template bool ball_meets_segment(const Vec3<arith::Interval> &, const arith::Interval &,
+                                 const Vec3<arith::Interval> &, const Vec3<arith::Interval> &);
 template bool segments_within(const Vec3<arith::Rational> &, const Vec3<arith::Rational> &,
                               const Vec3<arith::Rational> &, const Vec3<arith::Rational> &,
                               const arith::Rational &);

@@ -56,6 +56,14 @@ template <class NT> bool triangles_meet(const std::array<Vec3<NT>, 3> &a,
 template <class NT> bool ball_meets_triangle(const Vec3<NT> &c, const NT &r2d2,
                                              const std::array<Vec3<NT>, 3> &t);
 
+// The closed ball (c, r2d2 as above) meets the closed segment [a, b]: an end inside
+// the ball, or the open segment within distance r with the projection of c strictly
+// inside it. The same answer as ball_meets_triangle(c, r2d2, {a, b, b}) (whose
+// degenerate side b - b and normal are exact zeros only in rationals: with intervals
+// they straddle zero, so that filter never decided and every such test was exact).
+template <class NT> bool ball_meets_segment(const Vec3<NT> &c, const NT &r2d2, const Vec3<NT> &a,
+                                            const Vec3<NT> &b);
+
 // The closed segments [p, q] and [a, b] are within distance r (r2d2 = r^2 D^2): an
 // endpoint's ball meets the other closed segment, or the lines' closest points lie
 // strictly inside both segments at distance <= r (delta_systems.h: the closest pair
@@ -75,6 +83,10 @@ extern template bool ball_meets_triangle(const Vec3<arith::Rational> &, const ar
                                          const std::array<Vec3<arith::Rational>, 3> &);
 extern template bool ball_meets_triangle(const Vec3<arith::Interval> &, const arith::Interval &,
                                          const std::array<Vec3<arith::Interval>, 3> &);
+extern template bool ball_meets_segment(const Vec3<arith::Rational> &, const arith::Rational &,
+                                        const Vec3<arith::Rational> &, const Vec3<arith::Rational> &);
+extern template bool ball_meets_segment(const Vec3<arith::Interval> &, const arith::Interval &,
+                                        const Vec3<arith::Interval> &, const Vec3<arith::Interval> &);
 extern template bool segments_within(const Vec3<arith::Rational> &, const Vec3<arith::Rational> &,
                                      const Vec3<arith::Rational> &, const Vec3<arith::Rational> &,
                                      const arith::Rational &);

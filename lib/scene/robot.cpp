@@ -1,15 +1,14 @@
 #include "scene/robot.h"
 
 #include <algorithm>
-#include <map>
 #include <string>
-#include <tuple>
 
 #include "bvh/hierarchy.h"
 #include "motion/chain_path.h"
 #include "poly/poly.h"
 #include "scene/link_filter.h"
 #include "scene/piece_poses.h"
+#include "scene/robot_exact.h"
 #include "scene/solid_start.h"
 
 namespace pccd::scene {
@@ -46,98 +45,6 @@ Scene_report witness_report(size_t i, size_t j, const Witness &w, double free_un
   return rep;
 }
 
-// A time window [lo, hi] of [0, 1] holding the first contact (no checked pair touches
-// before lo: the filter's bounds; some pair touches at hi: a witness), solved as the
-// segment t = lo + (hi - lo) s, s in [0, 1]: the exact motions reparametrized (the same
-// motion, each polynomial composed with that affine map), the report's times mapped
-// back. The first contact, the pairs touching first and their features are those of
-// [0, 1]; the exact solve's enclosures are far tighter on the short window.
-struct Window {
-  bool on = false;
-  double lo = 0, hi = 1;  // dyadic doubles
-  Rational to_t(const Rational &s) const { return Rational(lo) + (Rational(hi) - Rational(lo)) * s; }
-  double to_s(double t) const {  // a lower bound of the window time of t >= lo
-    return std::max(0.0, arith::round_down((t - lo) / (hi - lo)));
-  }
-};
-
-void map_back(Scene_report &rep, const Window &w) {
-  rep.lo = w.to_t(rep.lo);
-  rep.hi = w.to_t(rep.hi);
-  rep.free_until = w.to_t(rep.free_until);
-  for (Pair_report &p : rep.pairs) {
-    p.lo = w.to_t(p.lo);
-    p.hi = w.to_t(p.hi);
-    for (Contact_report &c : p.contacts) {
-      c.lo = w.to_t(c.lo);
-      c.hi = w.to_t(c.hi);
-    }
-  }
-}
-
-// The exact solve of the pairs left (scene.h, solve_planned), the exact motions of their
-// links built on the first demand (over the window when it is on: obstacles stationary).
-Scene_report solve_exact(const Robot_model &r, const double *q0, const double *q1, const std::vector<Moving_body> &obst,
-                         std::vector<Pair_plan> plans, const Scene_options &opt, const Robot_options &ro,
-                         const Window &win = {}) {
-  const size_t nr = r.bodies.size();
-  std::vector<bool> needed(r.chain.size(), false);
-  for (Pair_plan &p : plans) {
-    needed[r.bodies[p.i].link] = true;
-    if (p.j < nr) needed[r.bodies[p.j].link] = true;
-    if (win.on) p.lower = win.to_s(p.lower);
-  }
-  std::vector<motion::Rigid_motion> motions;
-  std::vector<motion::Mat3_poly> rn;
-  std::vector<std::shared_ptr<const narrow::Motion_data>> link_data(r.chain.size());
-  std::vector<std::unique_ptr<Moving_body>> robot_mb(nr);
-  bool built = false;
-  auto body = [&](size_t k) -> const Moving_body & {
-    if (k >= nr) return obst[k - nr];
-    if (!robot_mb[k]) {
-      if (!built) {
-        motions = r.chain.segment_motions(q0, q1, win.on ? nullptr : &rn, &needed,
-                                          ro.check_link ? &ro.check_link : nullptr);
-        if (win.on) {
-          const Rational a(win.lo), b(win.hi);
-          for (size_t L = 0; L < motions.size(); ++L) {
-            if (!needed[L]) continue;
-            motion::Rigid_motion &m = motions[L];
-            for (auto &c : m.r) c = poly::reparametrize(c, a, b);
-            for (int i = 0; i < 3; ++i) {
-              m.o[i] = poly::reparametrize(m.o[i], a, b);
-              m.b[i] = poly::reparametrize(m.b[i], a, b);
-            }
-          }
-        }
-      }
-      built = true;
-      const size_t L = r.bodies[k].link;
-      if (!link_data[L]) link_data[L] = narrow::prepare_motion(motions[L], true, win.on ? nullptr : &rn[L]);
-      robot_mb[k] = std::make_unique<Moving_body>(narrow::prepare_body(r.bodies[k].body, link_data[L]));
-    }
-    return *robot_mb[k];
-  };
-  Scene_options o = opt;
-  if (win.on) o.solve.until = 1;  // the window ends at the witness: every contact up to it
-  // The time tolerance is one of t: a width tol / (hi - lo) in s is tol in t (the report's
-  // enclosures, combine.h's included, map back scaled by hi - lo). The same tol in s asked
-  // for enclosures 2^14 times tighter than tol on a window of 2^-14, below the spacing
-  // of doubles there, so the interval stage could not isolate the first time and the
-  // contact pair went to the exact stage (issue 30: 8 of the 23 ms of a colliding Panda
-  // segment, and most of the min_distance cost).
-  if (win.on) o.solve.tol = opt.solve.tol / (Rational(win.hi) - Rational(win.lo));
-  // On the window (2^-14 wide on the bench's colliding segments) the automatic phase is
-  // bvh: its certified spreads are tiny there, so it hands over a few dozen candidates
-  // that the interval stages decide, where the range phase chosen by estimate paid about
-  // a quarter of a colliding Panda segment's time for its queries (perf). Speed only
-  // (every phase gives the same answers); measured on the bench segments, same run:
-  // first-contact means -7% (Panda) and -9% (UR5), answers identical (issue 30).
-  if (win.on && o.broad_phase == Broad_phase::automatic) o.broad_phase = Broad_phase::bvh;
-  Scene_report rep = solve_planned(body, plans, o, -1, true);
-  if (win.on) map_back(rep, win);
-  return rep;
-}
 
 }  // namespace
 
@@ -330,12 +237,30 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         }
       }
     }
+    // First-contact mode with a minimum distance: a pair certainly within delta at t = 0
+    // (touching_at on the poses at 0, kWitness_tests node pairs) has bound 0, which is
+    // what its traversal returns (the piece holding 0 is never separated), and is a
+    // witness at 0 when none was found before. The traversal of such a pair went down to
+    // the finest piece with a front of thousands (links within 5 cm over a stretch:
+    // 50-100 ms each on the UR5's self pairs; issue 33), and a witness at 0 leaves the
+    // later pairs nothing to clear (until = 0).
+    const bool zero_witness = !decide && reach > 0 && lim.delta_lo > 0;
+    constexpr size_t kZero_tests = 4096;
     for (size_t q = 0; q < plans.size(); ++q) {
       Pair_plan p = plans[q];
       Witness w;
       const long base = base_of(p);
-      p.lower = first_uncleared(side(p.i, base), side(p.j, base), reach, lim,
-                                !opt.all_contacts && !found.found ? &w : nullptr);
+      const Filter_side a = side(p.i, base), b = side(p.j, base);
+      size_t budget = kZero_tests;
+      uint32_t ea = 0, eb = 0;
+      if (zero_witness && a.data->mesh && b.data->mesh &&
+          touching_at(*a.data, a.instant(0, 0), *b.data, b.instant(0, 0), {{0, 0}}, budget, ea, eb, reach,
+                      lim.delta_lo, a.tree, b.tree)) {
+        p.lower = 0;
+        if (!opt.all_contacts && !found.found) w = Witness{true, 0, 0, ea, eb};
+      } else {
+        p.lower = first_uncleared(a, b, reach, lim, !opt.all_contacts && !found.found ? &w : nullptr);
+      }
       if (w.found) {
         found = w;
         found_i = p.i;
@@ -424,12 +349,12 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       win.on = still && win.lo < win.hi && !(opt.solve.until < Rational(horizon));
       Scene_options bounded = opt;
       if (Rational(horizon) < bounded.solve.until) bounded.solve.until = Rational(horizon);
-      return solve_exact(r, q0, q1, obst, left, bounded, ro, win);
+      return solve_exact(r, path, q0, q1, obst, left, bounded, ro, win);
     }
     plans = std::move(kept);
   }
 
-  return solve_exact(r, q0, q1, obst, plans, opt, ro);
+  return solve_exact(r, path, q0, q1, obst, plans, opt, ro);
 }
 
 }  // namespace pccd::scene

@@ -15,7 +15,9 @@
 //     surface contacts, not containment: narrow/containment.h) unless solid_start.h
 //     certifies that neither holds a containment point of the other at t = 0.
 //  3. the exact link motions (motion::Chain::segment_motions, lazily: only the links of
-//     the pairs left, and their ancestors) and the exact solve of those pairs, in order
+//     the pairs left, and their ancestors; a self pair's in the frame of its links'
+//     lowest common ancestor, the same contacts at far lower degrees) and the exact
+//     solve of those pairs, in order
 //     (scene.h, solve_planned: decide mode stops at the first pair in contact; first-
 //     contact mode skips the pairs whose bound is above the best upper bound so far and
 //     stops at a contact at t = 0).

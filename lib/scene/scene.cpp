@@ -88,10 +88,11 @@ Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
   std::vector<Pair_plan> plans;
   plans.reserve(pairs.size());
   for (const auto &ij : pairs) plans.push_back({ij.first, ij.second, 0.0});
-  return solve_planned([&](size_t k) -> const Moving_body & { return *mb[k]; }, plans, opt, stored, false);
+  return solve_planned([&](const Pair_plan &, size_t k) -> const Moving_body & { return *mb[k]; }, plans, opt,
+                       stored, false);
 }
 
-Scene_report solve_planned(const std::function<const Moving_body &(size_t)> &body,
+Scene_report solve_planned(const std::function<const Moving_body &(const Pair_plan &, size_t)> &body,
                            const std::vector<Pair_plan> &plans, const Scene_options &opt,
                            int stored, bool witness) {
   Thread_pool pool(std::max(1u, opt.threads));
@@ -117,7 +118,7 @@ Scene_report solve_planned(const std::function<const Moving_body &(size_t)> &bod
     auto w = std::make_unique<Pair_work>();
     w->i = plan.i;
     w->j = plan.j;
-    w->ctx = std::make_unique<Pair_ctx>(body(w->i), body(w->j));
+    w->ctx = std::make_unique<Pair_ctx>(body(plan, w->i), body(plan, w->j));
     Search_options pair_so = so;  // the automatic phase is chosen per pair, by evidence
     pair_so.phase = choose(opt.broad_phase, *w->ctx, opt.solve.min_distance());
     pair_so.apart_at_zero = plan.lower > 0;

@@ -91,7 +91,9 @@ Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
                             const Scene_options &opt, int stored);
 
 // The same over pairs in ascending order of Pair_plan::lower, each pair's body on demand
-// (body(k): the prepared body k, built at most once by the caller). Modes:
+// (body(plan, k): the prepared body k, k = plan.i or plan.j, built at most once by the
+// caller; in any frame common to the pair's two bodies, which may differ from pair to
+// pair: a robot's self pairs are solved relative to a link, scene/robot.cpp). Modes:
 //  - decide (opt.solve.want_time false, not all_contacts): the first pair found in
 //    contact ends the solve; the report holds it alone, with a witness (some contact
 //    and some enclosure of one of its times), and free_until = its lower bound.
@@ -101,7 +103,7 @@ Scene_report solve_prepared(const std::vector<const Moving_body *> &mb,
 //    ends the solve. The first contact and the pairs touching first are those of the
 //    full solve; the report lists the pairs found touching, not every pair in contact.
 //  - otherwise as solve_prepared: every pair.
-Scene_report solve_planned(const std::function<const Moving_body &(size_t)> &body,
+Scene_report solve_planned(const std::function<const Moving_body &(const Pair_plan &, size_t)> &body,
                            const std::vector<Pair_plan> &plans, const Scene_options &opt,
                            int stored, bool witness);
 
