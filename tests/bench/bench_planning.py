@@ -205,14 +205,9 @@ def main(argv=None):
     from polyccd.ompl import RobotSpace, simplify
     import ompl_panda as ex
     from bench_robot import Discrete
-    robot, plates = ex.scene()
-    boxes = [("wall",) + ex.WALL, ("shelf",) + ex.SHELF]
-    slot_goal = None
-    if args.slot:  # the narrow passage: a slot around the hand at a goal (planning_slot.py)
-        import planning_slot
-        slot_goal, more, bodies = planning_slot.slot(robot, plates, random.Random(args.seed),
-                                                     ex.plate, ex.GOAL, ex.FINGER)
-        boxes, plates = boxes + more, plates + bodies
+    import planning_slot  # the narrow passage: a slot around the hand at a goal
+    robot, plates, boxes, slot_goal, more = planning_slot.problem(args.seed, args.slot)
+    if args.slot:
         print(f"slot: {', '.join(f'{n} {np.round(a, 4).tolist()} - {np.round(b, 4).tolist()}' for n, a, b in more)}"
               f" (8 mm each side of the hand at the first query's goal)")
     fcl_side = Discrete(robot, example_robot_file(PANDA_URDF), boxes)

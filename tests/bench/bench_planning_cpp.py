@@ -131,14 +131,8 @@ def main(argv=None):
     import ompl_panda as ex
     import scene_file
     from bench_planning import linear_path, plainmp_planners, queries
-    robot, plates = ex.scene()
-    boxes = [("wall",) + ex.WALL, ("shelf",) + ex.SHELF]
-    slot_goal = None
-    if args.slot:
-        import planning_slot
-        slot_goal, more, bodies = planning_slot.slot(robot, plates, random.Random(args.seed),
-                                                     ex.plate, ex.GOAL, ex.FINGER)
-        boxes, plates = boxes + more, plates + bodies
+    import planning_slot
+    robot, plates, boxes, slot_goal, _ = planning_slot.problem(args.seed, args.slot)
     fixed = {"panda_finger_joint1": ex.FINGER}
     options = dict(self_collision=False, limits=P.Limits(max_seconds=args.check_seconds),
                    first_contact=False)

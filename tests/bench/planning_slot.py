@@ -5,6 +5,8 @@ all (a passage narrower than 2 cm). The plates span the hand's extent along the 
 horizontal axis grown by MARGIN, and from MARGIN below the hand up to the hand's top
 (the wrist above stays free); the goal is a variation of examples/ompl_panda.py's GOAL
 whose pose is free with the slot (decided exactly by polyccd). A helper module."""
+import random
+
 import numpy as np
 
 CLEARANCE = 0.008  # m, above and below the hand: 2 x 8 mm < 2 cm
@@ -46,3 +48,17 @@ def slot(robot, plates, rng, make_plate, base_goal, finger, tries=40):
                            first_contact=False, joint_limits="ignore").collides:
             return goal, boxes, bodies
     raise SystemExit("planning_slot: no free slot goal found")
+
+
+def problem(seed, with_slot):
+    """The planning benches' problem (bench_planning.py, bench_planning_cpp.py): the
+    example's Panda and plates (examples/ompl_panda.py, importable as ompl_panda), its
+    wall and shelf as (name, lo, hi) boxes and, with_slot, the slot at a goal seeded by
+    seed. Returns (robot, plates, boxes, slot_goal or None, the slot's (name, lo, hi))."""
+    import ompl_panda as ex
+    robot, plates = ex.scene()
+    boxes = [("wall",) + ex.WALL, ("shelf",) + ex.SHELF]
+    if not with_slot:
+        return robot, plates, boxes, None, []
+    goal, more, bodies = slot(robot, plates, random.Random(seed), ex.plate, ex.GOAL, ex.FINGER)
+    return robot, plates + bodies, boxes + more, goal, more
