@@ -14,7 +14,7 @@ real arms (Panda and UR5 of example-robot-data), obstacles placed where the link
     decide answer on the arms' full meshes, robot versus obstacles and with
     self-collision (SRDF pairs allowed; some segments without obstacles);
   - built near misses and touches: a small box placed, in exact rationals, with a face
-    at a gap of 0, +-1e-4 or 1e-9 m ahead of a link's extreme vertex at t = 1 (so the
+    at a gap of 0, +-1e-4 or +-1e-9 m ahead of a link's extreme vertex at t = 1 (so the
     link touches it exactly, or stops a hair from it, or dips into it), on the boxed
     arms against brute force and the unfiltered check, both modes.
 (All contacts through the filter against brute force: tests/test_robot.py.)
@@ -227,7 +227,7 @@ def test_built_near_misses_and_touches(name):
     for k in range(max(3, SEGMENTS // 2)):
         q0, q1 = random_segment(robot, rng)
         q1 = q0 + (q1 - q0) / 3
-        for gap in (F(0), F(1, 10 ** 4), F(-1, 10 ** 4), F(1, 10 ** 9)):
+        for gap in (F(0), F(1, 10 ** 4), F(-1, 10 ** 4), F(1, 10 ** 9), F(-1, 10 ** 9)):
             box = gap_box(robot, q0, q1, rng, gap)
             seen[check_all_ways(robot, q0, q1, [box], False, (name, k, str(gap)))] += 1
     assert seen[True] and seen[False], seen  # both kinds were checked
