@@ -344,6 +344,15 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       Window win;
       win.lo = left.empty() ? 0 : std::min(left[0].lower, horizon);
       win.hi = horizon;
+      // A witness at t = 0 (a certain contact within delta then): the solve needs only
+      // the poses at 0, yet over [0, 1] the bvh phase's boxes held whole sweeps, and it
+      // listed and tested thousands of feature pairs (half the exact solve of a UR5
+      // segment within delta at 0 with self-collision: 40-80 ms; perf, issue 33). The
+      // finest piece's window [0, 2^-kMax_depth] holds the same contacts at 0: the
+      // witness pair's touches there, so it ends the solve, and the pair reported is
+      // the one of least key within delta at 0 (pair_search.cpp, within_at_zero), the
+      // same for any window starting at 0.
+      if (horizon == 0) win.hi = std::ldexp(1.0, -kMax_depth);
       bool still = true;
       for (const Moving_body &o : obst) still = still && o.mo == narrow::identity_motion();
       win.on = still && win.lo < win.hi && !(opt.solve.until < Rational(horizon));
