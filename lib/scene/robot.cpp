@@ -246,18 +246,40 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     // later pairs nothing to clear (until = 0).
     const bool zero_witness = !decide && reach > 0 && lim.delta_lo > 0;
     constexpr size_t kZero_tests = 4096;
+    // Each pair's test at 0 runs before any traversal: the pairs before the first one
+    // certainly within delta at 0 (zero_q) are then cleared only over the finest piece
+    // holding 0 (until = 2^-kMax_depth: the traversal visits the pieces in time order,
+    // so it ends at 0 exactly when the traversal to 1 does, and a bound above 0 drops
+    // the pair either way, the first contact being 0). Over [0, 1] they went down to
+    // the finest pieces near their own contacts, for nothing (issue 33).
+    std::vector<signed char> zero_of(plans.size(), 0);
+    std::vector<std::pair<uint32_t, uint32_t>> zero_at(plans.size());
+    size_t zero_q = plans.size();
+    for (size_t q = 0; zero_witness && q < plans.size(); ++q) {
+      const long base = base_of(plans[q]);
+      const Filter_side a = side(plans[q].i, base), b = side(plans[q].j, base);
+      size_t budget = kZero_tests;
+      if (a.data->mesh && b.data->mesh &&
+          touching_at(*a.data, a.instant(0, 0), *b.data, b.instant(0, 0), {{0, 0}}, budget, zero_at[q].first,
+                      zero_at[q].second, reach, lim.delta_lo, a.tree, b.tree)) {
+        zero_of[q] = 1;
+        zero_q = std::min(zero_q, q);
+      }
+    }
     for (size_t q = 0; q < plans.size(); ++q) {
       Pair_plan p = plans[q];
       Witness w;
       const long base = base_of(p);
       const Filter_side a = side(p.i, base), b = side(p.j, base);
-      size_t budget = kZero_tests;
-      uint32_t ea = 0, eb = 0;
-      if (zero_witness && a.data->mesh && b.data->mesh &&
-          touching_at(*a.data, a.instant(0, 0), *b.data, b.instant(0, 0), {{0, 0}}, budget, ea, eb, reach,
-                      lim.delta_lo, a.tree, b.tree)) {
+      if (zero_of[q]) {
         p.lower = 0;
-        if (!opt.all_contacts && !found.found) w = Witness{true, 0, 0, ea, eb};
+        if (!opt.all_contacts && !found.found) w = Witness{true, 0, 0, zero_at[q].first, zero_at[q].second};
+      } else if (q < zero_q && zero_q < plans.size() && !opt.all_contacts && !found.found) {
+        Filter_limits first;  // up to the finest piece holding 0, no witnesses
+        first.until = std::ldexp(1.0, -kMax_depth);
+        first.delta_lo = lim.delta_lo;
+        first.frozen = lim.frozen;
+        p.lower = first_uncleared(a, b, reach, first);
       } else {
         p.lower = first_uncleared(a, b, reach, lim, !opt.all_contacts && !found.found ? &w : nullptr);
       }
