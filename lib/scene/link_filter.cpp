@@ -301,8 +301,10 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
   // the pieces' fronts in buffers reused from call to call (no allocation per piece).
   thread_local Scratch tl_scratch;
   Scratch &S = tl_scratch;
-  Node_memo &memo_a = S.memo_a, &memo_b = S.memo_b;
-  memo_a.start(ha.nodes.size(), ha.elems.size());
+  // Side A's boxes are kept across calls when it carries a share key (shared_memo.h).
+  const bool share_a = SA.share != 0;
+  Node_memo &memo_b = S.memo_b;
+  if (!share_a) S.memo_a.start(ha.nodes.size(), ha.elems.size());
   memo_b.start(hb.nodes.size(), hb.elems.size());
   S.start();
   S.stack.push_back({0, 0, S.take(kRoots)});
@@ -324,7 +326,8 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
     tests += front_size;
     if (tests > lim.max_tests) return start;  // this piece's start
     next.clear();
-    memo_a.next_piece();
+    Node_memo &memo_a = share_a ? S.shared_a.at(SA, ha, it.d, it.i) : S.memo_a;
+    if (!share_a) memo_a.next_piece();
     memo_b.next_piece();
     work.clear();
     work.swap(S.fronts[it.f]);
@@ -390,12 +393,18 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
   return kNever;
 }
 
+enclose::Box whole_box(const Filter_side &S) {
+  const narrow::Body_data &d = *S.data;
+  const bvh::Hierarchy &h = S.tree ? *S.tree : bvh::hierarchy(d);
+  return box_of(S.piece(0, 0), h.nodes[0].c, h.nodes[0].h, norm_bound(d));
+}
+
+bool roots_apart(const enclose::Box &a, const enclose::Box &b, double reach) {
+  return !enclose::boxes_within(a, b, reach);
+}
+
 bool roots_apart(const Filter_side &SA, const Filter_side &SB, double reach) {
-  const narrow::Body_data &A = *SA.data, &B = *SB.data;
-  const bvh::Hierarchy &ha = SA.tree ? *SA.tree : bvh::hierarchy(A), &hb = SB.tree ? *SB.tree : bvh::hierarchy(B);
-  const Side_piece &pa = SA.piece(0, 0), &pb = SB.piece(0, 0);
-  return !enclose::boxes_within(box_of(pa, ha.nodes[0].c, ha.nodes[0].h, norm_bound(A)),
-                                box_of(pb, hb.nodes[0].c, hb.nodes[0].h, norm_bound(B)), reach);
+  return roots_apart(whole_box(SA), whole_box(SB), reach);
 }
 
 bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w, double reach,

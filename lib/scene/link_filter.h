@@ -42,6 +42,7 @@
 // delta" throughout; a witness is then a triangle pair certainly within
 // delta at the midpoint (delta_witness.h; Filter_limits::delta_lo, issue 33).
 #pragma once
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -81,6 +82,10 @@ struct Filter_side {
   void *src = nullptr;
   long base = -1;
   size_t k = 0;
+  // Nonzero: piece_of gives the same poses for as long as this key, data, tree, src, base
+  // and k stay the same (first_uncleared then keeps side A's boxes from call to call:
+  // shared_memo.h). Zero: no such promise.
+  uint64_t share = 0;
   const Side_piece &(*piece_of)(void *src, long base, size_t k, int depth, long index) = nullptr;
   const enclose::Pose_piece &(*instant_of)(void *src, long base, size_t k, int depth, long index) = nullptr;
   const Side_piece &piece(int depth, long index) const { return piece_of(src, base, k, depth, index); }
@@ -120,6 +125,10 @@ double first_uncleared(const Filter_side &A, const Filter_side &B, double reach,
 // hold a point of the other (nothing of either leaves its root box). A robot check's
 // decide scan skips such pairs (robot.cpp: the same answers, without their instants).
 bool roots_apart(const Filter_side &A, const Filter_side &B, double reach);
+// The box roots_apart uses for a side: its root node's world box over [0, 1]. A caller
+// that keeps it per body (a link against each obstacle) passes it to the overload.
+enclose::Box whole_box(const Filter_side &S);
+bool roots_apart(const enclose::Box &a, const enclose::Box &b, double reach);
 
 // A witness at the instants lower + 2^-k, k = kMax_depth, kMax_depth - 2, ..., while
 // below 1 (lower: a pair's first_uncleared, on the dyadic grid of kMax_depth): after

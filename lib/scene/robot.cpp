@@ -68,6 +68,10 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
 
   if (ro.filter) {
     Piece_poses poses(path, obst);
+    // A key for this check's poses (Filter_side::share): first_uncleared keeps a link's
+    // boxes on a piece for its next pair (shared_memo.h). Per thread, never 0.
+    thread_local uint64_t tl_checks = 0;
+    const uint64_t share = ++tl_checks;
     const double reach = opt.reach;
     const bool decide = !opt.solve.want_time && !opt.all_contacts;
     // Body k of pair p's side: a link body relative to the pair's base (the links' lowest
@@ -95,6 +99,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         const size_t link = r.bodies[k].link;
         s.data = r.bodies[k].body.get();
         s.k = link;
+        s.share = share;
         if (static_cast<long>(link) == base) {
           s.piece_of = [](void *, long, size_t, int, long) -> const Side_piece & { return identity_side; };
           s.instant_of = [](void *, long, size_t, int, long) -> const enclose::Pose_piece & {
@@ -164,11 +169,23 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     // containment test skip them (their answers are known: none). Most pairs of a free
     // segment are such; the scan's instant poses and traversals of them were about a
     // tenth of a free Panda segment (perf, issue 30).
-    std::vector<signed char> far_of(plans.size(), -1);
+    // Each body's root box over [0, 1] in the world frame made once (a link's was remade
+    // for each obstacle); a self pair's, in its common ancestor's frame, per pair.
+    std::vector<signed char> far_of(plans.size(), -1), has_whole(nr + obst.size(), 0);
+    std::vector<enclose::Box> whole(nr + obst.size());
+    auto whole_of = [&](size_t k, const Filter_side &s) {
+      if (s.base != -1) return whole_box(s);
+      if (!has_whole[k]) {
+        whole[k] = whole_box(s);
+        has_whole[k] = 1;
+      }
+      return whole[k];
+    };
     auto far = [&](size_t q) {
       if (far_of[q] < 0) {
         const long base = base_of(plans[q]);
-        far_of[q] = roots_apart(side(plans[q].i, base), side(plans[q].j, base), reach);
+        far_of[q] = roots_apart(whole_of(plans[q].i, side(plans[q].i, base)),
+                                whole_of(plans[q].j, side(plans[q].j, base)), reach);
       }
       return far_of[q] == 1;
     };
