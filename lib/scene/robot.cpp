@@ -275,6 +275,12 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
                       lim.delta_lo, a.tree, b.tree)) {
         p.lower = 0;
         if (!opt.all_contacts && !found.found) w = Witness{true, 0, 0, ea, eb};
+      } else if (far(q) && lim.delta_lo <= reach) {
+        // Root boxes over [0, 1] apart (the box first_uncleared's first piece tests):
+        // what its call returns, without the call (a fifth of a free Panda segment's
+        // calls' cost was their setup). No witness: one would be within delta_lo <= reach
+        // of a pair certainly farther than reach.
+        p.lower = lim.until > 0 ? kNever : 0;
       } else {
         p.lower = first_uncleared(a, b, reach, lim, !opt.all_contacts && !found.found ? &w : nullptr);
       }
