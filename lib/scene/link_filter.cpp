@@ -241,7 +241,8 @@ bool triangles_touch(const narrow::Body_data &A, uint32_t ea, const enclose::Pos
 
 bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
                  const enclose::Pose_piece &pb, const Node_pairs &start, size_t &budget, uint32_t &ea, uint32_t &eb,
-                 double reach, double delta_lo, const bvh::Hierarchy *pha, const bvh::Hierarchy *phb) {
+                 double reach, double delta_lo, const bvh::Hierarchy *pha, const bvh::Hierarchy *phb,
+                 Node_memo *memo_a) {
   if (!A.mesh || !B.mesh || !pa.finite || !pb.finite) return false;
   const bvh::Hierarchy &ha = pha ? *pha : bvh::hierarchy(A), &hb = phb ? *phb : bvh::hierarchy(B);
   thread_local Front tl_front;  // the node pairs left, reused (no allocation per call)
@@ -250,7 +251,8 @@ bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, cons
   for (; !front.empty() && budget > 0; --budget) {
     const auto [ka, kb] = front.back();
     front.pop_back();
-    if (!enclose::boxes_within(enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h),
+    auto box_a = [&] { return enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h); };
+    if (!enclose::boxes_within(memo_a ? memo_a->node(ka, box_a) : box_a(),
                                enclose::frame_box(pb, hb.nodes[kb].c, hb.nodes[kb].h), reach))
       continue;
     const bool la = ha.nodes[ka].leaf(), lb = hb.nodes[kb].leaf();

@@ -54,6 +54,8 @@ struct Hierarchy;
 
 namespace pccd::scene {
 
+class Node_memo;  // node_memo.h
+
 constexpr int kMax_depth = 14;         // pieces of 1/16384 at the finest
 constexpr size_t kMax_front = 4096;    // node pairs per piece (then: not separated)
 constexpr size_t kMax_tests = 1 << 16;  // front pairs per body pair (then: the piece's start)
@@ -148,9 +150,11 @@ bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Wit
 // is 0 (then: none found). reach > 0: A's boxes grow by reach and a leaf pair certainly
 // within delta_lo (delta_witness.h) is found too.
 // ha, hb: bvh::hierarchy(A), (B) when the caller has them (else looked up: a lock).
+// memo_a: A's node boxes at pa (node_memo.h), kept by the caller while pa and ha stay the
+// same (a link at one instant against each obstacle); null: made per node pair.
 bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
                  const enclose::Pose_piece &pb, const Node_pairs &front, size_t &budget, uint32_t &ea, uint32_t &eb,
                  double reach = 0, double delta_lo = 0, const bvh::Hierarchy *ha = nullptr,
-                 const bvh::Hierarchy *hb = nullptr);
+                 const bvh::Hierarchy *hb = nullptr, Node_memo *memo_a = nullptr);
 
 }  // namespace pccd::scene

@@ -7,6 +7,7 @@
 #include "motion/chain_path.h"
 #include "poly/poly.h"
 #include "scene/link_filter.h"
+#include "scene/node_memo.h"
 #include "scene/piece_poses.h"
 #include "scene/robot_exact.h"
 #include "scene/solid_start.h"
@@ -233,6 +234,12 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         }
         return root_box[k];
       };
+      // A body's node boxes at the instant, kept while its pairs follow one another (the
+      // same pose and hierarchy: one link's body against each obstacle). Per thread: its
+      // slots are not reallocated per check; start() forgets every box.
+      thread_local Node_memo memo;
+      const enclose::Pose_piece *memo_pose = nullptr;
+      const bvh::Hierarchy *memo_tree = nullptr;
       for (const auto &m : kScan) {
         if (lim.frozen && &m != kScan) break;  // the quarters hold the poses of 1/2
         for (size_t q = 0; q < plans.size(); ++q) {
@@ -245,7 +252,13 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
           if (!enclose::boxes_within(root_at(p.i, a, pa), root_at(p.j, b, pb), reach)) continue;
           size_t budget = kScan_tests;
           Witness w;
-          if (touching_at(*a.data, pa, *b.data, pb, roots, budget, w.a, w.b, reach, lim.delta_lo, a.tree, b.tree)) {
+          if (memo_pose != &pa || memo_tree != a.tree) {
+            memo_pose = &pa;
+            memo_tree = a.tree;
+            memo.start(a.tree->nodes.size(), a.tree->elems.size());
+          }
+          if (touching_at(*a.data, pa, *b.data, pb, roots, budget, w.a, w.b, reach, lim.delta_lo, a.tree, b.tree,
+                          &memo)) {
             w.found = true;
             w.depth = static_cast<int>(m[0]);
             w.index = m[1];
