@@ -249,7 +249,8 @@ bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, cons
   Front &front = tl_front;
   front.assign(start.begin(), start.end());
   for (; !front.empty() && budget > 0; --budget) {
-    const auto [ka, kb] = front.back();
+    // Not a structured binding: box_a captures ka (C++17 forbids capturing bindings).
+    const uint32_t ka = front.back().first, kb = front.back().second;
     front.pop_back();
     auto box_a = [&] { return enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h); };
     if (!enclose::boxes_within(memo_a ? memo_a->node(ka, box_a) : box_a(),
