@@ -7,6 +7,7 @@
 
 #include "scene/link_filter.h"
 #include "scene/node_memo.h"
+#include "scene/shared_memo.h"
 
 namespace pccd::scene {
 
@@ -24,6 +25,7 @@ struct Scratch {
   std::vector<uint32_t> unused;
   Node_pairs next, work;
   Node_memo memo_a, memo_b;
+  Shared_memos shared_a;  // side A's memos across calls (Filter_side::share)
   void start() {
     stack.clear();
     unused.clear();

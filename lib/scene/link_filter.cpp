@@ -241,16 +241,19 @@ bool triangles_touch(const narrow::Body_data &A, uint32_t ea, const enclose::Pos
 
 bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
                  const enclose::Pose_piece &pb, const Node_pairs &start, size_t &budget, uint32_t &ea, uint32_t &eb,
-                 double reach, double delta_lo, const bvh::Hierarchy *pha, const bvh::Hierarchy *phb) {
+                 double reach, double delta_lo, const bvh::Hierarchy *pha, const bvh::Hierarchy *phb,
+                 Node_memo *memo_a) {
   if (!A.mesh || !B.mesh || !pa.finite || !pb.finite) return false;
   const bvh::Hierarchy &ha = pha ? *pha : bvh::hierarchy(A), &hb = phb ? *phb : bvh::hierarchy(B);
   thread_local Front tl_front;  // the node pairs left, reused (no allocation per call)
   Front &front = tl_front;
   front.assign(start.begin(), start.end());
   for (; !front.empty() && budget > 0; --budget) {
-    const auto [ka, kb] = front.back();
+    // Not a structured binding: box_a captures ka (C++17 forbids capturing bindings).
+    const uint32_t ka = front.back().first, kb = front.back().second;
     front.pop_back();
-    if (!enclose::boxes_within(enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h),
+    auto box_a = [&] { return enclose::frame_box(pa, ha.nodes[ka].c, ha.nodes[ka].h); };
+    if (!enclose::boxes_within(memo_a ? memo_a->node(ka, box_a) : box_a(),
                                enclose::frame_box(pb, hb.nodes[kb].c, hb.nodes[kb].h), reach))
       continue;
     const bool la = ha.nodes[ka].leaf(), lb = hb.nodes[kb].leaf();
@@ -301,8 +304,10 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
   // the pieces' fronts in buffers reused from call to call (no allocation per piece).
   thread_local Scratch tl_scratch;
   Scratch &S = tl_scratch;
-  Node_memo &memo_a = S.memo_a, &memo_b = S.memo_b;
-  memo_a.start(ha.nodes.size(), ha.elems.size());
+  // Side A's boxes are kept across calls when it carries a share key (shared_memo.h).
+  const bool share_a = SA.share != 0;
+  Node_memo &memo_b = S.memo_b;
+  if (!share_a) S.memo_a.start(ha.nodes.size(), ha.elems.size());
   memo_b.start(hb.nodes.size(), hb.elems.size());
   S.start();
   S.stack.push_back({0, 0, S.take(kRoots)});
@@ -324,7 +329,8 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
     tests += front_size;
     if (tests > lim.max_tests) return start;  // this piece's start
     next.clear();
-    memo_a.next_piece();
+    Node_memo &memo_a = share_a ? S.shared_a.at(SA, ha, it.d, it.i) : S.memo_a;
+    if (!share_a) memo_a.next_piece();
     memo_b.next_piece();
     work.clear();
     work.swap(S.fronts[it.f]);
@@ -390,12 +396,18 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
   return kNever;
 }
 
+enclose::Box whole_box(const Filter_side &S) {
+  const narrow::Body_data &d = *S.data;
+  const bvh::Hierarchy &h = S.tree ? *S.tree : bvh::hierarchy(d);
+  return box_of(S.piece(0, 0), h.nodes[0].c, h.nodes[0].h, norm_bound(d));
+}
+
+bool roots_apart(const enclose::Box &a, const enclose::Box &b, double reach) {
+  return !enclose::boxes_within(a, b, reach);
+}
+
 bool roots_apart(const Filter_side &SA, const Filter_side &SB, double reach) {
-  const narrow::Body_data &A = *SA.data, &B = *SB.data;
-  const bvh::Hierarchy &ha = SA.tree ? *SA.tree : bvh::hierarchy(A), &hb = SB.tree ? *SB.tree : bvh::hierarchy(B);
-  const Side_piece &pa = SA.piece(0, 0), &pb = SB.piece(0, 0);
-  return !enclose::boxes_within(box_of(pa, ha.nodes[0].c, ha.nodes[0].h, norm_bound(A)),
-                                box_of(pb, hb.nodes[0].c, hb.nodes[0].h, norm_bound(B)), reach);
+  return roots_apart(whole_box(SA), whole_box(SB), reach);
 }
 
 bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w, double reach,

@@ -42,6 +42,7 @@
 // delta" throughout; a witness is then a triangle pair certainly within
 // delta at the midpoint (delta_witness.h; Filter_limits::delta_lo, issue 33).
 #pragma once
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -52,6 +53,8 @@ struct Hierarchy;
 }
 
 namespace pccd::scene {
+
+class Node_memo;  // node_memo.h
 
 constexpr int kMax_depth = 14;         // pieces of 1/16384 at the finest
 constexpr size_t kMax_front = 4096;    // node pairs per piece (then: not separated)
@@ -81,6 +84,10 @@ struct Filter_side {
   void *src = nullptr;
   long base = -1;
   size_t k = 0;
+  // Nonzero: piece_of gives the same poses for as long as this key, data, tree, src, base
+  // and k stay the same (first_uncleared then keeps side A's boxes from call to call:
+  // shared_memo.h). Zero: no such promise.
+  uint64_t share = 0;
   const Side_piece &(*piece_of)(void *src, long base, size_t k, int depth, long index) = nullptr;
   const enclose::Pose_piece &(*instant_of)(void *src, long base, size_t k, int depth, long index) = nullptr;
   const Side_piece &piece(int depth, long index) const { return piece_of(src, base, k, depth, index); }
@@ -120,6 +127,10 @@ double first_uncleared(const Filter_side &A, const Filter_side &B, double reach,
 // hold a point of the other (nothing of either leaves its root box). A robot check's
 // decide scan skips such pairs (robot.cpp: the same answers, without their instants).
 bool roots_apart(const Filter_side &A, const Filter_side &B, double reach);
+// The box roots_apart uses for a side: its root node's world box over [0, 1]. A caller
+// that keeps it per body (a link against each obstacle) passes it to the overload.
+enclose::Box whole_box(const Filter_side &S);
+bool roots_apart(const enclose::Box &a, const enclose::Box &b, double reach);
 
 // A witness at the instants lower + 2^-k, k = kMax_depth, kMax_depth - 2, ..., while
 // below 1 (lower: a pair's first_uncleared, on the dyadic grid of kMax_depth): after
@@ -139,9 +150,11 @@ bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Wit
 // is 0 (then: none found). reach > 0: A's boxes grow by reach and a leaf pair certainly
 // within delta_lo (delta_witness.h) is found too.
 // ha, hb: bvh::hierarchy(A), (B) when the caller has them (else looked up: a lock).
+// memo_a: A's node boxes at pa (node_memo.h), kept by the caller while pa and ha stay the
+// same (a link at one instant against each obstacle); null: made per node pair.
 bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
                  const enclose::Pose_piece &pb, const Node_pairs &front, size_t &budget, uint32_t &ea, uint32_t &eb,
                  double reach = 0, double delta_lo = 0, const bvh::Hierarchy *ha = nullptr,
-                 const bvh::Hierarchy *hb = nullptr);
+                 const bvh::Hierarchy *hb = nullptr, Node_memo *memo_a = nullptr);
 
 }  // namespace pccd::scene

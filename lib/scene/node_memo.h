@@ -38,9 +38,9 @@ class Node_memo {
   template <class Make>
   const enclose::Box &node(uint32_t k, Make &&make) {
     Slot &s = node_at_[k];
-    if (s.gen != gen_) {
-      s = {gen_, static_cast<uint32_t>(node_pool_.size())};
+    if (s.gen != gen_) {  // the slot is set after make(): a throw leaves no stale slot
       node_pool_.push_back(make());
+      s = {gen_, static_cast<uint32_t>(node_pool_.size() - 1)};
     }
     return node_pool_[s.at];
   }
@@ -50,9 +50,10 @@ class Node_memo {
   const enclose::Box *elements(uint32_t e, int &count, Make &&make) {
     Slot &s = elem_at_[e];
     if (s.gen != gen_) {
-      s = {gen_, static_cast<uint32_t>(elem_pool_.size())};
-      elem_pool_.emplace_back();
-      elem_pool_.back().n = make(elem_pool_.back().box.data());
+      Elements x;
+      x.n = make(x.box.data());
+      elem_pool_.push_back(x);
+      s = {gen_, static_cast<uint32_t>(elem_pool_.size() - 1)};
     }
     count = elem_pool_[s.at].n;
     return elem_pool_[s.at].box.data();

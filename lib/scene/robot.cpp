@@ -7,6 +7,7 @@
 #include "motion/chain_path.h"
 #include "poly/poly.h"
 #include "scene/link_filter.h"
+#include "scene/node_memo.h"
 #include "scene/piece_poses.h"
 #include "scene/robot_exact.h"
 #include "scene/solid_start.h"
@@ -68,6 +69,10 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
 
   if (ro.filter) {
     Piece_poses poses(path, obst);
+    // A key for this check's poses (Filter_side::share): first_uncleared keeps a link's
+    // boxes on a piece for its next pair (shared_memo.h). Per thread, never 0.
+    thread_local uint64_t tl_checks = 0;
+    const uint64_t share = ++tl_checks;
     const double reach = opt.reach;
     const bool decide = !opt.solve.want_time && !opt.all_contacts;
     // Body k of pair p's side: a link body relative to the pair's base (the links' lowest
@@ -95,6 +100,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         const size_t link = r.bodies[k].link;
         s.data = r.bodies[k].body.get();
         s.k = link;
+        s.share = share;
         if (static_cast<long>(link) == base) {
           s.piece_of = [](void *, long, size_t, int, long) -> const Side_piece & { return identity_side; };
           s.instant_of = [](void *, long, size_t, int, long) -> const enclose::Pose_piece & {
@@ -164,11 +170,23 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     // containment test skip them (their answers are known: none). Most pairs of a free
     // segment are such; the scan's instant poses and traversals of them were about a
     // tenth of a free Panda segment (perf, issue 30).
-    std::vector<signed char> far_of(plans.size(), -1);
+    // Each body's root box over [0, 1] in the world frame made once (a link's was remade
+    // for each obstacle); a self pair's, in its common ancestor's frame, per pair.
+    std::vector<signed char> far_of(plans.size(), -1), has_whole(nr + obst.size(), 0);
+    std::vector<enclose::Box> whole(nr + obst.size());
+    auto whole_of = [&](size_t k, const Filter_side &s) {
+      if (s.base != -1) return whole_box(s);
+      if (!has_whole[k]) {
+        whole[k] = whole_box(s);
+        has_whole[k] = 1;
+      }
+      return whole[k];
+    };
     auto far = [&](size_t q) {
       if (far_of[q] < 0) {
         const long base = base_of(plans[q]);
-        far_of[q] = roots_apart(side(plans[q].i, base), side(plans[q].j, base), reach);
+        far_of[q] = roots_apart(whole_of(plans[q].i, side(plans[q].i, base)),
+                                whole_of(plans[q].j, side(plans[q].j, base)), reach);
       }
       return far_of[q] == 1;
     };
@@ -216,6 +234,12 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         }
         return root_box[k];
       };
+      // A body's node boxes at the instant, kept while its pairs follow one another (the
+      // same pose and hierarchy: one link's body against each obstacle). Per thread: its
+      // slots are not reallocated per check; start() forgets every box.
+      thread_local Node_memo memo;
+      const enclose::Pose_piece *memo_pose = nullptr;
+      const bvh::Hierarchy *memo_tree = nullptr;
       for (const auto &m : kScan) {
         if (lim.frozen && &m != kScan) break;  // the quarters hold the poses of 1/2
         for (size_t q = 0; q < plans.size(); ++q) {
@@ -228,7 +252,13 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
           if (!enclose::boxes_within(root_at(p.i, a, pa), root_at(p.j, b, pb), reach)) continue;
           size_t budget = kScan_tests;
           Witness w;
-          if (touching_at(*a.data, pa, *b.data, pb, roots, budget, w.a, w.b, reach, lim.delta_lo, a.tree, b.tree)) {
+          if (memo_pose != &pa || memo_tree != a.tree) {
+            memo_pose = &pa;
+            memo_tree = a.tree;
+            memo.start(a.tree->nodes.size(), a.tree->elems.size());
+          }
+          if (touching_at(*a.data, pa, *b.data, pb, roots, budget, w.a, w.b, reach, lim.delta_lo, a.tree, b.tree,
+                          &memo)) {
             w.found = true;
             w.depth = static_cast<int>(m[0]);
             w.index = m[1];
@@ -280,6 +310,12 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         first.delta_lo = lim.delta_lo;
         first.frozen = lim.frozen;
         p.lower = first_uncleared(a, b, reach, first);
+      } else if (far(q) && lim.delta_lo <= reach) {
+        // Root boxes over [0, 1] apart (the box first_uncleared's first piece tests):
+        // what its call returns, without the call (a fifth of a free Panda segment's
+        // calls' cost was their setup). No witness: one would be within delta_lo <= reach
+        // of a pair certainly farther than reach.
+        p.lower = lim.until > 0 ? kNever : 0;
       } else {
         p.lower = first_uncleared(a, b, reach, lim, !opt.all_contacts && !found.found ? &w : nullptr);
       }
