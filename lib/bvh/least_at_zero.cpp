@@ -28,8 +28,9 @@ bool after(const Entry &p, const Entry &q) {
   return p.key != q.key ? p.key > q.key : (!p.feature && q.feature);
 }
 
-// Pops handled per work step (util/work_budget.h).
-constexpr size_t kStepPops = 4096;
+// Pops, and exact tests, handled per work step (util/work_budget.h; 256 tests: as the
+// driver's pass, scene/pair_search.cpp, within_at_zero, did per chunk).
+constexpr size_t kStepPops = 4096, kStepTests = 256;
 
 class Search {
  public:
@@ -51,6 +52,7 @@ class Search {
       if (e.feature) {
         const Prim_pair p = of_key(e.key);
         if (!tested.insert(e.key).second) continue;
+        if (tested.size() % kStepTests == 0) util::work_step();
         ++tests;
         if (ctx_.within_at_zero(p, opt)) return p;
         continue;
