@@ -79,6 +79,7 @@ class Builder {
     h.nodes.reserve(2 * leaves);
     h.nodes.emplace_back();
     if (n > 0) build(0, 0, static_cast<uint32_t>(n));
+    if (mesh) least_indices();
   }
 
  private:
@@ -86,6 +87,28 @@ class Builder {
   Hierarchy &h_;
   std::vector<Bounds> box_;
   std::vector<std::array<float, 3>> centre_;
+
+  // Hierarchy::least, children before parents (a node's children come after it).
+  void least_indices() {
+    constexpr uint32_t kNone = UINT32_MAX;
+    h_.least.assign(h_.nodes.size(), {kNone, kNone, kNone});
+    for (size_t k = h_.nodes.size(); k-- > 0;) {
+      const Node &n = h_.nodes[k];
+      auto &m = h_.least[k];
+      if (!n.leaf()) {
+        for (int i = 0; i < 3; ++i) m[i] = std::min(h_.least[n.first][i], h_.least[n.first + 1][i]);
+        continue;
+      }
+      for (uint32_t i = n.first; i < n.first + n.count; ++i) {
+        const uint32_t t = h_.elems[i];
+        for (int s = 0; s < 3; ++s) {
+          m[0] = std::min(m[0], d_.mesh->triangles()[t][s]);
+          if (d_.tri_edges[t][s] >= 0) m[1] = std::min(m[1], static_cast<uint32_t>(d_.tri_edges[t][s]));
+        }
+        m[2] = std::min(m[2], t);
+      }
+    }
+  }
 
   // Node k over elems[b, e); returns its bounds (recursion depth ~ log2 n: balanced).
   Bounds build(uint32_t k, uint32_t b, uint32_t e) {

@@ -41,6 +41,10 @@ struct Node {
 struct Hierarchy : narrow::Body_attachment {
   std::vector<Node> nodes;     // nodes[0] is the root
   std::vector<uint32_t> elems; // element indices, leaf by leaf
+  // Meshes: per node, the least vertex, edge (Body_data::tri_edges, >= 0) and triangle
+  // index of the triangles below it (UINT32_MAX: none): lower bounds of the keys of the
+  // feature pairs below a node pair (least_at_zero.h). Empty for sphere sets.
+  std::vector<std::array<uint32_t, 3>> least;
   explicit Hierarchy(const Body_data &d);
   // max(h) of node k: the size the traversal compares with a piece's motion spread.
   double size(uint32_t k) const {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "bvh/least_at_zero.h"
 #include "enclose/enclose.h"
 #include "narrow/containment.h"
 #include "scene/auto_cost.h"
@@ -48,6 +49,16 @@ class Driver final : public narrow::Candidate_sink {
         out_.solved.push_back(std::move(s));
         if (!opt_.all_contacts) return;
       }
+    }
+    // The pair of least key within delta at t = 0, found in key order
+    // (bvh/least_at_zero.h) where the source would list and sort every candidate of the
+    // piece holding 0 for within_at_zero: the same pair. None: within_at_zero has
+    // nothing to find, and the source runs as without a witness pass.
+    if (!found_any_ && zero_pass() && ctx_.side(0).is_mesh() && ctx_.side(1).is_mesh() &&
+        !narrow::has_infinite_bounds(ctx_)) {
+      zero_ = bvh::least_within_at_zero(ctx_, opt_.solve, reach_, out_.stats.static_tests);
+      zero_searched_ = true;
+      if (zero_) return solve_batch({*zero_}, 1.0);
     }
     source->run(*this, out_.stats, pool_);
     if (zero_) solve_batch({*zero_}, 1.0);  // the witness pass's pair (within_at_zero)
@@ -176,8 +187,13 @@ class Driver final : public narrow::Candidate_sink {
   // solved every candidate near t = 0 (issue 33: 1,261 pairs, first contact 30x the
   // time without min_distance). Returns whether a pair within delta is known.
   std::optional<Prim_pair> zero_;
+  bool zero_searched_ = false;  // zero_ is run()'s search's answer
+  bool zero_pass() const {
+    return opt_.witness && !opt_.all_contacts && !opt_.apart_at_zero && opt_.solve.min_distance();
+  }
   bool within_at_zero(const std::vector<Prim_pair> &fresh) {
-    if (!opt_.witness || opt_.all_contacts || opt_.apart_at_zero || !opt_.solve.min_distance()) return false;
+    if (!zero_pass()) return false;
+    if (zero_searched_) return zero_.has_value();
     if (fresh.empty() || fresh.front().type > narrow::EE) return zero_.has_value();  // sorted: TT last
     constexpr size_t kChunk = 256;
     bool found = false;
