@@ -139,3 +139,23 @@ def test_robot_link_motions_take_the_limits(tmp_path):
     ref = short.check(q0, q1, [ball], self_collision=False, filter=False)
     assert got.collides and got.first_contact.hi <= F(1, 2)
     assert got.first_contact == ref.first_contact
+
+
+def test_robot_checks_that_clear_at_once_still_end(tmp_path):
+    """A robot state or segment whose body pairs all clear at once (their boxes far
+    apart, or a state's one instant) does no traversal: it must still end on a Cancel
+    set before the call, on a spent work budget, and on an expired deadline, as every
+    call does (regression: a state check with a set Cancel answered instead)."""
+    robot = long_robot(tmp_path, 3)
+    far = P.Body(P.Spheres([[100.0, 100.0, 100.0]], [0.5]), name="far")
+    cancel = P.Cancel()
+    cancel.set()
+    for q0, q1 in (([0.1] * 3, [0.1] * 3), ([0.1] * 3, [0.3] * 3)):
+        for first in (False, True):
+            ok = robot.check(q0, q1, [far], first_contact=first)
+            assert not ok.collides
+            for lim in (P.Limits(cancel=cancel), P.Limits(max_work=1)):
+                with pytest.raises(P.LimitError):
+                    robot.check(q0, q1, [far], first_contact=first, limits=lim)
+            with pytest.raises(P.LimitError):
+                robot.check_states([q0, q1], [far], limits=P.Limits(cancel=cancel))

@@ -11,6 +11,7 @@
 #include "scene/piece_poses.h"
 #include "scene/robot_exact.h"
 #include "scene/solid_start.h"
+#include "util/work_budget.h"
 
 namespace pccd::scene {
 
@@ -67,6 +68,10 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     for (size_t k = 0; k < obst.size(); ++k) plans.push_back({i, nr + k, 0.0});
   }
 
+  // A step per check and per body pair (util/work_budget.h): a check whose pairs all
+  // clear at once (a robot state) takes no other step, and a Cancel set before the call
+  // or a spent budget must still end it.
+  util::work_step(1 + plans.size());
   if (ro.filter) {
     Piece_poses poses(path, obst);
     // A key for this check's poses (Filter_side::share): first_uncleared keeps a link's
