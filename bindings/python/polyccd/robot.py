@@ -116,6 +116,17 @@ class Robot:
         v = self.chain.joint_values(self.chain_values(q0, "q0"), self.chain_values(q1, "q1"), t)
         return {name: float(v[self._joint_link[name]]) for name in self.joints}
 
+    def _limit_arrays(self):
+        """(lower, upper) arrays of the joints' limits (-inf / inf where none), or None
+        when a limit is not a number (the per-joint loop of check_joint_limits then
+        decides alone). A fast path only: one array comparison per end of a segment."""
+        try:
+            lims = [self.limits.get(name) or (None, None) for name in self.joints]
+            return (np.array([-np.inf if a is None else a for a, _ in lims], dtype=np.float64),
+                    np.array([np.inf if b is None else b for _, b in lims], dtype=np.float64))
+        except (TypeError, ValueError):
+            return None
+
     def check_joint_limits(self, q0: Sequence[float], q1: Sequence[float],
                            joint_limits: str = "error") -> None:
         """The joint-limit policy of check() (see the module comment): InputError
@@ -125,9 +136,12 @@ class Robot:
             return
         if joint_limits != "error":
             raise InputError(f'joint_limits: {joint_limits!r} is not "error" or "ignore"')
+        bounds = self._limit_arrays()
         for place, q in (("q0", q0), ("q1", q1)):
             self.chain_values(q, place)  # the type and shape checks and their messages
             q = _float64_array(q, place, "", lambda s: True)
+            if bounds is not None and not (np.isfinite(q) & ~((bounds[0] <= q) & (q <= bounds[1]))).any():
+                continue  # nothing outside: the loop below (which words the error) finds nothing
             for j, name in enumerate(self.joints):
                 lim = self.limits.get(name)
                 x = float(q[j])
