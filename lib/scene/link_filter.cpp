@@ -18,7 +18,6 @@ namespace pccd::scene {
 namespace {
 
 using Front = Node_pairs;
-const Front kRoots{{0, 0}};  // the front of the two roots
 
 constexpr double kSqrt3_up = 1.7320508075688774;  // > sqrt(3)
 
@@ -404,10 +403,6 @@ enclose::Box whole_box(const Filter_side &S) {
 
 bool roots_apart(const enclose::Box &a, const enclose::Box &b, double reach) {
   return !enclose::boxes_within(a, b, reach);
-}
-
-bool roots_apart(const Filter_side &SA, const Filter_side &SB, double reach) {
-  return roots_apart(whole_box(SA), whole_box(SB), reach);
 }
 
 bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Witness &w, double reach,

@@ -104,6 +104,7 @@ struct Witness {
 };
 
 using Node_pairs = std::vector<std::pair<uint32_t, uint32_t>>;
+inline const Node_pairs kRoots{{0, 0}};  // the front of the two roots
 
 struct Filter_limits {
   double until = 1;               // pieces starting at or after it are not looked at
@@ -121,15 +122,15 @@ struct Filter_limits {
 double first_uncleared(const Filter_side &A, const Filter_side &B, double reach, const Filter_limits &lim = {},
                        Witness *w = nullptr);
 
-// Whether the two bodies' root boxes over the whole of [0, 1] (piece 0 of A and B) are
-// apart by more than reach: then no element pair comes within reach at any t, so
-// first_uncleared's first piece is separated, no witness exists, and neither body can
-// hold a point of the other (nothing of either leaves its root box). A robot check's
-// decide scan skips such pairs (robot.cpp: the same answers, without their instants).
-bool roots_apart(const Filter_side &A, const Filter_side &B, double reach);
-// The box roots_apart uses for a side: its root node's world box over [0, 1]. A caller
-// that keeps it per body (a link against each obstacle) passes it to the overload.
+// A side's root node's world box over the whole of [0, 1] (piece 0): what
+// first_uncleared's first piece tests. A caller keeps it per body (a link against each
+// obstacle).
 enclose::Box whole_box(const Filter_side &S);
+// Whether two sides' whole_box are apart by more than reach: then no element pair comes
+// within reach at any t, so first_uncleared's first piece is separated, no witness
+// exists, and neither body can hold a point of the other (nothing of either leaves its
+// root box). A robot check's decide scan skips such pairs (robot.cpp: the same answers,
+// without their instants).
 bool roots_apart(const enclose::Box &a, const enclose::Box &b, double reach);
 
 // A witness at the instants lower + 2^-k, k = kMax_depth, kMax_depth - 2, ..., while

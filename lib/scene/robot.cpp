@@ -226,7 +226,6 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       // pairs 1.73 / 0.81 (a near pair needs more to reach its leaves).
       constexpr size_t kScan_tests = 64;
       static const long kScan[3][2] = {{1, 1}, {2, 1}, {2, 3}};  // (depth, index): 1/2, 1/4, 3/4
-      static const Node_pairs roots{{0, 0}};
       // Each body's root box at the instant, made once per pose (touching_at's first test
       // remade it per pair: a link's for each obstacle); a pair whose root boxes are not
       // within reach is skipped, as touching_at would return at once.
@@ -262,7 +261,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
             memo_tree = a.tree;
             memo.start(a.tree->nodes.size(), a.tree->elems.size());
           }
-          if (touching_at(*a.data, pa, *b.data, pb, roots, budget, w.a, w.b, reach, lim.delta_lo, a.tree, b.tree,
+          if (touching_at(*a.data, pa, *b.data, pb, kRoots, budget, w.a, w.b, reach, lim.delta_lo, a.tree, b.tree,
                           &memo)) {
             w.found = true;
             w.depth = static_cast<int>(m[0]);
@@ -295,7 +294,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       const Filter_side a = side(plans[q].i, base), b = side(plans[q].j, base);
       size_t budget = kZero_tests;
       if (a.data->mesh && b.data->mesh &&
-          touching_at(*a.data, a.instant(0, 0), *b.data, b.instant(0, 0), {{0, 0}}, budget, zero_at[q].first,
+          touching_at(*a.data, a.instant(0, 0), *b.data, b.instant(0, 0), kRoots, budget, zero_at[q].first,
                       zero_at[q].second, reach, lim.delta_lo, a.tree, b.tree)) {
         zero_of[q] = 1;
         zero_q = std::min(zero_q, q);
