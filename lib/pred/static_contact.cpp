@@ -136,19 +136,33 @@ bool triangles_meet(const std::array<Vec3<NT>, 3> &a, const std::array<Vec3<NT>,
   return false;
 }
 
+namespace {
+
+// The closed ball (c, r2d2) holds the point v.
+template <class NT>
+bool ball_holds(const Vec3<NT> &c, const NT &r2d2, const Vec3<NT> &v) {
+  const Vec3<NT> d = sub(c, v);
+  return sign(dot3(d, d) - r2d2) <= 0;
+}
+
+// The open segment (a, b) comes within r of c with the projection of c strictly inside
+// it (never for a = b).
+template <class NT>
+bool ball_meets_open_segment(const Vec3<NT> &c, const NT &r2d2, const Vec3<NT> &a, const Vec3<NT> &b) {
+  const Vec3<NT> e = sub(b, a);
+  if (sign(dot3(sub(c, a), e)) <= 0 || sign(dot3(sub(b, c), e)) <= 0) return false;
+  const Vec3<NT> u = cross3(e, sub(c, a));
+  return sign(dot3(u, u) - r2d2 * dot3(e, e)) <= 0;
+}
+
+}  // namespace
+
 template <class NT>
 bool ball_meets_triangle(const Vec3<NT> &c, const NT &r2d2, const std::array<Vec3<NT>, 3> &t) {
-  for (int i = 0; i < 3; ++i) {
-    Vec3<NT> d = sub(c, t[i]);
-    if (sign(dot3(d, d) - r2d2) <= 0) return true;
-  }
-  for (int i = 0; i < 3; ++i) {
-    const Vec3<NT> &e0 = t[i], &e1 = t[(i + 1) % 3];
-    Vec3<NT> e = sub(e1, e0);
-    if (sign(dot3(sub(c, e0), e)) <= 0 || sign(dot3(sub(e1, c), e)) <= 0) continue;
-    Vec3<NT> u = cross3(e, sub(c, e0));
-    if (sign(dot3(u, u) - r2d2 * dot3(e, e)) <= 0) return true;
-  }
+  for (int i = 0; i < 3; ++i)
+    if (ball_holds(c, r2d2, t[i])) return true;
+  for (int i = 0; i < 3; ++i)
+    if (ball_meets_open_segment(c, r2d2, t[i], t[(i + 1) % 3])) return true;
   Vec3<NT> n = cross3(sub(t[1], t[0]), sub(t[2], t[0]));
   if (!strictly_inside_sides(c, t, n)) return false;  // also n = 0
   NT h = dot3(n, sub(c, t[0]));
@@ -157,14 +171,7 @@ bool ball_meets_triangle(const Vec3<NT> &c, const NT &r2d2, const std::array<Vec
 
 template <class NT>
 bool ball_meets_segment(const Vec3<NT> &c, const NT &r2d2, const Vec3<NT> &a, const Vec3<NT> &b) {
-  for (const Vec3<NT> *v : {&a, &b}) {
-    const Vec3<NT> d = sub(c, *v);
-    if (sign(dot3(d, d) - r2d2) <= 0) return true;
-  }
-  const Vec3<NT> e = sub(b, a);
-  if (sign(dot3(sub(c, a), e)) <= 0 || sign(dot3(sub(b, c), e)) <= 0) return false;  // also a = b
-  const Vec3<NT> u = cross3(e, sub(c, a));
-  return sign(dot3(u, u) - r2d2 * dot3(e, e)) <= 0;
+  return ball_holds(c, r2d2, a) || ball_holds(c, r2d2, b) || ball_meets_open_segment(c, r2d2, a, b);
 }
 
 template <class NT>
