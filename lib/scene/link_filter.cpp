@@ -241,12 +241,14 @@ bool triangles_touch(const narrow::Body_data &A, uint32_t ea, const enclose::Pos
 bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
                  const enclose::Pose_piece &pb, const Node_pairs &start, size_t &budget, uint32_t &ea, uint32_t &eb,
                  double reach, double delta_lo, const bvh::Hierarchy *pha, const bvh::Hierarchy *phb,
-                 Node_memo *memo_a) {
+                 Node_memo *memo_a, bool *apart) {
+  if (apart) *apart = false;
   if (!A.mesh || !B.mesh || !pa.finite || !pb.finite) return false;
   const bvh::Hierarchy &ha = pha ? *pha : bvh::hierarchy(A), &hb = phb ? *phb : bvh::hierarchy(B);
   thread_local Front tl_front;  // the node pairs left, reused (no allocation per call)
   Front &front = tl_front;
   front.assign(start.begin(), start.end());
+  bool undecided = false;  // a leaf pair that is not certainly apart was met
   for (; !front.empty() && budget > 0; --budget) {
     // Not a structured binding: box_a captures ka (C++17 forbids capturing bindings).
     const uint32_t ka = front.back().first, kb = front.back().second;
@@ -265,6 +267,7 @@ bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, cons
         eb = b;
         return true;
       }
+      undecided = true;  // neither apart nor certainly touching
     } else if (la || (!lb && hb.size(kb) > ha.size(ka))) {
       const uint32_t c = hb.nodes[kb].first;
       front.push_back({ka, c + 1});
@@ -275,6 +278,7 @@ bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, cons
       front.push_back({c, kb});
     }
   }
+  if (apart) *apart = front.empty() && !undecided;
   return false;
 }
 

@@ -153,9 +153,12 @@ bool witness_after(const Filter_side &A, const Filter_side &B, double lower, Wit
 // ha, hb: bvh::hierarchy(A), (B) when the caller has them (else looked up: a lock).
 // memo_a: A's node boxes at pa (node_memo.h), kept by the caller while pa and ha stay the
 // same (a link at one instant against each obstacle); null: made per node pair.
+// apart (when not null): set when none is found and every node pair under the front
+// was separated, leaves by the filter's certified leaf test (first_uncleared's; with
+// reach > 0: farther than delta): no element pair is within delta at the instant.
 bool touching_at(const narrow::Body_data &A, const enclose::Pose_piece &pa, const narrow::Body_data &B,
                  const enclose::Pose_piece &pb, const Node_pairs &front, size_t &budget, uint32_t &ea, uint32_t &eb,
                  double reach = 0, double delta_lo = 0, const bvh::Hierarchy *ha = nullptr,
-                 const bvh::Hierarchy *hb = nullptr, Node_memo *memo_a = nullptr);
+                 const bvh::Hierarchy *hb = nullptr, Node_memo *memo_a = nullptr, bool *apart = nullptr);
 
 }  // namespace pccd::scene

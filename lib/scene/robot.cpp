@@ -280,24 +280,28 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     // later pairs nothing to clear (until = 0).
     const bool zero_witness = !decide && reach > 0 && lim.delta_lo > 0;
     constexpr size_t kZero_tests = 4096;
-    // Each pair's test at 0 runs before any traversal: the pairs before the first one
-    // certainly within delta at 0 (zero_q) are then cleared only over the finest piece
-    // holding 0 (until = 2^-kMax_depth: the traversal visits the pieces in time order,
-    // so it ends at 0 exactly when the traversal to 1 does, and a bound above 0 drops
-    // the pair either way, the first contact being 0). Over [0, 1] they went down to
-    // the finest pieces near their own contacts, for nothing (issue 33).
-    std::vector<signed char> zero_of(plans.size(), 0);
+    // Each pair's test at 0 runs before any traversal. Once some pair (zero_q) is
+    // certainly within delta at 0, the first contact is 0: a pair before it that the same
+    // test finds farther than delta at 0 (kApart) cannot touch first and is dropped; any
+    // other goes to the exact solve with bound 0, which decides it at 0 (pair_search.h).
+    // Their traversals to the finest piece holding 0 took up to kMax_tests node pairs for
+    // that (35 ms for a UR5 base-forearm pair within delta at 0 by a hair; issue 33).
+    enum : signed char { kUntested = 0, kWithin = 1, kApart = 2 };
+    std::vector<signed char> zero_of(plans.size(), kUntested);
     std::vector<std::pair<uint32_t, uint32_t>> zero_at(plans.size());
     size_t zero_q = plans.size();
     for (size_t q = 0; zero_witness && q < plans.size(); ++q) {
       const long base = base_of(plans[q]);
       const Filter_side a = side(plans[q].i, base), b = side(plans[q].j, base);
       size_t budget = kZero_tests;
+      bool apart = false;
       if (a.data->mesh && b.data->mesh &&
           touching_at(*a.data, a.instant(0, 0), *b.data, b.instant(0, 0), kRoots, budget, zero_at[q].first,
-                      zero_at[q].second, reach, lim.delta_lo, a.tree, b.tree)) {
-        zero_of[q] = 1;
+                      zero_at[q].second, reach, lim.delta_lo, a.tree, b.tree, nullptr, &apart)) {
+        zero_of[q] = kWithin;
         zero_q = std::min(zero_q, q);
+      } else if (apart) {
+        zero_of[q] = kApart;
       }
     }
     for (size_t q = 0; q < plans.size(); ++q) {
@@ -305,15 +309,13 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       Witness w;
       const long base = base_of(p);
       const Filter_side a = side(p.i, base), b = side(p.j, base);
-      if (zero_of[q]) {
+      const bool before_zero = q < zero_q && zero_q < plans.size() && !opt.all_contacts && !found.found;
+      if (zero_of[q] == kWithin) {
         p.lower = 0;
         if (!opt.all_contacts && !found.found) w = Witness{true, 0, 0, zero_at[q].first, zero_at[q].second};
-      } else if (q < zero_q && zero_q < plans.size() && !opt.all_contacts && !found.found) {
-        Filter_limits first;  // up to the finest piece holding 0, no witnesses
-        first.until = std::ldexp(1.0, -kMax_depth);
-        first.delta_lo = lim.delta_lo;
-        first.frozen = lim.frozen;
-        p.lower = first_uncleared(a, b, reach, first);
+      } else if (before_zero) {  // the pairs before zero_q (above)
+        if (zero_of[q] == kApart && (far(q) || !may_contain_at_zero(p))) continue;  // unless a solid holds a point
+        p.lower = 0;
       } else if (far(q) && lim.delta_lo <= reach) {
         // Root boxes over [0, 1] apart (the box first_uncleared's first piece tests):
         // what its call returns, without the call (a fifth of a free Panda segment's
@@ -403,6 +405,14 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
             left.resize(k + 1);
             break;
           }
+      // Only the witness pair left (every pair before it farther than delta at 0, none
+      // holding the other's point): it is the pair the exact solve would report, first
+      // at 0, and its witness is a certain contact then (one triangle pair, as the
+      // contract's start pose within delta reports). The solve built the pair's exact
+      // link motions and searched for the pair of least key within delta at 0: 2-8 ms
+      // of UR5 segments starting within delta (issue 33).
+      if (horizon == 0 && left.size() == 1 && left[0].i == found_i && left[0].j == found_j)
+        return witness_report(found_i, found_j, found, 0.0);
       Window win;
       win.lo = left.empty() ? 0 : std::min(left[0].lower, horizon);
       win.hi = horizon;

@@ -86,7 +86,10 @@ Scene_report solve_exact(const Robot_model &r, const motion::Chain_path &path, c
     return *f.bodies[k];
   };
   Scene_options o = opt;
-  if (win.on) o.solve.until = 1;  // the window ends at the witness: every contact up to it
+  // The window ends at the witness: every contact up to it; a witness at 0 (the window
+  // [0, 2^-14], until 0): contacts at 0 alone (pair_search.cpp: a pair within delta
+  // nowhere at 0 is then done after its search at 0).
+  if (win.on) o.solve.until = win.lo == 0 && sgn(opt.solve.until) == 0 ? 0 : 1;
   // The time tolerance is one of t: a width tol / (hi - lo) in s is tol in t (the report's
   // enclosures, combine.h's included, map back scaled by hi - lo). The same tol in s asked
   // for enclosures 2^14 times tighter than tol on a window of 2^-14, below the spacing
