@@ -39,31 +39,35 @@ std::unique_ptr<const Pair_ctx::Common> Pair_ctx::compute() const {
 }
 
 Point_traj<Rational> Pair_ctx::traj_q(int s, uint32_t k) const {
-  const Common &c = init();
-  const motion::Point3_q &p = side(s).point(k);
-  Point_traj<Rational> x;
-  for (int i = 0; i < 3; ++i) {
-    Poly_q v = c.N[s][i];
-    for (int j = 0; j < 3; ++j)
-      if (sgn(p[j]) != 0) v = v + c.M[s][i][j] * Poly_q::constant(p[j]);
-    x[i] = std::move(v);
-  }
-  return x;
+  return traj_q_.get(point_key(s, k), [&] {
+    const Common &c = init();
+    const motion::Point3_q &p = side(s).point(k);
+    Point_traj<Rational> x;
+    for (int i = 0; i < 3; ++i) {
+      Poly_q v = c.N[s][i];
+      for (int j = 0; j < 3; ++j)
+        if (sgn(p[j]) != 0) v = v + c.M[s][i][j] * Poly_q::constant(p[j]);
+      x[i] = std::move(v);
+    }
+    return x;
+  });
 }
 
 Point_traj<Interval> Pair_ctx::traj_i(int s, uint32_t k) const {
-  const Common &c = init();
-  const motion::Point3_q &p = side(s).point(k);
-  Interval q[3];
-  for (int j = 0; j < 3; ++j) q[j] = arith::enclose(p[j]);
-  Point_traj<Interval> x;
-  for (int i = 0; i < 3; ++i) {
-    Poly<Interval> v = c.Ni[s][i];
-    for (int j = 0; j < 3; ++j)
-      if (!q[j].is_point_zero()) v = v + c.Mi[s][i][j] * Poly<Interval>::constant(q[j]);
-    x[i] = std::move(v);
-  }
-  return x;
+  return traj_i_.get(point_key(s, k), [&] {
+    const Common &c = init();
+    const motion::Point3_q &p = side(s).point(k);
+    Interval q[3];
+    for (int j = 0; j < 3; ++j) q[j] = arith::enclose(p[j]);
+    Point_traj<Interval> x;
+    for (int i = 0; i < 3; ++i) {
+      Poly<Interval> v = c.Ni[s][i];
+      for (int j = 0; j < 3; ++j)
+        if (!q[j].is_point_zero()) v = v + c.Mi[s][i][j] * Poly<Interval>::constant(q[j]);
+      x[i] = std::move(v);
+    }
+    return x;
+  });
 }
 
 template <class NT>
@@ -79,14 +83,18 @@ void Pair_ctx::add_rotated(Point_traj<NT> &x, int s, const motion::Point3_q &v) 
 
 template <class NT>
 Point_traj<NT> Pair_ctx::own(int s, uint32_t k) const {
-  const Motion_data &m = *side(s).mo;
-  Point_traj<NT> x;
-  for (int i = 0; i < 3; ++i) {
-    if constexpr (std::is_same_v<NT, Rational>) x[i] = m.O[i];
-    else x[i] = m.O_i[i];
-  }
-  add_rotated(x, s, side(s).point(k));
-  return x;
+  auto make = [&] {
+    const Motion_data &m = *side(s).mo;
+    Point_traj<NT> x;
+    for (int i = 0; i < 3; ++i) {
+      if constexpr (std::is_same_v<NT, Rational>) x[i] = m.O[i];
+      else x[i] = m.O_i[i];
+    }
+    add_rotated(x, s, side(s).point(k));
+    return x;
+  };
+  if constexpr (std::is_same_v<NT, Rational>) return own_q_.get(point_key(s, k), make);
+  else return own_i_.get(point_key(s, k), make);
 }
 
 std::array<uint32_t, 3> Pair_ctx::triangle(int s, uint32_t t) const {

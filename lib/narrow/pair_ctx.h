@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "narrow/moving_body.h"
+#include "narrow/point_memo.h"
 #include "pred/solve.h"
 #include "pred/static_contact.h"
 
@@ -96,6 +97,9 @@ class Pair_ctx {
   };
   mutable std::once_flag once_;
   mutable std::unique_ptr<const Common> c_;
+  // traj_q, traj_i and own per point, made once (point_memo.h).
+  mutable Point_memo<motion::Point_traj<Rational>> traj_q_, own_q_;
+  mutable Point_memo<motion::Point_traj<Interval>> traj_i_, own_i_;
 
   const Common &init() const;
   std::unique_ptr<const Common> compute() const;
