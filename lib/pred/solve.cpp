@@ -328,11 +328,24 @@ Contact_result solve_at(const Query_data<Interval> &iq,
   const Query_data<Rational> eq = integral(exact_points());
   if (decided && first_time_irrational(eq, out.features)) return out;
   // A decided search needs only the systems of the features touching first (the
-  // rationality test below); the exact search needs them all.
-  Feature_set<Rational> set = decided ? build_systems(eq, &out.features) : build_systems(eq);
+  // rationality test below); the exact search resumes from the interval one's last
+  // state, which looks at that state's active systems alone (poly/earliest.h), so it
+  // needs theirs; from scratch it needs them all. (Building and stripping all seven to
+  // nine delta systems in rationals was most of the exact stage of a robot's near
+  // vertex-vertex approaches, the interval bisection ending near 2^-23; issue 33.)
+  std::vector<Feature> resumed;
+  if (!decided && progress.valid)
+    for (size_t i : progress.active) resumed.push_back(iset.features[iset.systems[i].tag]);
+  Feature_set<Rational> set = decided ? build_systems(eq, &out.features)
+                              : resumed.empty() ? build_systems(eq) : build_systems(eq, &resumed);
   strip_positive(set, eq);
   if (!decided) {
-    const poly::Search_state<Rational> resume = exact_state(progress, iset, set);
+    poly::Search_state<Rational> resume = exact_state(progress, iset, set);
+    if (!resume.valid && !resumed.empty()) {  // a system with no exact twin: from scratch
+      set = build_systems(eq);
+      strip_positive(set, eq);
+      resume = exact_state(progress, iset, set);
+    }
     poly::Search_result<Rational> r = search<Rational>(set, opt, nullptr, &resume);
     fill(out, set, r);
     out.stage = STAGE_EXACT;
