@@ -110,13 +110,21 @@ Search_result<NT> earliest_contact(const std::vector<System<NT>> &sys,
     }
     if (bounded) {
       // No contact in (0, u] with u >= until: none that matters (cheap early answer).
+      // Undecided in intervals (a root at or near u: the feature pairs tied with the
+      // contact that set `until`, a robot's vertex-vertex approach within delta): the
+      // bisection below decides, as with no early answer. That exception sent every
+      // such pair to the exact stage from scratch, each of its systems built and
+      // stripped in rationals (issue 33).
       const NT u = arith::from_rational_up<NT>(opt.until);
       bool any = false;
-      for (size_t i : active)
-        if (sys[i].meets(zero, u)) {
+      for (size_t i : active) {
+        try {
+          any = sys[i].meets(zero, u);
+        } catch (const arith::Uncertain &) {
           any = true;
-          break;
         }
+        if (any) break;
+      }
       if (!any) return res;
     }
   }

@@ -9,7 +9,8 @@
 // exact when r = delta and the enclosure at or before 1/2 otherwise, and the same answer
 // (collides, enclosure, exactness, features) without the interval search (every system
 // built in rationals, the bisection from [0, 1]); and that some queries did resume (the
-// exact stage reported with the interval search on).
+// exact stage reported with the interval search on). The same with `until` just past 1/2,
+// where the early answer of poly/earliest.h cannot tell in intervals.
 // Prints "N passed, N failed"; exit status 0 only when none failed.
 #include <cstdio>
 #include <vector>
@@ -106,6 +107,19 @@ int main() {
               if (r == delta) expect(with.exact && with.lo == half, "r = delta: exactly 1/2", k);
             }
             resumed += with.stage == pred::STAGE_EXACT;
+            if (!want_time) continue;
+            // Contacts up to `until` alone, until just past 1/2 (a feature pair tied with
+            // the one that set it: poly/earliest.h's early answer cannot tell in
+            // intervals): a contact reported is the one of until = 1, with and without
+            // the interval search.
+            Solve_options bounded = opt;
+            bounded.until = half + Rational(1, 1) / Rational(mpz_class(1) << 45);
+            const Contact_result b_with = solve(p, bounded);
+            Solve_options b_scratch = bounded;
+            b_scratch.interval_search = false;
+            expect(same(b_with, solve(p, b_scratch)), "bounded: the same answer without the interval search", k);
+            expect(b_with.collides == with.collides, "bounded: a contact by 1/2 is found", k);
+            expect(!b_with.collides || same(b_with, with), "bounded: the answer of until = 1", k);
           }
         }
     }
