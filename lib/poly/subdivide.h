@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "poly/bernstein.h"
+#include "poly/subdivide_fixed.h"
 
 namespace pccd::poly {
 
@@ -78,12 +79,13 @@ inline int certain_sign_on_integers(const Poly<Rational> &p) {
 void de_casteljau_halves_scaled(std::vector<arith::Integer> b, std::vector<arith::Integer> &left,
                                 std::vector<arith::Integer> &right);
 
-// Halves for the counter: integers up to one positive factor per vector (its tests read
-// signs only: all of one sign, sign variations, the ends, the midpoint); intervals as
-// they are (halving is exact there and keeps the enclosures tight).
+// Halves for the counter: integers (GMP or fixed width, subdivide_fixed.h) up to one
+// positive factor per vector (its tests read signs only: all of one sign, sign
+// variations, the ends, the midpoint); intervals as they are (halving is exact there
+// and keeps the enclosures tight).
 template <class NT>
 void halves_for_signs(std::vector<NT> b, std::vector<NT> &left, std::vector<NT> &right) {
-  if constexpr (std::is_same_v<NT, arith::Integer>)
+  if constexpr (std::is_same_v<NT, arith::Integer> || is_fixed_int<NT>::value)
     de_casteljau_halves_scaled(std::move(b), left, right);
   else
     de_casteljau_halves(b, left, right);
@@ -93,6 +95,14 @@ template <class NT>
 class Subdivision_counter {
  public:
   explicit Subdivision_counter(int budget) : budget_(budget) {}
+
+  // The widest fixed-width integers (64-bit limbs: 0, 4, 8, 16 or 32) the integer
+  // counter may run on before GMP; 0: GMP only. The same decisions either way (the
+  // tests compare the two); kFixed_limbs by default.
+  static constexpr int kFixed_limbs = 32;
+  void set_fixed_limbs(int limbs) { fixed_limbs_ = limbs; }
+  // The halvings left of the budget (the same on every path: the tests compare it).
+  int budget_left() const { return budget_; }
 
   // Adds to `count` the qualifying roots in the open piece; false when undecided.
   // hbs: Bernstein coefficients of gcd(F, G_i) for each condition (empty: unknown).
@@ -106,9 +116,12 @@ class Subdivision_counter {
         std::vector<std::vector<arith::Integer>> gz, hz;
         for (const auto &g : gbs) gz.push_back(integer_multiple(g));
         for (const auto &h : hbs) hz.push_back(integer_multiple(h));
-        const bool ok = on_integers.run(integer_multiple(fb), std::move(gz), std::move(hz), count);
+        on_integers.fixed_limbs_ = fixed_limbs_;
+        const bool ok = on_integers.run_integers(integer_multiple(fb), std::move(gz), std::move(hz), count);
         budget_ = on_integers.budget_;
         return ok;
+      } else if constexpr (std::is_same_v<NT, arith::Integer>) {
+        return run_integers(fb, std::move(gbs), std::move(hbs), count);
       }
       return run(fb, std::move(gbs), std::move(hbs), count);
     } catch (const arith::Uncertain &) {
@@ -149,8 +162,97 @@ class Subdivision_counter {
     return v;
   }
 
+  using Vectors = std::vector<std::vector<NT>>;
+
+  // GMP integers: on the narrowest Fixed_int<N> (N <= fixed_limbs_) whose halving
+  // every vector passes (subdivide_fixed.h), else on GMP. Same values, so the same run.
+  bool run_integers(std::vector<NT> fb, Vectors gbs, Vectors hbs, long &count) {
+    unsigned long bits = halving_bits(fb);
+    for (const auto &v : gbs) bits = std::max(bits, halving_bits(v));
+    for (const auto &v : hbs) bits = std::max(bits, halving_bits(v));
+    if (bits <= 256 && fixed_limbs_ >= 4) return run_fixed<4>(fb, gbs, hbs, count);
+    if (bits <= 512 && fixed_limbs_ >= 8) return run_fixed<8>(fb, gbs, hbs, count);
+    if (bits <= 1024 && fixed_limbs_ >= 16) return run_fixed<16>(fb, gbs, hbs, count);
+    if (bits <= 2048 && fixed_limbs_ >= 32) return run_fixed<32>(fb, gbs, hbs, count);
+    return run(std::move(fb), std::move(gbs), std::move(hbs), count);
+  }
+
+  template <int N, class From, class To>
+  static std::vector<std::vector<To>> convert_all(const std::vector<std::vector<From>> &vs) {
+    std::vector<std::vector<To>> out;
+    out.reserve(vs.size());
+    for (const auto &v : vs) {
+      if constexpr (std::is_same_v<To, arith::Integer>) out.push_back(from_fixed<N>(v));
+      else out.push_back(to_fixed<N>(v));
+    }
+    return out;
+  }
+
+  // Runs the counter on Fixed_int<N> (the budget goes there and back).
+  template <int N>
+  bool run_fixed(const std::vector<NT> &fb, const Vectors &gbs, const Vectors &hbs, long &count) {
+    using F = arith::Fixed_int<N>;
+    Subdivision_counter<F> on_fixed(budget_);
+    on_fixed.fixed_limbs_ = fixed_limbs_;
+    const bool ok = on_fixed.run(to_fixed<N>(fb), convert_all<N, NT, F>(gbs),
+                                 convert_all<N, NT, F>(hbs), count);
+    budget_ = on_fixed.budget_;
+    return ok;
+  }
+
+  // Fixed_int<N>: false when some vector's halving could leave Fixed_int<N>.
+  static bool fits(const std::vector<NT> &fb, const Vectors &gbs, const Vectors &hbs) {
+    if constexpr (is_fixed_int<NT>::value) {
+      if (!halving_fits(fb)) return false;
+      for (const auto &v : gbs)
+        if (!halving_fits(v)) return false;
+      for (const auto &v : hbs)
+        if (!halving_fits(v)) return false;
+    }
+    return true;
+  }
+
+  // The rest of a Fixed_int<N> run on Fixed_int<2N>, from the same values.
+  template <int N>
+  bool run_wider(const std::vector<NT> &fb, const Vectors &gbs, const Vectors &hbs, long &count) {
+    using W = arith::Fixed_int<2 * N>;
+    auto widen = [](const std::vector<NT> &v) {
+      std::vector<W> out(v.size());
+      for (size_t i = 0; i < v.size(); ++i) out[i] = arith::widen<2 * N>(v[i]);
+      return out;
+    };
+    std::vector<std::vector<W>> gw, hw;
+    for (const auto &v : gbs) gw.push_back(widen(v));
+    for (const auto &v : hbs) hw.push_back(widen(v));
+    Subdivision_counter<W> on_wider(budget_);
+    on_wider.fixed_limbs_ = fixed_limbs_;
+    const bool ok = on_wider.run(widen(fb), std::move(gw), std::move(hw), count);
+    budget_ = on_wider.budget_;
+    return ok;
+  }
+
+  // The rest of a Fixed_int<N> run on GMP integers, from the same values.
+  template <int N>
+  bool run_on_gmp(const std::vector<NT> &fb, const Vectors &gbs, const Vectors &hbs, long &count) {
+    using Z = arith::Integer;
+    Subdivision_counter<Z> on_gmp(budget_);
+    const bool ok = on_gmp.run(from_fixed<N>(fb), convert_all<N, NT, Z>(gbs),
+                               convert_all<N, NT, Z>(hbs), count);
+    budget_ = on_gmp.budget_;
+    return ok;
+  }
+
   bool run(std::vector<NT> fb, std::vector<std::vector<NT>> gbs,
            std::vector<std::vector<NT>> hbs, long &count) {
+    if constexpr (is_fixed_int<NT>::value) {
+      constexpr int N = NT::kBits / 64;
+      if (!fits(fb, gbs, hbs)) {
+        if constexpr (2 * N <= 32) {
+          if (2 * N <= fixed_limbs_) return run_wider<N>(fb, gbs, hbs, count);
+        }
+        return run_on_gmp<N>(fb, gbs, hbs, count);
+      }
+    }
     if (all_positive(fb) || all_negative(fb)) return true;
     std::vector<std::vector<NT>> left_g, left_h;
     for (size_t i = 0; i < gbs.size(); ++i) {
@@ -203,6 +305,7 @@ class Subdivision_counter {
   template <class>
   friend class Subdivision_counter;
   int budget_;
+  int fixed_limbs_ = kFixed_limbs;
 };
 
 }  // namespace pccd::poly
