@@ -1,6 +1,6 @@
 // Fixed-width signed integers: N 64-bit limbs in two's complement, least significant
 // limb first, on the stack (no allocation). For the exact root counter's Bernstein
-// subdivision (poly/subdivide_fixed.h), whose numbers are sums and shifts of integers of
+// subdivision (poly/subdivide_fixed.h, subdivide_flat.h), whose numbers are sums and shifts of integers of
 // a few hundred bits: the same values as GMP's, without a malloc per number.
 //
 // No operation here checks for overflow: the caller proves a bound first. The contract
@@ -137,7 +137,7 @@ Fixed_int<M> widen(const Fixed_int<N> &x) {
   return y;
 }
 
-// The sign tests of the counter (poly/bernstein.h, poly/subdivide.h), as for Integer.
+// The sign tests of the counter (poly/subdivide_flat.h), as for Integer.
 template <int N>
 int sign(const Fixed_int<N> &x) {
   return x.negative() ? -1 : x.zero() ? 0 : 1;

@@ -4,7 +4,6 @@
 #pragma once
 #include <vector>
 
-#include "arith/fixed_int.h"  // the sign tests below on fixed-width integers too
 #include "poly/poly.h"
 
 namespace pccd::poly {

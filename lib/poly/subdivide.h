@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "poly/bernstein.h"
-#include "poly/subdivide_fixed.h"
+#include "poly/subdivide_flat.h"
 
 namespace pccd::poly {
 
@@ -79,13 +79,12 @@ inline int certain_sign_on_integers(const Poly<Rational> &p) {
 void de_casteljau_halves_scaled(std::vector<arith::Integer> b, std::vector<arith::Integer> &left,
                                 std::vector<arith::Integer> &right);
 
-// Halves for the counter: integers (GMP or fixed width, subdivide_fixed.h) up to one
-// positive factor per vector (its tests read signs only: all of one sign, sign
-// variations, the ends, the midpoint); intervals as they are (halving is exact there
-// and keeps the enclosures tight).
+// Halves for the counter: integers up to one positive factor per vector (its tests read
+// signs only: all of one sign, sign variations, the ends, the midpoint); intervals as
+// they are (halving is exact there and keeps the enclosures tight).
 template <class NT>
 void halves_for_signs(std::vector<NT> b, std::vector<NT> &left, std::vector<NT> &right) {
-  if constexpr (std::is_same_v<NT, arith::Integer> || is_fixed_int<NT>::value)
+  if constexpr (std::is_same_v<NT, arith::Integer>)
     de_casteljau_halves_scaled(std::move(b), left, right);
   else
     de_casteljau_halves(b, left, right);
@@ -165,94 +164,33 @@ class Subdivision_counter {
   using Vectors = std::vector<std::vector<NT>>;
 
   // GMP integers: on the narrowest Fixed_int<N> (N <= fixed_limbs_) whose halving
-  // every vector passes (subdivide_fixed.h), else on GMP. Same values, so the same run.
+  // every vector passes, in the flat layout (subdivide_flat.h), else on GMP. The same
+  // values, so the same run.
   bool run_integers(std::vector<NT> fb, Vectors gbs, Vectors hbs, long &count) {
-    unsigned long bits = halving_bits(fb);
-    for (const auto &v : gbs) bits = std::max(bits, halving_bits(v));
-    for (const auto &v : hbs) bits = std::max(bits, halving_bits(v));
-    if (bits <= 256 && fixed_limbs_ >= 4) return run_fixed<4>(fb, gbs, hbs, count);
-    if (bits <= 512 && fixed_limbs_ >= 8) return run_fixed<8>(fb, gbs, hbs, count);
-    if (bits <= 1024 && fixed_limbs_ >= 16) return run_fixed<16>(fb, gbs, hbs, count);
-    if (bits <= 2048 && fixed_limbs_ >= 32) return run_fixed<32>(fb, gbs, hbs, count);
+    auto gmp = [this](std::vector<NT> f, Vectors g, Vectors h, long &c) {
+      return run(std::move(f), std::move(g), std::move(h), c);
+    };
+    using Gmp = decltype(gmp);
+    if (fixed_limbs_ >= 4 && Flat_counter<4, Gmp>::takes(fb, gbs, hbs)) {
+      unsigned long bits = halving_bits(fb);
+      for (const auto &v : gbs) bits = std::max(bits, halving_bits(v));
+      for (const auto &v : hbs) bits = std::max(bits, halving_bits(v));
+      if (bits <= 256) return run_flat<4>(fb, gbs, hbs, count, gmp);
+      if (bits <= 512 && fixed_limbs_ >= 8) return run_flat<8>(fb, gbs, hbs, count, gmp);
+      if (bits <= 1024 && fixed_limbs_ >= 16) return run_flat<16>(fb, gbs, hbs, count, gmp);
+      if (bits <= 2048 && fixed_limbs_ >= 32) return run_flat<32>(fb, gbs, hbs, count, gmp);
+    }
     return run(std::move(fb), std::move(gbs), std::move(hbs), count);
   }
 
-  template <int N, class From, class To>
-  static std::vector<std::vector<To>> convert_all(const std::vector<std::vector<From>> &vs) {
-    std::vector<std::vector<To>> out;
-    out.reserve(vs.size());
-    for (const auto &v : vs) {
-      if constexpr (std::is_same_v<To, arith::Integer>) out.push_back(from_fixed<N>(v));
-      else out.push_back(to_fixed<N>(v));
-    }
-    return out;
-  }
-
-  // Runs the counter on Fixed_int<N> (the budget goes there and back).
-  template <int N>
-  bool run_fixed(const std::vector<NT> &fb, const Vectors &gbs, const Vectors &hbs, long &count) {
-    using F = arith::Fixed_int<N>;
-    Subdivision_counter<F> on_fixed(budget_);
-    on_fixed.fixed_limbs_ = fixed_limbs_;
-    const bool ok = on_fixed.run(to_fixed<N>(fb), convert_all<N, NT, F>(gbs),
-                                 convert_all<N, NT, F>(hbs), count);
-    budget_ = on_fixed.budget_;
-    return ok;
-  }
-
-  // Fixed_int<N>: false when some vector's halving could leave Fixed_int<N>.
-  static bool fits(const std::vector<NT> &fb, const Vectors &gbs, const Vectors &hbs) {
-    if constexpr (is_fixed_int<NT>::value) {
-      if (!halving_fits(fb)) return false;
-      for (const auto &v : gbs)
-        if (!halving_fits(v)) return false;
-      for (const auto &v : hbs)
-        if (!halving_fits(v)) return false;
-    }
-    return true;
-  }
-
-  // The rest of a Fixed_int<N> run on Fixed_int<2N>, from the same values.
-  template <int N>
-  bool run_wider(const std::vector<NT> &fb, const Vectors &gbs, const Vectors &hbs, long &count) {
-    using W = arith::Fixed_int<2 * N>;
-    auto widen = [](const std::vector<NT> &v) {
-      std::vector<W> out(v.size());
-      for (size_t i = 0; i < v.size(); ++i) out[i] = arith::widen<2 * N>(v[i]);
-      return out;
-    };
-    std::vector<std::vector<W>> gw, hw;
-    for (const auto &v : gbs) gw.push_back(widen(v));
-    for (const auto &v : hbs) hw.push_back(widen(v));
-    Subdivision_counter<W> on_wider(budget_);
-    on_wider.fixed_limbs_ = fixed_limbs_;
-    const bool ok = on_wider.run(widen(fb), std::move(gw), std::move(hw), count);
-    budget_ = on_wider.budget_;
-    return ok;
-  }
-
-  // The rest of a Fixed_int<N> run on GMP integers, from the same values.
-  template <int N>
-  bool run_on_gmp(const std::vector<NT> &fb, const Vectors &gbs, const Vectors &hbs, long &count) {
-    using Z = arith::Integer;
-    Subdivision_counter<Z> on_gmp(budget_);
-    const bool ok = on_gmp.run(from_fixed<N>(fb), convert_all<N, NT, Z>(gbs),
-                               convert_all<N, NT, Z>(hbs), count);
-    budget_ = on_gmp.budget_;
-    return ok;
+  template <int N, class Gmp>
+  bool run_flat(const std::vector<NT> &fb, const Vectors &gbs, const Vectors &hbs, long &count, Gmp &gmp) {
+    Flat_counter<N, Gmp> flat(budget_, fixed_limbs_, gmp);
+    return flat.run(Flat_counter<N, Gmp>::build(fb, gbs, hbs), count);
   }
 
   bool run(std::vector<NT> fb, std::vector<std::vector<NT>> gbs,
            std::vector<std::vector<NT>> hbs, long &count) {
-    if constexpr (is_fixed_int<NT>::value) {
-      constexpr int N = NT::kBits / 64;
-      if (!fits(fb, gbs, hbs)) {
-        if constexpr (2 * N <= 32) {
-          if (2 * N <= fixed_limbs_) return run_wider<N>(fb, gbs, hbs, count);
-        }
-        return run_on_gmp<N>(fb, gbs, hbs, count);
-      }
-    }
     if (all_positive(fb) || all_negative(fb)) return true;
     std::vector<std::vector<NT>> left_g, left_h;
     for (size_t i = 0; i < gbs.size(); ++i) {

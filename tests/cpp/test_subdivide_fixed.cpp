@@ -6,7 +6,8 @@
 // the bounds of each width (inputs that must run on a wider type or on GMP from the
 // start, and inputs that fit at first and outgrow their width during the subdivision).
 // Then the fixed-width integers themselves against GMP: conversions both ways, sums,
-// shifts, the lowest set bit, sig_bits, and the halving entry for entry.
+// shifts, the lowest set bit, sig_bits, and the halving (poly::halve_fixed) entry for
+// entry, at the bound of its guard (halving_fits) and one bit past it.
 // Prints "N passed, N failed".
 #include <cstdio>
 #include <random>
@@ -112,13 +113,23 @@ static void fixed_ops() {
     if (rng() % 4 == 0) w[rng() % n] = -(Integer(1) << (256 - n));  // the most negative
     Vec gl, gr;
     pccd::poly::de_casteljau_halves_scaled(w, gl, gr);
-    std::vector<pccd::arith::Fixed_int<4>> fl, fr;
-    const auto fw = pccd::poly::to_fixed<4>(w);
-    expect(pccd::poly::halving_fits(fw), "row at the bound fits");
-    pccd::poly::de_casteljau_halves_scaled(fw, fl, fr);
-    expect(pccd::poly::from_fixed<4>(fl) == gl && pccd::poly::from_fixed<4>(fr) == gr, "halves equal");
+    pccd::arith::Fixed_int<4> fw[8], fl[8], fr[8];
+    for (size_t i = 0; i < n; ++i) pccd::arith::to_fixed(w[i], fw[i]);
+    expect(pccd::poly::halving_fits(fw, static_cast<int>(n)), "row at the bound fits");
+    pccd::poly::halve_fixed<4, 8>(fw, static_cast<int>(n), fl, fr);
+    bool same = true;
+    for (size_t i = 0; i < n; ++i)
+      same = same && pccd::arith::from_fixed(fl[i]) == gl[i] && pccd::arith::from_fixed(fr[i]) == gr[i];
+    expect(same, "halves equal");
+    pccd::poly::halve_fixed<4, 8>(fw, static_cast<int>(n), fl, fw);  // right over its input
+    same = true;
+    for (size_t i = 0; i < n; ++i) same = same && pccd::arith::from_fixed(fw[i]) == gr[i];
+    expect(same, "right half over its input");
     w[0] = Integer(1) << (256 - n);  // one bit past the bound
-    expect(!pccd::poly::halving_fits(pccd::poly::to_fixed<4>(w)) || n == 1, "row past the bound");
+    if (n > 1) {
+      pccd::arith::to_fixed(w[0], fw[0]);
+      expect(!pccd::poly::halving_fits(fw, static_cast<int>(n)), "row past the bound");
+    }
   }
 }
 
