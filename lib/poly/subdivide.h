@@ -95,7 +95,8 @@ class Subdivision_counter {
  public:
   explicit Subdivision_counter(int budget) : budget_(budget) {}
 
-  // The widest fixed-width integers (64-bit limbs: 0, 4, 8, 16 or 32) the integer
+  // The widest fixed-width integers (64-bit limbs: 0, 4, 6, 8, 12, 16, 24
+  // or 32) the integer
   // counter may run on before GMP; 0: GMP only. The same decisions either way (the
   // tests compare the two); kFixed_limbs by default.
   static constexpr int kFixed_limbs = 32;
@@ -176,8 +177,11 @@ class Subdivision_counter {
       for (const auto &v : gbs) bits = std::max(bits, halving_bits(v));
       for (const auto &v : hbs) bits = std::max(bits, halving_bits(v));
       if (bits <= 256) return run_flat<4>(fb, gbs, hbs, count, gmp);
+      if (bits <= 384 && fixed_limbs_ >= 6) return run_flat<6>(fb, gbs, hbs, count, gmp);
       if (bits <= 512 && fixed_limbs_ >= 8) return run_flat<8>(fb, gbs, hbs, count, gmp);
+      if (bits <= 768 && fixed_limbs_ >= 12) return run_flat<12>(fb, gbs, hbs, count, gmp);
       if (bits <= 1024 && fixed_limbs_ >= 16) return run_flat<16>(fb, gbs, hbs, count, gmp);
+      if (bits <= 1536 && fixed_limbs_ >= 24) return run_flat<24>(fb, gbs, hbs, count, gmp);
       if (bits <= 2048 && fixed_limbs_ >= 32) return run_flat<32>(fb, gbs, hbs, count, gmp);
     }
     return run(std::move(fb), std::move(gbs), std::move(hbs), count);

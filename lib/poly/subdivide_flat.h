@@ -5,8 +5,8 @@
 // polynomial and one GMP number per entry. The same tests in the same order on the same
 // integers (subdivide_fixed.h: the halving gives GMP's values entry for entry), so the
 // same decisions, counts and budget as the GMP run; a piece whose halving could leave
-// Fixed_int<N> (halving_fits) goes on as Fixed_int<2N> (N < 32, within the caller's
-// cap) or on GMP integers through the caller's `gmp` (bool(f, gs, hs, count)).
+// Fixed_int<N> (halving_fits) goes on at the next width (next_fixed_width, within the
+// caller's cap) or on GMP integers through the caller's `gmp` (bool(f, gs, hs, count)).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -14,6 +14,12 @@
 #include "poly/subdivide_fixed.h"
 
 namespace pccd::poly {
+
+// The widths in 64-bit limbs, each about 1.5x the last (fewer unused limbs than
+// doubling): 4, 6, 8, 12, 16, 24, 32; 0 past the last.
+constexpr int next_fixed_width(int n) {
+  return n < 4 ? 4 : n < 32 ? (n % 3 == 0 ? n / 3 * 4 : n / 2 * 3) : 0;
+}
 
 template <int N, class Gmp>
 class Flat_counter {
@@ -149,16 +155,17 @@ class Flat_counter {
   static __attribute__((noinline)) void halve(const F *b, int n, F *left, F *right) {
     halve_fixed<N, kMaxSize>(b, n, left, right);  // its row on this frame only
   }
-  // The piece on Fixed_int<2N>, or on GMP integers, from the same values.
+  // The piece on the next width, or on GMP integers, from the same values.
   bool escape(Piece &p, long &count) {
-    if constexpr (2 * N <= 32) {
-      if (2 * N <= cap_) {
-        typename Flat_counter<2 * N, Gmp>::Piece w;
+    constexpr int M = next_fixed_width(N);
+    if constexpr (M != 0) {
+      if (M <= cap_) {
+        typename Flat_counter<M, Gmp>::Piece w;
         w.m = p.m;
         for (int s = 0; s <= 2 * p.m + 1; ++s) w.start[s] = p.start[s];
         w.d.resize(p.d.size());
-        for (size_t i = 0; i < p.d.size(); ++i) w.d[i] = arith::widen<2 * N>(p.d[i]);
-        return Flat_counter<2 * N, Gmp>(budget_, cap_, gmp_).run(std::move(w), count);
+        for (size_t i = 0; i < p.d.size(); ++i) w.d[i] = arith::widen<M>(p.d[i]);
+        return Flat_counter<M, Gmp>(budget_, cap_, gmp_).run(std::move(w), count);
       }
     }
     auto vec = [&](int s) {

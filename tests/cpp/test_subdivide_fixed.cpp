@@ -1,6 +1,6 @@
 // The exact root counter on fixed-width integers (arith::Fixed_int, poly/subdivide_fixed.h)
 // against the same counter on GMP integers only (set_fixed_limbs(0)): the same decision,
-// the same count and the same budget left, for every width cap (4, 8, 16, 32 limbs), on
+// the same count and the same budget left, for every width cap (4 to 32 limbs), on
 // random integer Bernstein vectors of mixed signs and on polynomials with known close
 // roots (deep subdivisions), scaled so that their entries sit just below, at and above
 // the bounds of each width (inputs that must run on a wider type or on GMP from the
@@ -51,7 +51,7 @@ static Outcome run(int limbs, const Vec &f, const std::vector<Vec> &g, const std
 
 static void compare(const Vec &f, const std::vector<Vec> &g, const std::vector<Vec> &h, const std::string &name) {
   const Outcome ref = run(0, f, g, h);
-  for (int limbs : {4, 8, 16, 32}) {
+  for (int limbs : {4, 6, 8, 12, 16, 24, 32}) {
     const Outcome o = run(limbs, f, g, h);
     expect(o.ok == ref.ok && o.count == ref.count && o.budget == ref.budget,
            name + " limbs " + std::to_string(limbs) + ": " + std::to_string(o.ok) + "/" +
@@ -160,7 +160,7 @@ int main() {
   const Vec base = with_roots(roots, 0, false);
   unsigned base_bits = 0;
   for (const Integer &x : base) base_bits = std::max<unsigned>(base_bits, mpz_sizeinbase(x.get_mpz_t(), 2));
-  for (int N : {4, 8, 16, 32}) {
+  for (int N : {4, 6, 8, 12, 16, 24, 32}) {
     for (int d = -3; d <= 1; ++d) {
       const int target = 64 * N + d - static_cast<int>(base.size());  // sig bits wanted
       const unsigned shift = target > static_cast<int>(base_bits) ? target - base_bits : 0;
