@@ -15,9 +15,10 @@
 //   - otherwise halve the piece (de Casteljau at 1/2) and decide the midpoint itself.
 // Every step is exact (Rational) or certified (Interval). The exact path runs on
 // integers (integer_multiple, de_casteljau_halves_scaled: each vector up to a positive
-// factor, which no test above can see, since each reads the signs of one vector only). A piece that stays
-// undecided after the budget (a multiple root, a condition vanishing at a root, a
-// cluster of roots) makes the whole attempt fail, and the caller counts with the
+// factor, which no test above can see, since each reads the signs of one vector only),
+// on fixed-width integers while a proven bound allows (subdivide_flat.h). A piece
+// that stays undecided after the budget (a multiple root, a condition vanishing at a
+// root, a cluster of roots) makes the whole attempt fail, and the caller counts with the
 // Hermite method instead, which needs no separation at all.
 #pragma once
 #include <type_traits>
@@ -95,10 +96,9 @@ class Subdivision_counter {
  public:
   explicit Subdivision_counter(int budget) : budget_(budget) {}
 
-  // The widest fixed-width integers (64-bit limbs: 0, 4, 6, 8, 12, 16, 24
-  // or 32) the integer
-  // counter may run on before GMP; 0: GMP only. The same decisions either way (the
-  // tests compare the two); kFixed_limbs by default.
+  // The widest fixed-width integers (64-bit limbs: 0, 4, 6, 8, 12, 16, 24 or 32) the
+  // integer counter may run on before GMP (subdivide_flat.h); 0: GMP only. The same
+  // decisions either way (tests/cpp/test_subdivide_fixed.cpp compares them).
   static constexpr int kFixed_limbs = 32;
   void set_fixed_limbs(int limbs) { fixed_limbs_ = limbs; }
   // The halvings left of the budget (the same on every path: the tests compare it).
