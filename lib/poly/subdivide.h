@@ -15,9 +15,10 @@
 //   - otherwise halve the piece (de Casteljau at 1/2) and decide the midpoint itself.
 // Every step is exact (Rational) or certified (Interval). The exact path runs on
 // integers (integer_multiple, de_casteljau_halves_scaled: each vector up to a positive
-// factor, which no test above can see, since each reads the signs of one vector only). A piece that stays
-// undecided after the budget (a multiple root, a condition vanishing at a root, a
-// cluster of roots) makes the whole attempt fail, and the caller counts with the
+// factor, which no test above can see, since each reads the signs of one vector only),
+// on fixed-width integers while a proven bound allows (subdivide_flat.h). A piece
+// that stays undecided after the budget (a multiple root, a condition vanishing at a
+// root, a cluster of roots) makes the whole attempt fail, and the caller counts with the
 // Hermite method instead, which needs no separation at all.
 #pragma once
 #include <type_traits>
@@ -25,6 +26,7 @@
 #include <vector>
 
 #include "poly/bernstein.h"
+#include "poly/subdivide_flat.h"
 
 namespace pccd::poly {
 
@@ -94,6 +96,14 @@ class Subdivision_counter {
  public:
   explicit Subdivision_counter(int budget) : budget_(budget) {}
 
+  // The widest fixed-width integers (64-bit limbs: 0, 4, 6, 8, 12, 16, 24 or 32) the
+  // integer counter may run on before GMP (subdivide_flat.h); 0: GMP only. The same
+  // decisions either way (tests/cpp/test_subdivide_fixed.cpp compares them).
+  static constexpr int kFixed_limbs = 32;
+  void set_fixed_limbs(int limbs) { fixed_limbs_ = limbs; }
+  // The halvings left of the budget (the same on every path: the tests compare it).
+  int budget_left() const { return budget_; }
+
   // Adds to `count` the qualifying roots in the open piece; false when undecided.
   // hbs: Bernstein coefficients of gcd(F, G_i) for each condition (empty: unknown).
   // Rational input runs on integer multiples of each vector (integer_multiple).
@@ -106,9 +116,12 @@ class Subdivision_counter {
         std::vector<std::vector<arith::Integer>> gz, hz;
         for (const auto &g : gbs) gz.push_back(integer_multiple(g));
         for (const auto &h : hbs) hz.push_back(integer_multiple(h));
-        const bool ok = on_integers.run(integer_multiple(fb), std::move(gz), std::move(hz), count);
+        on_integers.fixed_limbs_ = fixed_limbs_;
+        const bool ok = on_integers.run_integers(integer_multiple(fb), std::move(gz), std::move(hz), count);
         budget_ = on_integers.budget_;
         return ok;
+      } else if constexpr (std::is_same_v<NT, arith::Integer>) {
+        return run_integers(fb, std::move(gbs), std::move(hbs), count);
       }
       return run(fb, std::move(gbs), std::move(hbs), count);
     } catch (const arith::Uncertain &) {
@@ -147,6 +160,37 @@ class Subdivision_counter {
       last = s;
     }
     return v;
+  }
+
+  using Vectors = std::vector<std::vector<NT>>;
+
+  // GMP integers: on the narrowest Fixed_int<N> (N <= fixed_limbs_) whose halving
+  // every vector passes, in the flat layout (subdivide_flat.h), else on GMP. The same
+  // values, so the same run.
+  bool run_integers(std::vector<NT> fb, Vectors gbs, Vectors hbs, long &count) {
+    auto gmp = [this](std::vector<NT> f, Vectors g, Vectors h, long &c) {
+      return run(std::move(f), std::move(g), std::move(h), c);
+    };
+    using Gmp = decltype(gmp);
+    if (fixed_limbs_ >= 4 && Flat_counter<4, Gmp>::takes(fb, gbs, hbs)) {
+      unsigned long bits = halving_bits(fb);
+      for (const auto &v : gbs) bits = std::max(bits, halving_bits(v));
+      for (const auto &v : hbs) bits = std::max(bits, halving_bits(v));
+      if (bits <= 256) return run_flat<4>(fb, gbs, hbs, count, gmp);
+      if (bits <= 384 && fixed_limbs_ >= 6) return run_flat<6>(fb, gbs, hbs, count, gmp);
+      if (bits <= 512 && fixed_limbs_ >= 8) return run_flat<8>(fb, gbs, hbs, count, gmp);
+      if (bits <= 768 && fixed_limbs_ >= 12) return run_flat<12>(fb, gbs, hbs, count, gmp);
+      if (bits <= 1024 && fixed_limbs_ >= 16) return run_flat<16>(fb, gbs, hbs, count, gmp);
+      if (bits <= 1536 && fixed_limbs_ >= 24) return run_flat<24>(fb, gbs, hbs, count, gmp);
+      if (bits <= 2048 && fixed_limbs_ >= 32) return run_flat<32>(fb, gbs, hbs, count, gmp);
+    }
+    return run(std::move(fb), std::move(gbs), std::move(hbs), count);
+  }
+
+  template <int N, class Gmp>
+  bool run_flat(const std::vector<NT> &fb, const Vectors &gbs, const Vectors &hbs, long &count, Gmp &gmp) {
+    Flat_counter<N, Gmp> flat(budget_, fixed_limbs_, gmp);
+    return flat.run(Flat_counter<N, Gmp>::build(fb, gbs, hbs), count);
   }
 
   bool run(std::vector<NT> fb, std::vector<std::vector<NT>> gbs,
@@ -203,6 +247,7 @@ class Subdivision_counter {
   template <class>
   friend class Subdivision_counter;
   int budget_;
+  int fixed_limbs_ = kFixed_limbs;
 };
 
 }  // namespace pccd::poly
