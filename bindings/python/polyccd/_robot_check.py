@@ -121,6 +121,9 @@ def _robot_options(self_collision, filter):
     return _ROPT[key]
 
 
+_COMMON = {b"0": Fraction(0), b"1": Fraction(1)}  # most answers (Fractions are immutable)
+
+
 def free_until(rep):
     """The report's certified contact-free prefix (pccd_report_free_until), a Fraction."""
     needed = ffi.new("size_t *")
@@ -130,16 +133,20 @@ def free_until(rep):
         buf = ffi.new("char[]", needed[0])
         rc = lib.pccd_report_free_until(rep, buf, len(buf), needed, ffi.NULL)
     check(rc)
-    return Fraction(ffi.string(buf).decode("ascii"))
+    text = ffi.string(buf)
+    common = _COMMON.get(text)
+    return common if common is not None else Fraction(text.decode("ascii"))
 
 
 def check_robot(robot, q0, q1, obstacles, *, self_collision, allowed, time_tolerance,
                 all_contacts, threads, broad_phase, min_distance, limits, first_contact,
-                filter):
-    """(SceneResult, free_until) of one segment (Robot.check)."""
+                filter, ends=None):
+    """(SceneResult, free_until) of one segment (Robot.check). ends: the chain values of
+    q0 and q1 when the caller has them (_joint_values.checked_ends)."""
+    if ends is None:
+        ends = (robot.chain_values(q0, "q0"), robot.chain_values(q1, "q1"))
     obstacles = checked_obstacles(obstacles)
-    a0 = np.ascontiguousarray(robot.chain_values(q0, "q0"))
-    a1 = np.ascontiguousarray(robot.chain_values(q1, "q1"))
+    a0, a1 = ends
     made = _handle(robot)
     _set_allowed(robot, made, allowed)
     cfg, _keep, opt = _options(time_tolerance, all_contacts, threads, broad_phase, True, limits,
@@ -172,6 +179,7 @@ def obstacle_arrays(obstacles):
 
 
 def report_bodies(made, obstacles):
-    """The Bodies a robot report's indices refer to: the robot's, then the obstacles."""
-    return made[1] + [Body(o.shape, o.motion, name=o.name if o.name is not None else f"obstacle{i}")
+    """The Bodies a robot report's indices refer to: the robot's, then the obstacles (a
+    named obstacle itself: Bodies are immutable; an unnamed one renamed "obstacle<i>")."""
+    return made[1] + [o if o.name is not None else Body(o.shape, o.motion, name=f"obstacle{i}")
                       for i, o in enumerate(obstacles)]

@@ -43,7 +43,7 @@ from typing import (TYPE_CHECKING, Any, Dict, FrozenSet, Iterable, List, Optiona
 
 import numpy as np
 
-from ._arrays import _float64_array
+from . import _joint_values as _jv
 from . import _limits
 from ._chain import Chain
 from ._errors import InputError
@@ -87,18 +87,7 @@ class Robot:
     def chain_values(self, q: Sequence[float], place: str = "q") -> np.ndarray:
         """The chain's joint values (by chain link) of the actuated joint values q (real
         numbers, each exactly a double; InputError naming place otherwise)."""
-        if not isinstance(place, str):
-            raise InputError(f"place: expected a string, got {place!r}"[:120])
-        q = _float64_array(q, place, f"({len(self.joints)},)", lambda s: True)
-        if q.shape != (len(self.joints),):
-            raise InputError(f"{place}: expected {len(self.joints)} joint values "
-                             f"({', '.join(self.joints)}), got shape {q.shape}")
-        out = np.zeros(len(self.chain), dtype=np.float64)
-        for j, name in enumerate(self.joints):
-            out[self._joint_link[name]] = q[j]
-        for k, (leader, mult, off) in self._mimic.items():
-            out[k] = mult * q[self.joints.index(leader)] + off
-        return out
+        return _jv.expand(self, _jv.q_array(self, q, place))
 
     def motions(self, q0: Sequence[float], q1: Sequence[float]) -> List[Motion]:
         """The exact world Motion of every chain link over the segment q0 -> q1. A bad
@@ -116,17 +105,6 @@ class Robot:
         v = self.chain.joint_values(self.chain_values(q0, "q0"), self.chain_values(q1, "q1"), t)
         return {name: float(v[self._joint_link[name]]) for name in self.joints}
 
-    def _limit_arrays(self):
-        """(lower, upper) arrays of the joints' limits (-inf / inf where none), or None
-        when a limit is not a number (the per-joint loop of check_joint_limits then
-        decides alone). A fast path only: one array comparison per end of a segment."""
-        try:
-            lims = [self.limits.get(name) or (None, None) for name in self.joints]
-            return (np.array([-np.inf if a is None else a for a, _ in lims], dtype=np.float64),
-                    np.array([np.inf if b is None else b for _, b in lims], dtype=np.float64))
-        except (TypeError, ValueError):
-            return None
-
     def check_joint_limits(self, q0: Sequence[float], q1: Sequence[float],
                            joint_limits: str = "error") -> None:
         """The joint-limit policy of check() (see the module comment): InputError
@@ -136,22 +114,9 @@ class Robot:
             return
         if joint_limits != "error":
             raise InputError(f'joint_limits: {joint_limits!r} is not "error" or "ignore"')
-        bounds = self._limit_arrays()
+        bounds = _jv.limit_arrays(self)
         for place, q in (("q0", q0), ("q1", q1)):
-            self.chain_values(q, place)  # the type and shape checks and their messages
-            q = _float64_array(q, place, "", lambda s: True)
-            if bounds is not None and not (np.isfinite(q) & ~((bounds[0] <= q) & (q <= bounds[1]))).any():
-                continue  # nothing outside: the loop below (which words the error) finds nothing
-            for j, name in enumerate(self.joints):
-                lim = self.limits.get(name)
-                x = float(q[j])
-                if lim is None or not np.isfinite(x):
-                    continue
-                lo, hi = (-np.inf if lim[0] is None else lim[0]), (np.inf if lim[1] is None else lim[1])
-                if not lo <= x <= hi:
-                    raise InputError(f"{place}[{j}] ({name}): {x!r} is outside the joint limits "
-                                     f"[{lo!r}, {hi!r}] of the URDF (joint_limits=\"ignore\" "
-                                     f"allows it)")
+            _jv.check_limits(self, _jv.q_array(self, q, place), place, bounds)
 
     def adjacent_pairs(self) -> Set[FrozenSet[str]]:
         """The default allowed link pairs: URDF links joined by a path of joints with at
@@ -211,8 +176,8 @@ class Robot:
         values at the ends of the time enclosure); its scene lists the pairs found in
         contact on the way (all of them with all_contacts)."""
         from ._robot_check import check_robot
-        self.check_joint_limits(q0, q1, joint_limits)
-        r, free = check_robot(self, q0, q1, obstacles, self_collision=self_collision,
+        ends = _jv.checked_ends(self, q0, q1, joint_limits)
+        r, free = check_robot(self, q0, q1, obstacles, ends=ends, self_collision=self_collision,
                               allowed=allowed, time_tolerance=time_tolerance,
                               all_contacts=all_contacts, threads=threads,
                               broad_phase=broad_phase, min_distance=min_distance,
