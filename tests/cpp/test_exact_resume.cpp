@@ -17,6 +17,7 @@
 
 #include "arith/convert.h"
 #include "pred/solve.h"
+#include "expect.h"
 
 using namespace pccd;
 using arith::Interval;
@@ -24,14 +25,8 @@ using arith::Rational;
 using pred::Contact_result;
 using pred::Solve_options;
 
-static long passed = 0, failed = 0;
-static void expect(bool ok, const char *what, int k) {
-  if (ok) {
-    ++passed;
-  } else if (++failed <= 20) {
-    std::printf("FAIL: %s (case %d)\n", what, k);
-  }
-}
+// A check of case k (expect.h's counter).
+static void expect(bool ok, const char *what, int k) { expect(ok, std::string(what) + " (case " + std::to_string(k) + ")"); }
 
 using Vec = std::array<Rational, 3>;
 using Traj = std::array<poly::Poly<Rational>, 3>;  // x(t) per axis
