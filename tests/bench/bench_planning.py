@@ -190,22 +190,14 @@ def main(argv=None):
         if args.plot:
             plot(table, args.plot, args)
         return 0
-    try:
-        import fcl  # noqa: F401
-        import pinocchio  # noqa: F401
-        import yourdfpy  # noqa: F401
-        from ompl import util as ou
-    except ImportError as e:
-        print(f"bench_planning: skipped ({e.name} is not installed)")
+    import planning_slot  # the narrow passage: a slot around the hand at a goal
+    if not planning_slot.ompl_ready("bench_planning", args.seed, ["fcl", "pinocchio", "yourdfpy"]):
         return 0
-    ou.setLogLevel(ou.LogLevel.LOG_ERROR)
-    ou.RNG.setSeed(args.seed)
     import polyccd as P
     from polyccd.apps._demo_robot import PANDA_URDF, example_robot_file
     from polyccd.ompl import RobotSpace, simplify
     import ompl_panda as ex
     from bench_robot import Discrete
-    import planning_slot  # the narrow passage: a slot around the hand at a goal
     robot, plates, boxes, slot_goal, more = planning_slot.problem(args.seed, args.slot)
     if args.slot:
         print(f"slot: {', '.join(f'{n} {np.round(a, 4).tolist()} - {np.round(b, 4).tolist()}' for n, a, b in more)}"

@@ -117,21 +117,15 @@ def main(argv=None):
     if not os.path.exists(args.lib):
         print(f"bench_planning_cpp: skipped ({args.lib} is not built: make bench-planning-ompl)")
         return 0
-    try:
-        import yourdfpy  # noqa: F401
-        from ompl import util as ou
-    except ImportError as e:
-        print(f"bench_planning_cpp: skipped ({e.name} is not installed)")
+    import planning_slot
+    if not planning_slot.ompl_ready("bench_planning_cpp", args.seed, ["yourdfpy"]):
         return 0
-    ou.setLogLevel(ou.LogLevel.LOG_ERROR)
-    ou.RNG.setSeed(args.seed)
     import polyccd as P
     from polyccd.apps._demo_robot import PANDA_URDF, example_robot_file
     from polyccd.ompl import RobotSpace
     import ompl_panda as ex
     import scene_file
     from bench_planning import linear_path, plainmp_planners, queries
-    import planning_slot
     robot, plates, boxes, slot_goal, _ = planning_slot.problem(args.seed, args.slot)
     fixed = {"panda_finger_joint1": ex.FINGER}
     options = dict(self_collision=False, limits=P.Limits(max_seconds=args.check_seconds),

@@ -5,6 +5,7 @@ all (a passage narrower than 2 cm). The plates span the hand's extent along the 
 horizontal axis grown by MARGIN, and from MARGIN below the hand up to the hand's top
 (the wrist above stays free); the goal is a variation of examples/ompl_panda.py's GOAL
 whose pose is free with the slot (decided exactly by polyccd). A helper module."""
+import importlib
 import random
 
 import numpy as np
@@ -62,3 +63,19 @@ def problem(seed, with_slot):
         return robot, plates, boxes, None, []
     goal, more, bodies = slot(robot, plates, random.Random(seed), ex.plate, ex.GOAL, ex.FINGER)
     return robot, plates + bodies, boxes + more, goal, more
+
+
+def ompl_ready(bench, seed, modules=()):
+    """Whether the planning benchmarks' optional modules and OMPL import; OMPL then logs
+    errors only and draws from seed. When one is missing: False, after printing
+    "<bench>: skipped (<module> is not installed)"."""
+    try:
+        for name in modules:
+            importlib.import_module(name)
+        from ompl import util as ou
+    except ImportError as e:
+        print(f"{bench}: skipped ({e.name} is not installed)")
+        return False
+    ou.setLogLevel(ou.LogLevel.LOG_ERROR)
+    ou.RNG.setSeed(seed)
+    return True
