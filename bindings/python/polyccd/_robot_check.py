@@ -138,13 +138,11 @@ def free_until(rep):
     return common if common is not None else Fraction(text.decode("ascii"))
 
 
-def check_robot(robot, q0, q1, obstacles, *, self_collision, allowed, time_tolerance,
+def check_robot(robot, ends, obstacles, *, self_collision, allowed, time_tolerance,
                 all_contacts, threads, broad_phase, min_distance, limits, first_contact,
-                filter, ends=None):
+                filter):
     """(SceneResult, free_until) of one segment (Robot.check). ends: the chain values of
-    q0 and q1 when the caller has them (_joint_values.checked_ends)."""
-    if ends is None:
-        ends = (robot.chain_values(q0, "q0"), robot.chain_values(q1, "q1"))
+    its q0 and q1 (_joint_values.checked_ends)."""
     obstacles = checked_obstacles(obstacles)
     a0, a1 = ends
     made = _handle(robot)

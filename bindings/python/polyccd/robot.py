@@ -177,7 +177,7 @@ class Robot:
         contact on the way (all of them with all_contacts)."""
         from ._robot_check import check_robot
         ends = _jv.checked_ends(self, q0, q1, joint_limits)
-        r, free = check_robot(self, q0, q1, obstacles, ends=ends, self_collision=self_collision,
+        r, free = check_robot(self, ends, obstacles, self_collision=self_collision,
                               allowed=allowed, time_tolerance=time_tolerance,
                               all_contacts=all_contacts, threads=threads,
                               broad_phase=broad_phase, min_distance=min_distance,
