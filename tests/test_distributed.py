@@ -56,8 +56,12 @@ def query_bodies(n, hit_every=10):
     return out
 
 
-def builds(client):
-    return client.run(lambda: __import__("polyccd.apps.distributed").apps.distributed._BUILDS[0])
+def builds(client, token=None):
+    """Index objects each worker built: of the body whose token is given, or of any."""
+    def count():
+        made = __import__("polyccd.apps.distributed").apps.distributed._BUILDS
+        return made[token] if token else sum(made.values())
+    return client.run(count)
 
 
 def without_time(report):
@@ -300,16 +304,19 @@ def test_a_body_is_sent_and_indexed_once_across_calls(client):
         return Body(Mesh([[-4, -4, z], [4, -4, z], [-4, 4, z], [4, 4, z]],
                          [[0, 1, 3], [0, 3, 2]]), name=name)
     body, queries = plate("1/3", "plate-35"), query_bodies(200, hit_every=3)
-    serial = Index(body).query_many(queries)
-    before = builds(client)
+    token, serial = pd._body_token(body), Index(body).query_many(queries)
+    assert not any(builds(client, token).values())
     assert list(pd.index_map(body, queries, client=client, chunk_size=10)) == serial
-    first = builds(client)
+    assert sum(builds(client, token).values()) >= 1
     sent = dict(pd._SCATTERED)
     assert list(pd.index_map(Index(body), queries[::-1], client=client,
                              chunk_size=10)) == serial[::-1]
     assert list(pd.index_map(plate("1/3", "plate-35"), queries, client=client,
                              chunk_size=10)) == serial
-    assert builds(client) == first and sum(first.values()) > sum(before.values())
+    # At most once per worker: a worker that got no chunk of the first call (the
+    # scheduler chooses) builds it on its first chunk of a later one, and never again.
+    # (Counting all builds per worker instead failed CI once, 2026-11-29: {2, 3}.)
+    assert set(builds(client, token).values()) <= {0, 1}
     assert pd._SCATTERED == sent  # the same futures: nothing scattered again
     other = plate("-1/3", "plate-35")  # same name, other numbers: its own Index
     assert list(pd.index_map(other, queries, client=client)) == \

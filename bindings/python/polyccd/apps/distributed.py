@@ -26,6 +26,7 @@ embedded cluster has a nanny that restarts it), and the broadcast body has a cop
 every worker. Needs dask.distributed (`pip install "polyccd[dask]"` adds it to an installed
 polyccd); `import polyccd` never imports this module.
 """
+import collections
 import dataclasses
 import functools
 import hashlib
@@ -232,7 +233,7 @@ def map_chunks(fn, items, *shared, client=None, chunk_size=None, progress=None,
 
 _INDEXES = {}  # per worker process: token -> Index (a few, the latest)
 _INDEX_LOCK = threading.Lock()
-_BUILDS = [0]  # Index objects built in this process (tests read it on the workers)
+_BUILDS = collections.Counter()  # token -> Index objects built in this process (tests read it)
 _SCATTERED = {}  # the caller's side: (client id, token) -> broadcast body (a few, the latest)
 _SCATTER_LOCK = threading.Lock()
 
@@ -281,7 +282,7 @@ def _cached_index(token, body):
             while len(_INDEXES) >= 4:
                 _INDEXES.pop(next(iter(_INDEXES)))
             ix = _INDEXES[token] = Index(body)
-            _BUILDS[0] += 1
+            _BUILDS[token] += 1
         return ix
 
 
