@@ -55,6 +55,12 @@ Scene_report solve_exact(const Robot_model &r, const motion::Chain_path &path, c
     f.needed[r.bodies[p.i].link] = true;
     if (p.j < nr) f.needed[r.bodies[p.j].link] = true;
     if (win.on) p.lower = win.to_s(p.lower);
+    // A window starting at lo > 0 starts where every pair's filter separated it (each
+    // pair's lower >= lo is the end of its separated pieces, closed, so the pair is
+    // farther than delta at lo): the pair searches skip their pass at s = 0, which
+    // looks for contacts there (the static pass and bvh::least_within_at_zero: 12% of
+    // the exact solves of the UR5's min_distance bench segments, perf, issue 33).
+    if (win.on && win.lo > 0) p.apart_at_zero = true;
   }
   auto body = [&](size_t k, long base) -> const Moving_body & {
     if (k >= nr) return obst[k - nr];

@@ -121,7 +121,7 @@ Scene_report solve_planned(const std::function<const Moving_body &(const Pair_pl
     w->ctx = std::make_unique<Pair_ctx>(body(plan, w->i), body(plan, w->j));
     Search_options pair_so = so;  // the automatic phase is chosen per pair, by evidence
     pair_so.phase = choose(opt.broad_phase, *w->ctx, opt.solve.min_distance());
-    pair_so.apart_at_zero = plan.lower > 0;
+    pair_so.apart_at_zero = plan.lower > 0 || plan.apart_at_zero;
     w->out = search_pair(*w->ctx, pair_so, pool);
     rep.stats.add(w->out.stats);
     bool hit = !w->out.solved.empty();

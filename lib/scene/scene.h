@@ -67,10 +67,13 @@ struct Scene_report {
 };
 
 // A body pair to check with a certified lower bound of its contact times (a filter's:
-// scene/robot.h; 0 when none is known).
+// scene/robot.h; 0 when none is known). apart_at_zero: the pair is certainly apart at
+// t = 0 (with a minimum distance: farther than delta) even where lower is 0; a filter's
+// lower > 0 says so by itself.
 struct Pair_plan {
   size_t i = 0, j = 0;
   double lower = 0;
+  bool apart_at_zero = false;
 };
 
 // Body pairs (i, j), i < j, that are not checked (a robot's adjacent links, pairs a
