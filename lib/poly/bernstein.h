@@ -2,6 +2,8 @@
 // Bernstein coefficients on [a, b]. Used as conservative filters: a polynomial whose
 // coefficients all have one strict sign has no root on the CLOSED interval [a, b].
 #pragma once
+#include <algorithm>
+#include <type_traits>
 #include <vector>
 
 #include "poly/poly.h"
@@ -57,12 +59,37 @@ bool all_nonpositive(const std::vector<NT> &b) {
   return true;
 }
 
+// Intervals: p's natural interval extension on [a, b] (Horner on the interval hull of a
+// and b), O(deg p) where the Bernstein coefficients take O(deg p ^ 2) operations with
+// divisions. It encloses every value of p on [a, b] (each operation outward-rounded,
+// arith/interval.h), so one strict sign of it is one of p. On the short windows of a
+// robot's exact solve (2^-14 of the segment, degree-16 point paths) the terms of degree
+// k shrink like width^k, and this enclosure settles most queries the Bernstein test
+// would (a certain answer of either is sound; an undecided one falls back to the
+// Bernstein test, so no answer certain before is lost). Other NT: false, undecided.
+template <class NT>
+bool horner_enclosure(const Poly<NT> &p, const NT &a, const NT &b, arith::Interval &out) {
+  if constexpr (std::is_same_v<NT, arith::Interval>) {
+    if (p.c.empty()) return false;
+    const arith::Interval t(std::min(a.lo, b.lo), std::max(a.hi, b.hi));
+    arith::Interval r = p.c.back();
+    for (size_t k = p.c.size() - 1; k-- > 0;) r = r * t + p.c[k];
+    out = r;
+    return true;
+  } else {
+    (void)p, (void)a, (void)b, (void)out;
+    return false;
+  }
+}
+
 // True only when p certainly has no root on [a, b] (all Bernstein coefficients of one
 // strict sign). Never throws Uncertain: an undecided filter answers false.
 template <class NT>
 bool certainly_no_root(const Poly<NT> &p, const NT &a, const NT &b) {
   try {
     if (p.c.empty()) return false;  // the zero polynomial vanishes everywhere
+    arith::Interval h;
+    if (horner_enclosure(p, a, b, h) && (h.lo > 0 || h.hi < 0)) return true;
     std::vector<NT> bc = bernstein_coefficients(p, a, b);
     return all_positive(bc) || all_negative(bc);
   } catch (const arith::Uncertain &) {
@@ -76,6 +103,11 @@ template <class NT>
 int certain_sign_on(const Poly<NT> &p, const NT &a, const NT &b) {
   try {
     if (p.c.empty()) return -1;  // identically zero: never > 0
+    arith::Interval h;
+    if (horner_enclosure(p, a, b, h)) {
+      if (h.lo > 0) return 1;
+      if (h.hi <= 0) return -1;
+    }
     std::vector<NT> bc = bernstein_coefficients(p, a, b);
     return all_positive(bc) ? 1 : all_nonpositive(bc) ? -1 : 0;
   } catch (const arith::Uncertain &) {

@@ -1,5 +1,6 @@
 #include "pred/delta_axis.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "poly/bernstein.h"
@@ -42,11 +43,25 @@ bool delta_axis_separated(const Query_data<Interval> &q) {
   const double N = arith::round_up(std::sqrt(dd.hi));
   const Interval dN = q.delta * Interval(N);
   const Poly<Interval> rhs = q.scale.c.empty() ? Poly<Interval>(std::vector<Interval>{dN}) : dN * q.scale;
+  // g's coefficients summed in place, in the order of the polynomial operations (each
+  // coefficient's value is the same as -rhs + sum_a d_a (p_j,a - p_i,a)); one buffer.
+  size_t n = rhs.c.size();
+  for (const auto &pt : q.p)
+    for (int a = 0; a < 3; ++a) n = std::max(n, pt[a].c.size());
+  const Interval zero(0.0);
+  auto at = [&](const Poly<Interval> &p, size_t k) -> const Interval & { return k < p.c.size() ? p.c[k] : zero; };
+  Poly<Interval> g;
+  g.c.resize(n);
   for (int i = 0; i < na; ++i)
     for (int j = na; j < na + nb; ++j) {
-      Poly<Interval> g = -rhs;
-      for (int a = 0; a < 3; ++a) g = g + Interval(d[a]) * (q.p[j][a] - q.p[i][a]);
-      if (!(poly::range_on_unit(g).lo > 0)) return false;
+      for (size_t k = 0; k < n; ++k) {
+        Interval c = -at(rhs, k);
+        for (int a = 0; a < 3; ++a) c = c + Interval(d[a]) * (at(q.p[j][a], k) - at(q.p[i][a], k));
+        g.c[k] = c;
+      }
+      // certain_sign_on: Horner's O(n) enclosure first, then the Bernstein
+      // coefficients, all certainly > 0 (the hull range_on_unit takes).
+      if (poly::certain_sign_on(g, zero, Interval(1.0)) != 1) return false;
     }
   return true;
 }
