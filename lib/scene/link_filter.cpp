@@ -322,6 +322,10 @@ double first_uncleared(const Filter_side &SA, const Filter_side &SB, double reac
     S.stack.pop_back();
     const double start = std::ldexp(static_cast<double>(it.i), -it.d);
     if (start >= until) return start;  // every earlier piece is separated
+    if (std::ldexp(static_cast<double>(it.i + 1), -it.d) <= lim.from) {  // known separated
+      S.give_back(it.f);
+      continue;
+    }
     const Side_piece pa = SA.piece(it.d, it.i), pb = SB.piece(it.d, it.i);
     const double spread = std::max(spread_of(pa, A), spread_of(pb, B));
     // Nodes up to kSplit_factor spreads wait for the halves (the finest piece has none:

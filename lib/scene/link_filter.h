@@ -115,6 +115,10 @@ struct Filter_limits {
   // The first piece that is not separated gives its start (0) at once, after a witness
   // try at its midpoint (decide mode): no descent to kMax_depth over equal pieces.
   bool frozen = false;
+  // The caller knows [0, from] separated (the start an earlier call on the same sides
+  // and reach returned, on the dyadic grid): pieces ending at or before it are skipped
+  // as separated, unexamined (a witness pair's second traversal, robot.cpp).
+  double from = 0;
 };
 
 // w: when not null (both bodies meshes; with reach > 0 only when lim.delta_lo > 0),

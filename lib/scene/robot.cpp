@@ -366,6 +366,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
           Filter_limits upto;
           upto.until = horizon;
           upto.delta_lo = lim.delta_lo;
+          upto.from = p.lower;  // separated before it: the first traversal's (link_filter.h)
           const long base = base_of(p);
           // (The guard above: a link holding an obstacle at t = 0 was reported first
           // touching where its surface left it: corpus/robots/solid-link-holds-obstacle-at-zero.robot.)
