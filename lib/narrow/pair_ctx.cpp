@@ -187,7 +187,32 @@ pred::Contact_result Pair_ctx::solve(const Prim_pair &p, const pred::Solve_optio
   // positions. Without D a body whose motion has W != 1 (a rotation) was within
   // delta / D, not delta (test_min_distance.py, test_delta_scaled_by_the_motion_denominator).
   const bool scaled = opt.min_distance();
-  return pred::solve(query<Interval>(p, scaled), [&] { return query<Rational>(p, scaled); }, opt);
+  // With a minimum separation, the pair's memo of irrational features (irrational_memo.h).
+  Query_irrational::Points points;
+  const int n = scaled ? query_points(p, points) : 0;
+  if (n == 0 || !irrational_.bind(opt.delta))
+    return pred::solve(query<Interval>(p, scaled), [&] { return query<Rational>(p, scaled); }, opt);
+  Query_irrational known(irrational_, points, n);
+  return pred::solve(query<Interval>(p, scaled), [&] { return query<Rational>(p, scaled); }, opt, &known);
+}
+
+int Pair_ctx::query_points(const Prim_pair &p, Query_irrational::Points &out) const {
+  switch (p.type) {  // the order of query()
+    case VF:
+    case FV: {
+      const int vs = p.type == VF ? 0 : 1;
+      const std::array<uint32_t, 3> t = triangle(1 - vs, p.type == VF ? p.b : p.a);
+      out = {{{vs, p.type == VF ? p.a : p.b}, {1 - vs, t[0]}, {1 - vs, t[1]}, {1 - vs, t[2]}}};
+      return 4;
+    }
+    case EE: {
+      const auto &a = A_.mesh->edges()[p.a], &b = B_.mesh->edges()[p.b];
+      out = {{{0, a[0]}, {0, a[1]}, {1, b[0]}, {1, b[1]}}};
+      return 4;
+    }
+    default:
+      return 0;
+  }
 }
 
 template <class NT, size_t K>

@@ -19,6 +19,7 @@
 #include <mutex>
 #include <vector>
 
+#include "narrow/irrational_memo.h"
 #include "narrow/moving_body.h"
 #include "narrow/point_memo.h"
 #include "pred/solve.h"
@@ -100,6 +101,8 @@ class Pair_ctx {
   // traj_q, traj_i and own per point, made once (point_memo.h).
   mutable Point_memo<motion::Point_traj<Rational>> traj_q_, own_q_;
   mutable Point_memo<motion::Point_traj<Interval>> traj_i_, own_i_;
+  // Features proven to touch at irrational times only (irrational_memo.h).
+  mutable Irrational_memo irrational_;
 
   const Common &init() const;
   std::unique_ptr<const Common> compute() const;
@@ -107,6 +110,8 @@ class Pair_ctx {
   // scaled: set the query's scale D for every kind (balls always have it; point kinds
   // need it with a minimum separation).
   template <class NT> pred::Query_data<NT> query(const Prim_pair &p, bool scaled) const;
+  // The (side, index) of query's points, in its order, for VF, FV and EE; 0 for others.
+  int query_points(const Prim_pair &p, Query_irrational::Points &out) const;
   std::array<uint32_t, 3> triangle(int s, uint32_t t) const;
   // Points ids of side s at t = 0 times D(0) > 0 (exact, or enclosures for Interval).
   template <class NT, size_t K>

@@ -1,5 +1,7 @@
 #include "pred/solve.h"
 
+#include <algorithm>
+
 #include "poly/earliest.h"
 #include "poly/integer.h"
 #include "poly/rational_root.h"
@@ -232,15 +234,15 @@ Query_data<NT> with_delta(Query_data<NT> q, const NT &delta) {
 
 Contact_result solve_at(const Query_data<Interval> &iq,
                         const std::function<Query_data<Rational>()> &exact_points,
-                        const Solve_options &opt);
+                        const Solve_options &opt, Irrational_features *known);
 
 }  // namespace
 
 Contact_result solve(const Query_data<Interval> &iq,
                      const std::function<Query_data<Rational>()> &exact_points,
-                     const Solve_options &opt) {
+                     const Solve_options &opt, Irrational_features *known) {
   if (sgn(opt.delta) < 0) throw arith::Internal_error("solve: a negative minimum distance");
-  if (!opt.min_distance()) return solve_at(iq, exact_points, opt);
+  if (!opt.min_distance()) return solve_at(iq, exact_points, opt, known);
   // A plain linear query: first the separating-direction filter (delta_filter.h), which
   // pccd_solve_linear_d and the batch run on the same enclosures before building iq.
   // Any other query: first the nearest-point axis filter (delta_axis.h).
@@ -253,14 +255,14 @@ Contact_result solve(const Query_data<Interval> &iq,
     out.stage = STAGE_BOUNDS;
     return out;
   }
-  return solve_at(dq, [&] { return with_delta(exact_points(), opt.delta); }, opt);
+  return solve_at(dq, [&] { return with_delta(exact_points(), opt.delta); }, opt, known);
 }
 
 namespace {
 
 Contact_result solve_at(const Query_data<Interval> &iq,
                         const std::function<Query_data<Rational>()> &exact_points,
-                        const Solve_options &opt) {
+                        const Solve_options &opt, Irrational_features *known) {
   Contact_result out;
   util::work_step();  // one query (util/work_budget.h)
   if (bounds_separate(iq)) {
@@ -325,8 +327,18 @@ Contact_result solve_at(const Query_data<Interval> &iq,
 
   // A time was enclosed in intervals and may be rational. Most are not, which a cheap
   // modular test of the first-touching systems alone proves.
+  // Every feature touching first already proven so in an earlier query of the pair: the
+  // same answer without the exact query (the feature pairs of one vertex-vertex
+  // approach, 35-47 on the UR5's, share its vertex-vertex feature; issue 33).
+  auto is_known = [&](const Feature &f) { return known->has(f); };
+  if (decided && known && !out.features.empty() && std::all_of(out.features.begin(), out.features.end(), is_known))
+    return out;
   const Query_data<Rational> eq = integral(exact_points());
-  if (decided && first_time_irrational(eq, out.features)) return out;
+  if (decided && first_time_irrational(eq, out.features)) {
+    if (known)
+      for (const Feature &f : out.features) known->add(f);
+    return out;
+  }
   // A decided search needs only the systems of the features touching first (the
   // rationality test below); the exact search resumes from the interval one's last
   // state, which looks at that state's active systems alone (poly/earliest.h), so it

@@ -68,10 +68,24 @@ inline void reset(Contact_result &r) {
   r.stage = STAGE_NONE;
 }
 
+// Features of a query whose first-touch polynomial is known to have no rational root
+// (narrow/irrational_memo.h: a body pair's memo across its feature pairs). has(f): f's
+// polynomial, or one with the same roots on [0, 1], was proven so before; add(f):
+// record f, proven now. Asked only after the interval stage enclosed a first time
+// whose features are all known: then the time is irrational (it is a root on [0, 1] of
+// each), and its enclosure stands without the exact query (solve.cpp).
+class Irrational_features {
+ public:
+  virtual ~Irrational_features() = default;
+  virtual bool has(const Feature &f) const = 0;
+  virtual void add(const Feature &f) = 0;
+};
+
 // exact_points builds the exact trajectories on demand (only when the interval stages
-// cannot decide); interval.p must enclose them coefficient by coefficient.
+// cannot decide); interval.p must enclose them coefficient by coefficient. known: null,
+// or the memo above for this query's features.
 Contact_result solve(const Query_data<arith::Interval> &interval,
                      const std::function<Query_data<arith::Rational>()> &exact_points,
-                     const Solve_options &opt);
+                     const Solve_options &opt, Irrational_features *known = nullptr);
 
 }  // namespace pccd::pred
