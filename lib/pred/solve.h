@@ -87,5 +87,9 @@ class Irrational_features {
 Contact_result solve(const Query_data<arith::Interval> &interval,
                      const std::function<Query_data<arith::Rational>()> &exact_points,
                      const Solve_options &opt, Irrational_features *known = nullptr);
+// The same, taking over the interval query (with a minimum distance it is not copied).
+Contact_result solve(Query_data<arith::Interval> &&interval,
+                     const std::function<Query_data<arith::Rational>()> &exact_points,
+                     const Solve_options &opt, Irrational_features *known = nullptr);
 
 }  // namespace pccd::pred
