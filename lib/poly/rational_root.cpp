@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "arith/errors.h"
+#include "arith/convert.h"
+#include "poly/bernstein.h"
 #include "poly/gcd.h"
 #include "poly/integer.h"
 #include "util/work_budget.h"
@@ -95,15 +97,36 @@ class Refiner {
   unsigned long k_ = 2;  // N = 2^k pieces
 };
 
+// F (integer coefficients) has exactly one root in (a, b), a simple one, shown without
+// its square-free part: nonzero values of opposite signs at a and b, and F' of one
+// strict sign on [a, b] (F strictly monotone there), in intervals first, then in
+// rationals (Bernstein).
+bool simple_root_alone(const Poly<Rational> &f, const Rational &a, const Rational &b) {
+  if (f.degree() < 1) return false;
+  const int sa = sign_at(f, a), sb = sign_at(f, b);
+  if (sa == 0 || sb == 0 || sa == sb) return false;
+  const Poly<Rational> d = derivative(f);
+  Poly<arith::Interval> di;
+  for (const Rational &x : d.c) di.c.push_back(arith::enclose(x));
+  return certainly_no_root(di, arith::enclose(a), arith::enclose(b)) || certainly_no_root(d, a, b);
+}
+
 // The first contact of system s in (lo, hi) (s has one there and does not hit hi
-// earlier than its interior contacts).
-Candidate first_root(const System<Rational> &s, Rational a, Rational b) {
+// earlier than its interior contacts). F0: primitive_positive(s.f).
+Candidate first_root(const System<Rational> &s, const Poly<Rational> &F0, Rational a, Rational b) {
   Candidate c;
-  c.F = squarefree_primitive(s.f);
+  // f's only root in (a, b) is then that contact: F = f made primitive isolates it as
+  // step 1 below would, and serves the rationality test as its square-free part does (the
+  // rational root theorem and the refinement hold for any integer F with one simple
+  // root there). The gcd of f and f' behind the square-free part was nearly all of a
+  // Panda segment's 880 ms with min_distance 0.05 (a hand vertex against a box face on a
+  // window of 2^-14: one feature pair in this stage; issue 33).
+  const bool simple = simple_root_alone(F0, a, b);
+  c.F = simple ? F0 : squarefree_primitive(s.f);
   const std::vector<Poly<Rational>> none;
   // 1. Shrink until (a, b) holds only the first contact, as the only root of F, with
-  //    F nonzero at both ends.
-  while (!(count_roots(c.F, none, a, b) == 1 && sign_at(c.F, a) != 0 && sign_at(c.F, b) != 0)) {
+  //    F nonzero at both ends (so it does already when simple).
+  while (!simple && !(count_roots(c.F, none, a, b) == 1 && sign_at(c.F, a) != 0 && sign_at(c.F, b) != 0)) {
     util::work_step();
     Rational m = (a + b) / 2;
     long left = s.count_open(a, m);
@@ -152,11 +175,19 @@ Rational_root_result rational_first_contact(const std::vector<System<Rational>> 
   std::vector<Candidate> cands(active.size());
   for (size_t k = 0; k < active.size(); ++k) {
     const System<Rational> &s = sys[active[k]];
-    if (s.count_open(lo, hi) == 0) {  // its contact in (lo, hi] is hi itself
+    const bool zero = s.kind == System<Rational>::Kind::zero_f;
+    const Poly<Rational> F0 = zero ? s.f : primitive_positive(s.f);  // integers, f's roots
+    // f(hi) != 0: the contact is not hi itself (a contact of kind roots has f = 0 there;
+    // one of kind sublevel with f(hi) < 0 is preceded by f <= 0 inside, f(lo) > 0 as
+    // none hits lo), so it is inside, and count_open's Sturm count (the square-free
+    // part: a gcd of f and f') need not say so.
+    if (!zero && sign_at(F0, hi) != 0) {
+      cands[k] = first_root(s, F0, lo, hi);
+    } else if (s.count_open(lo, hi) == 0) {  // its contact in (lo, hi] is hi itself
       cands[k].rational = true;
       cands[k].r = hi;
     } else {
-      cands[k] = first_root(s, lo, hi);
+      cands[k] = first_root(s, F0, lo, hi);
     }
   }
   Rational_root_result out;
