@@ -261,4 +261,43 @@ Box feature_box(const Moving_body &b, int s, const Prim_pair &p, const Pose_piec
   return h;
 }
 
+// n . x over the boxes: an interval holding every value. Each bound is a sum of three
+// products in doubles; in any rounding mode each operation errs by at most 2u = 2^-52
+// relative, so the sum errs by at most 10u times the sum M of the products' magnitudes;
+// both bounds move out by M 2^-48 (> 10u M) + 1e-300 (underflow), as boxes.h does.
+void project(const double n[3], const Box *b, int count, double &lo, double &hi) {
+  lo = HUGE_VAL;
+  hi = -HUGE_VAL;
+  for (int k = 0; k < count; ++k) {
+    double l = 0, h = 0, m = 0;
+    for (int i = 0; i < 3; ++i) {
+      const double x = n[i] * b[k].lo[i], y = n[i] * b[k].hi[i];
+      l += x < y ? x : y;
+      h += x < y ? y : x;
+      m += std::fabs(x) > std::fabs(y) ? std::fabs(x) : std::fabs(y);
+    }
+    const double e = m * 0x1p-48 + 1e-300;
+    if (std::isnan(l) || std::isnan(h) || std::isnan(e)) {  // unbounded boxes: no claim
+      lo = -HUGE_VAL;
+      hi = HUGE_VAL;
+      return;
+    }
+    lo = std::min(lo, l - e);
+    hi = std::max(hi, h + e);
+  }
+}
+
+bool axis_separates(const double n[3], const Box *a, int na, const Box *b, int nb, double reach) {
+  double xl, xh, yl, yh;
+  project(n, a, na, xl, xh);
+  project(n, b, nb, yl, yh);
+  if (reach == 0) return xh < yl || yh < xl;
+  // Within reach: points x, y with |x - y| <= reach project within reach |n| of each
+  // other, so a gap > reach |n| separates (sharper than A's boxes grown by reach on
+  // every axis, which adds reach |n|_1). Each gap, a difference of doubles, errs by at
+  // most u of itself; |n| and the product by a few u: 2^-48 covers them.
+  const double m = reach * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * (1 + 0x1p-48) + 1e-300;
+  return (yl - xh) * (1 - 0x1p-48) > m || (xl - yh) * (1 - 0x1p-48) > m;
+}
+
 }  // namespace pccd::enclose

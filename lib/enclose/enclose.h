@@ -50,6 +50,14 @@ Box grow(const Box &a, double r);  // r >= 0 (+inf allowed), outward-safe
 // in (delta, sqrt(3) delta] is separated (issue 33, near misses of a robot). r = 0:
 // boxes_meet.
 bool boxes_within(const Box &a, const Box &b, double r);
+// n . x over the boxes b[0, count): lo <= n . x <= hi for every x in them (outward
+// rounding bounds in enclose.cpp; unbounded boxes give [-inf, inf]).
+void project(const double n[3], const Box *b, int count, double &lo, double &hi);
+// Whether the axis n (any double vector) separates the boxes a[0, na) from b[0, nb) by
+// more than reach |n| (reach >= 0; 0: disjoint projections): every point of the first
+// boxes is then farther than reach from every point of the second (certified
+// projections; the axis's doubles decide only how often it succeeds).
+bool axis_separates(const double n[3], const Box *a, int na, const Box *b, int nb, double reach);
 Box empty_box();                    // hull identity
 
 // Minimum separation (pred::Solve_options::delta, pccd_config.min_distance): the growth
