@@ -5,7 +5,11 @@
 // (lo, hi) is a root r of f: let F be the primitive square-free integer part of f and
 // L = |lc(F)|. If r = p/q in lowest terms then q | L (rational root theorem), so L r
 // is an integer. Isolate r as the only root of F in an interval narrower than 1/L:
-// that interval holds at most one multiple of 1/L, the only rational candidate.
+// that interval holds at most one multiple of 1/L, the only rational candidate. When f
+// has opposite nonzero signs at lo and hi and f' one sign on [lo, hi], r is a simple
+// root alone there and f made primitive serves as F (the theorem holds for any integer
+// polynomial), with no gcd of f and f'; and f(hi) != 0 places the contact inside
+// (lo, hi) without counting (rational_root.cpp).
 #pragma once
 #include <optional>
 #include <vector>
