@@ -73,6 +73,10 @@ class Pair_ctx {
   // the pair's trajectories (the witness pass of scene/pair_search.h).
   bool within_at_zero(const Prim_pair &p, const pred::Solve_options &opt) const;
 
+  // The (side, index of that side's points) of p's query points, in the order of its
+  // query (the vertex or edge of A first), for VF, FV and EE; their count, 0 for others.
+  int query_points(const Prim_pair &p, Query_irrational::Points &out) const;
+
   // The feature pairs a result reports, as features of the two bodies (deduplicated).
   std::vector<std::pair<Feature_ref, Feature_ref>> contacts(const Prim_pair &p,
                                                            const pred::Contact_result &r) const;
@@ -110,8 +114,6 @@ class Pair_ctx {
   // scaled: set the query's scale D for every kind (balls always have it; point kinds
   // need it with a minimum separation).
   template <class NT> pred::Query_data<NT> query(const Prim_pair &p, bool scaled) const;
-  // The (side, index) of query's points, in its order, for VF, FV and EE; 0 for others.
-  int query_points(const Prim_pair &p, Query_irrational::Points &out) const;
   std::array<uint32_t, 3> triangle(int s, uint32_t t) const;
   // Points ids of side s at t = 0 times D(0) > 0 (exact, or enclosures for Interval).
   template <class NT, size_t K>

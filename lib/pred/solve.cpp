@@ -237,10 +237,6 @@ Contact_result solve_at(const Query_data<Interval> &iq,
                         const std::function<Query_data<Rational>()> &exact_points,
                         const Solve_options &opt, Irrational_features *known);
 
-}  // namespace
-
-namespace {
-
 // solve's body for an interval query given as an lvalue (copied into its delta form) or
 // as an rvalue (moved: the query's trajectories are not copied again; a robot window's
 // feature pairs, each excluded after a few cheap tests, spent about 4% copying them).

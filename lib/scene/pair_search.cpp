@@ -171,52 +171,36 @@ class Driver final : public narrow::Candidate_sink {
   // delta, kept 1,000-5,000 feature pairs of a Panda window whose axis test in the
   // solver (pred/delta_axis.h, each after building the pair's query) then ended them.
   int first_meeting(const Prim_pair &p, const std::vector<Part> &part) const {
+    narrow::Query_irrational::Points pts;
+    const int n = reach_ > 0 ? ctx_.query_points(p, pts) : 0;
     for (int k = 0; k < kSub; ++k) {
-      if (enclose::boxes_within(enclose::feature_box(ctx_.side(0), 0, p, part[k].pose[0]),
-                                enclose::feature_box(ctx_.side(1), 1, p, part[k].pose[1]), reach_) &&
-          !(reach_ > 0 && nearest_axis_apart(p, part[k])))
+      if (n > 0 ? within_on_part(pts, n, part[k])
+                : enclose::boxes_within(enclose::feature_box(ctx_.side(0), 0, p, part[k].pose[0]),
+                                        enclose::feature_box(ctx_.side(1), 1, p, part[k].pose[1]), reach_))
         return k;
     }
     return kSub;
   }
-  // The points of side s's feature of p (a vertex, an edge's ends, a triangle's corners)
-  // into ids; their count (0: not a point feature pair).
-  int feature_points(const Prim_pair &p, int s, uint32_t ids[3]) const {
-    const Moving_body &b = ctx_.side(s);
-    const uint32_t k = s == 0 ? p.a : p.b;
-    if (!b.is_mesh() || !(p.type == narrow::VF || p.type == narrow::FV || p.type == narrow::EE)) return 0;
-    if (p.type == narrow::EE) {
-      ids[0] = b.mesh->edges()[k][0], ids[1] = b.mesh->edges()[k][1];
-      return 2;
-    }
-    if ((p.type == narrow::VF) == (s == 0)) {  // the vertex side
-      ids[0] = k;
-      return 1;
-    }
-    const auto &t = b.mesh->triangles()[k];
-    ids[0] = t[0], ids[1] = t[1], ids[2] = t[2];
-    return 3;
-  }
-  // Each feature lies in the convex hull of its points' boxes over the part, so a
-  // direction on which the two sets of boxes are more than reach |d| apart keeps every
-  // point of one farther than reach from the other's (enclose::axis_separates).
-  bool nearest_axis_apart(const Prim_pair &p, const Part &part) const {
-    uint32_t ids[2][3];
-    enclose::Box box[2][3];
+  // The point feature pair of points pts[0, n) (Pair_ctx::query_points) may be within
+  // reach on the part: the hulls of its points' boxes over the part (feature_box's boxes)
+  // are within reach, and those boxes are not more than reach |d| apart on the
+  // direction d of the features' nearest points at the boxes' centres (each feature
+  // lies in the convex hull of its points' boxes; enclose::axis_separates).
+  bool within_on_part(const narrow::Query_irrational::Points &pts, int n, const Part &part) const {
+    enclose::Box box[2][3], hull[2] = {enclose::empty_box(), enclose::empty_box()};
     double mid[2][3][3];
-    int n[2];
-    for (int s = 0; s < 2; ++s) {
-      n[s] = feature_points(p, s, ids[s]);
-      if (n[s] == 0) return false;
+    int count[2] = {0, 0};
+    for (int i = 0; i < n; ++i) {
+      const int s = pts[i].first, c = count[s]++;
       const narrow::Body_data &d = *ctx_.side(s).data;
-      for (int i = 0; i < n[s]; ++i) {
-        box[s][i] = enclose::point_box(part.pose[s], d.pts[ids[s][i]], d.pt_err);
-        for (int a = 0; a < 3; ++a) mid[s][i][a] = 0.5 * box[s][i].lo[a] + 0.5 * box[s][i].hi[a];
-      }
+      box[s][c] = enclose::point_box(part.pose[s], d.pts[pts[i].second], d.pt_err);
+      hull[s] = enclose::hull(hull[s], box[s][c]);
+      for (int a = 0; a < 3; ++a) mid[s][c][a] = 0.5 * box[s][c].lo[a] + 0.5 * box[s][c].hi[a];
     }
+    if (!enclose::boxes_within(hull[0], hull[1], reach_)) return false;
     double axis[3];
-    return pred::closest_direction(mid[0], n[0], mid[1], n[1], axis) &&
-           enclose::axis_separates(axis, box[0], n[0], box[1], n[1], reach_);
+    return !(pred::closest_direction(mid[0], count[0], mid[1], count[1], axis) &&
+             enclose::axis_separates(axis, box[0], count[0], box[1], count[1], reach_));
   }
 
   const Pair_ctx &ctx_;
