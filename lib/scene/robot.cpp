@@ -6,10 +6,12 @@
 #include "bvh/hierarchy.h"
 #include "motion/chain_path.h"
 #include "poly/poly.h"
+#include "scene/instant_scan.h"
 #include "scene/link_filter.h"
 #include "scene/node_memo.h"
 #include "scene/piece_poses.h"
 #include "scene/robot_exact.h"
+#include "scene/robot_sides.h"
 #include "scene/solid_start.h"
 #include "util/work_budget.h"
 
@@ -74,65 +76,12 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
   util::work_step(1 + plans.size());
   if (ro.filter) {
     Piece_poses poses(path, obst);
-    // A key for this check's poses (Filter_side::share): first_uncleared keeps a link's
-    // boxes on a piece for its next pair (shared_memo.h). Per thread, never 0.
+    // A key for this check's poses (Filter_side::share; robot_sides.h). Per thread, never 0.
     thread_local uint64_t tl_checks = 0;
     const uint64_t share = ++tl_checks;
     const double reach = opt.reach;
     const bool decide = !opt.solve.want_time && !opt.all_contacts;
-    // Body k of pair p's side: a link body relative to the pair's base (the links' lowest
-    // common ancestor for a self pair: the motion of the joints above it moves both
-    // alike and drops out; -1 against an obstacle), the base's own bodies standing still.
-    static const Side_piece identity_side = [] {
-      static enclose::Pose_piece p;
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          p.Rm[i][j] = i == j ? 1 : 0;
-          p.Rr[i][j] = 0;
-        }
-      Side_piece x;
-      x.ball = &p;
-      x.identity = true;
-      return x;
-    }();
-    // Each body's hierarchy, looked up once per check (bvh::hierarchy takes a lock).
-    std::vector<const bvh::Hierarchy *> trees(nr + obst.size(), nullptr);
-    auto side = [&](size_t k, long base) {
-      Filter_side s;
-      s.src = &poses;
-      s.base = base;
-      if (k < nr) {
-        const size_t link = r.bodies[k].link;
-        s.data = r.bodies[k].body.get();
-        s.k = link;
-        s.share = share;
-        if (static_cast<long>(link) == base) {
-          s.piece_of = [](void *, long, size_t, int, long) -> const Side_piece & { return identity_side; };
-          s.instant_of = [](void *, long, size_t, int, long) -> const enclose::Pose_piece & {
-            return *identity_side.ball;
-          };
-        } else {
-          s.piece_of = [](void *src, long b, size_t l, int d, long i) -> const Side_piece & {
-            return static_cast<Piece_poses *>(src)->link(b, l, d, i);
-          };
-          s.instant_of = [](void *src, long b, size_t l, int d, long i) -> const enclose::Pose_piece & {
-            return static_cast<Piece_poses *>(src)->link_at(b, l, d, i);
-          };
-        }
-      } else {
-        s.data = obst[k - nr].data.get();
-        s.k = k - nr;
-        s.piece_of = [](void *src, long, size_t o, int d, long i) -> const Side_piece & {
-          return static_cast<Piece_poses *>(src)->obstacle(o, d, i);
-        };
-        s.instant_of = [](void *src, long, size_t o, int d, long i) -> const enclose::Pose_piece & {
-          return static_cast<Piece_poses *>(src)->obstacle_at(o, d, i);
-        };
-      }
-      if (!trees[k]) trees[k] = &bvh::hierarchy(*s.data);
-      s.tree = trees[k];
-      return s;
-    };
+    Robot_sides side(r, obst, poses, share);
     auto base_of = [&](const Pair_plan &p) {
       return p.j < nr ? path.common_ancestor(r.bodies[p.i].link, r.bodies[p.j].link) : -1L;
     };
@@ -195,6 +144,10 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       }
       return far_of[q] == 1;
     };
+    // The witness scans' pairs and node pairs per pair and instant (instant_scan.h).
+    Instant_scan scan(nr + obst.size());
+    auto scan_side = [&](size_t q, int s) { return side(s == 0 ? plans[q].i : plans[q].j, base_of(plans[q])); };
+    constexpr size_t kScan_tests = 64;
     std::vector<Pair_plan> kept;
     Witness found;
     size_t found_i = 0, found_j = 0;
@@ -224,55 +177,17 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       // (200 segments, CPU ms per segment, colliding / free means): no scan 2.37 / 0.65,
       // 1/2 and the quarters with 64 pairs 1.12 / 0.70, the eighths too 0.86 / 0.80, 16
       // pairs 1.73 / 0.81 (a near pair needs more to reach its leaves).
-      constexpr size_t kScan_tests = 64;
       // (depth, index): 1/2, 1/4, 3/4; with a minimum distance 0 first (a start within
       // delta, where the start was checked for touching alone, ended at a midpoint
       // witness near 0 after traversals: up to 9 ms on the UR5's; issue 33).
       static const long kScan[4][2] = {{0, 0}, {1, 1}, {2, 1}, {2, 3}};
       const auto *scan_from = lim.delta_lo > 0 ? kScan : kScan + 1;
-      // Each body's root box at the instant, made once per pose (touching_at's first test
-      // remade it per pair: a link's for each obstacle); a pair whose root boxes are not
-      // within reach is skipped, as touching_at would return at once.
-      std::vector<const enclose::Pose_piece *> root_pose(nr + obst.size(), nullptr);
-      std::vector<enclose::Box> root_box(nr + obst.size());
-      auto root_at = [&](size_t k, const Filter_side &s, const enclose::Pose_piece &pose) -> const enclose::Box & {
-        if (root_pose[k] != &pose) {
-          root_pose[k] = &pose;
-          root_box[k] = enclose::frame_box(pose, s.tree->nodes[0].c, s.tree->nodes[0].h);
-        }
-        return root_box[k];
-      };
-      // A body's node boxes at the instant, kept while its pairs follow one another (the
-      // same pose and hierarchy: one link's body against each obstacle). Per thread: its
-      // slots are not reallocated per check; start() forgets every box.
-      thread_local Node_memo memo;
-      const enclose::Pose_piece *memo_pose = nullptr;
-      const bvh::Hierarchy *memo_tree = nullptr;
-      for (const auto *m = scan_from; m != kScan + 4; ++m) {
+      Witness w;
+      for (const auto *m = scan_from; m != kScan + 4 && !w.found; ++m) {
         if (lim.frozen && m != scan_from) break;  // every instant holds the same poses
-        for (size_t q = 0; q < plans.size(); ++q) {
-          const Pair_plan &p = plans[q];
-          const long base = base_of(p);
-          const Filter_side a = side(p.i, base), b = side(p.j, base);
-          if (!a.data->mesh || !b.data->mesh || !a.has_instant() || !b.has_instant() || far(q)) continue;
-          const enclose::Pose_piece &pa = a.instant(static_cast<int>((*m)[0]), (*m)[1]);
-          const enclose::Pose_piece &pb = b.instant(static_cast<int>((*m)[0]), (*m)[1]);
-          if (!enclose::boxes_within(root_at(p.i, a, pa), root_at(p.j, b, pb), reach)) continue;
-          size_t budget = kScan_tests;
-          Witness w;
-          if (memo_pose != &pa || memo_tree != a.tree) {
-            memo_pose = &pa;
-            memo_tree = a.tree;
-            memo.start(a.tree->nodes.size(), a.tree->elems.size());
-          }
-          if (touching_at(*a.data, pa, *b.data, pb, kRoots, budget, w.a, w.b, reach, lim.delta_lo, a.tree, b.tree,
-                          &memo)) {
-            w.found = true;
-            w.depth = static_cast<int>((*m)[0]);
-            w.index = (*m)[1];
-            return witness_report(p.i, p.j, w, 0.0);
-          }
-        }
+        const size_t q = scan.find(plans, static_cast<int>((*m)[0]), (*m)[1], reach, lim.delta_lo, kScan_tests,
+                                   scan_side, far, w);
+        if (w.found) return witness_report(plans[q].i, plans[q].j, w, 0.0);
       }
     }
     // First-contact mode with a minimum distance: a pair certainly within delta at t = 0
@@ -308,7 +223,61 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         zero_of[q] = kApart;
       }
     }
-    for (size_t q = 0; q < plans.size(); ++q) {
+    // Witness tests per instant after a pair's bound in first-contact mode: an exact
+    // solve follows anyway (10 ms and more on the UR5), and a tighter window saves most
+    // of it; 4096 node pairs reached the leaf pairs within delta near a plate where
+    // kWitness_tests did not (issue 33).
+    constexpr size_t kWindow_tests = 4096;
+    // First-contact mode, no witness at 0: a scan at 1/8, ..., 7/8 in turn (instant_scan.h)
+    // bounds the first contact before any traversal. Then the pairs are cleared in turn,
+    // the scan's pair first, each only up to the least witness so far (until) and without
+    // midpoint witnesses, so to the finest piece (the window's bound); a pair left
+    // uncleared before it tries a witness just after its bound (witness_after), which
+    // bounds the pairs after it. The pairs before the midpoint witness were cleared over
+    // all of [0, 1], those after it to the finest piece up to that coarse witness, and
+    // the witness pair twice: 3.7 of the 8.5 ms of a UR5 segment first within delta
+    // after 0 (issue 33).
+    bool scanned = false;
+    for (long k = 1; !decide && !opt.all_contacts && !lim.frozen && zero_q == plans.size() && k < 8; ++k) {
+      const size_t s = scan.find(plans, 3, k, reach, lim.delta_lo, kScan_tests, scan_side, far, found);
+      if (!found.found) continue;
+      found_i = plans[s].i;
+      found_j = plans[s].j;
+      horizon = lim.until = std::ldexp(static_cast<double>(k), -3);
+      scanned = true;
+      std::vector<double> lower(plans.size(), kNever);
+      constexpr size_t kBound_tries = 8;  // witness tries in the pass (a pair each)
+      size_t tries = 0;
+      auto clear = [&](size_t q) {
+        const Pair_plan &p = plans[q];
+        if (far(q) && lim.delta_lo <= reach) return;  // as below: never within reach
+        const long base = base_of(p);
+        const Filter_side a = side(p.i, base), b = side(p.j, base);
+        lower[q] = first_uncleared(a, b, reach, lim);
+        if (lower[q] > 0 && may_contain_at_zero(p)) {  // as below: the exact solve's test at 0
+          lower[q] = 0;
+          return;
+        }
+        Witness w;
+        if (lower[q] < horizon && tries++ < kBound_tries &&
+            witness_after(a, b, lower[q], w, reach, lim.delta_lo, kWindow_tests)) {
+          const double t = std::ldexp(static_cast<double>(w.index), -w.depth);  // exact: dyadic
+          if (t < horizon) {
+            horizon = lim.until = t;
+            found = w;
+            found_i = p.i;
+            found_j = p.j;
+          }
+        }
+      };
+      clear(s);
+      for (size_t q = 0; q < plans.size(); ++q)
+        if (q != s) clear(q);
+      for (size_t q = 0; q < plans.size(); ++q)
+        if (lower[q] <= horizon) kept.push_back({plans[q].i, plans[q].j, lower[q]});
+      break;
+    }
+    for (size_t q = 0; q < plans.size() && !scanned; ++q) {
       Pair_plan p = plans[q];
       Witness w;
       const long base = base_of(p);
@@ -352,17 +321,13 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       }
     if (found.found && decide) return witness_report(found_i, found_j, found, kept.empty() ? 1.0 : kept[0].lower);
     if (found.found) {  // first-contact mode: only contacts up to t_w can be first
-      // Witness tests per instant in this phase: an exact solve follows anyway (10 ms and
-      // more on the UR5), and a tighter window saves most of it; 4096 node pairs reached
-      // the leaf pairs within delta near a plate where kWitness_tests did not (issue 33).
-      constexpr size_t kWindow_tests = 4096;
-      // A tighter window: the witness pair's own bound without witnesses (to the finest
+      // A tighter window (the scan's pass above made it already): the witness pair's own bound without witnesses (to the finest
       // piece), and a witness just after it.
       // A witness pair that may be in contact at t = 0 by containment keeps bound 0 (the
       // bound below is of surface contacts only: a window from it would test
       // containment at its start, not at 0).
       for (Pair_plan &p : kept)
-        if (p.i == found_i && p.j == found_j && !may_contain_at_zero(p)) {
+        if (!scanned && p.i == found_i && p.j == found_j && !may_contain_at_zero(p)) {
           Filter_limits upto;
           upto.until = horizon;
           upto.delta_lo = lim.delta_lo;
@@ -383,7 +348,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       // pair's contact left a window of 1/20 and about 100 feature pairs solved exactly
       // (issue 33: a UR5 segment 132 ms with min_distance 0.05, 30 ms without).
       constexpr size_t kWindow_tries = 4;
-      size_t tried = 0;
+      size_t tried = scanned ? kWindow_tries : 0;  // the scan's pass tried them
       for (const Pair_plan &p : kept) {
         if (!(p.lower < horizon) || tried == kWindow_tries) break;
         if (p.i == found_i && p.j == found_j) continue;
