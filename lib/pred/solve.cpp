@@ -235,7 +235,28 @@ Query_data<NT> with_delta(Query_data<NT> q, const NT &delta) {
 
 Contact_result solve_at(const Query_data<Interval> &iq,
                         const std::function<Query_data<Rational>()> &exact_points,
-                        const Solve_options &opt, Irrational_features *known);
+                        const Solve_options &opt, Irrational_features *known, bool filters = true);
+
+// Whether an earlier query of the pair found one of this query's vertex-edge or
+// vertex-vertex features (delta_systems.h, in its order of points) among those touching
+// first (Irrational_features::has): this query has that contact too, no later than the
+// bound the earlier one set, so the exclusion filters, which look for no contact up to
+// `until`, fail. The feature pairs tied at one vertex-edge approach (7 on the UR5's)
+// each spent about a fifth of their solve in them (issue 33). Skipping a filter only
+// costs time: the search decides either way.
+bool touches_known(int kind, const Irrational_features *known) {
+  if (!known) return false;
+  auto has = [&](int k, int a, int b, int c) { return known->has(Feature{k, {{a, b, c, -1}}}); };
+  if (kind == VERTEX_FACE)
+    for (int i = 1; i <= 3; ++i)
+      if (has(VERTEX_EDGE, 0, i, 1 + i % 3) || has(VERTEX_VERTEX, 0, i, -1)) return true;
+  if (kind == EDGE_EDGE)
+    for (int i = 0; i < 2; ++i)
+      if (has(VERTEX_EDGE, i, 2, 3) || has(VERTEX_EDGE, 2 + i, 0, 1) || has(VERTEX_VERTEX, i, 2, -1) ||
+          has(VERTEX_VERTEX, i, 3, -1))
+        return true;
+  return false;
+}
 
 // solve's body for an interval query given as an lvalue (copied into its delta form) or
 // as an rvalue (moved: the query's trajectories are not copied again; a robot window's
@@ -252,13 +273,14 @@ Contact_result solve_query(Q &&iq, const std::function<Query_data<Rational>()> &
   const bool linear = linear_points_of(iq, lp);
   const int kind = iq.kind;
   const Query_data<Interval> dq = with_delta(std::forward<Q>(iq), opt.delta_box);
-  if (linear ? delta_separated(kind, lp, opt.delta_box) : delta_axis_separated(dq)) {
+  const bool filters = !touches_known(kind, known);
+  if (filters && (linear ? delta_separated(kind, lp, opt.delta_box) : delta_axis_separated(dq))) {
     util::work_step();  // one query, as in solve_at
     Contact_result out;
     out.stage = STAGE_BOUNDS;
     return out;
   }
-  return solve_at(dq, [&] { return with_delta(exact_points(), opt.delta); }, opt, known);
+  return solve_at(dq, [&] { return with_delta(exact_points(), opt.delta); }, opt, known, filters);
 }
 
 }  // namespace
@@ -277,19 +299,20 @@ namespace {
 
 Contact_result solve_at(const Query_data<Interval> &iq,
                         const std::function<Query_data<Rational>()> &exact_points,
-                        const Solve_options &opt, Irrational_features *known) {
+                        const Solve_options &opt, Irrational_features *known, bool filters) {
   Contact_result out;
   util::work_step();  // one query (util/work_budget.h)
-  if (bounds_separate(iq)) {
+  // filters false (touches_known): none of them can exclude this query.
+  if (filters && bounds_separate(iq)) {
     out.stage = STAGE_BOUNDS;
     return out;
   }
-  if (bernstein_excludes(iq)) {
+  if (filters && bernstein_excludes(iq)) {
     out.stage = STAGE_BERNSTEIN;
     return out;
   }
   // Only contacts up to `until` are wanted: the same filters over [0, u], u >= until.
-  if (opt.want_time && opt.until < 1) {
+  if (filters && opt.want_time && opt.until < 1) {
     const double u = arith::enclose(opt.until).hi;
     if (u < 1) {
       const Query_data<Interval> r = restricted(iq, u);
