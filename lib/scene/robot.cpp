@@ -228,17 +228,20 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     // of it; 4096 node pairs reached the leaf pairs within delta near a plate where
     // kWitness_tests did not (issue 33).
     constexpr size_t kWindow_tests = 4096;
-    // First-contact mode, no witness at 0: a scan at 1/8, ..., 7/8 in turn (instant_scan.h)
-    // bounds the first contact before any traversal. Then the pairs are cleared in turn,
-    // the scan's pair first, each only up to the least witness so far (until) and without
-    // midpoint witnesses, so to the finest piece (the window's bound); a pair left
-    // uncleared before it tries a witness just after its bound (witness_after), which
-    // bounds the pairs after it. The pairs before the midpoint witness were cleared over
-    // all of [0, 1], those after it to the finest piece up to that coarse witness, and
-    // the witness pair twice: 3.7 of the 8.5 ms of a UR5 segment first within delta
-    // after 0 (issue 33).
+    // First-contact mode with a minimum distance, no witness at 0: a scan at 1/8, ...,
+    // 7/8 in turn (instant_scan.h) bounds the first contact before any traversal. Then
+    // the pairs are cleared in turn, the scan's pair first, each only up to the least
+    // witness so far (until) and without midpoint witnesses, so to the finest piece (the
+    // window's bound); a pair left uncleared before it tries a witness just after its
+    // bound (witness_after), which bounds the pairs after it. The pairs before the
+    // midpoint witness were cleared over all of [0, 1], those after it to the finest
+    // piece up to that coarse witness, and the witness pair twice: 3.7 of the 8.5 ms of a
+    // UR5 segment first within delta after 0 (issue 33). Without a minimum distance
+    // contacts are rarer and the scan's instants cost the free segments: the median
+    // first-contact Panda segment of bench_plainmp.py went from 366 to 473 us (one run).
     bool scanned = false;
-    for (long k = 1; !decide && !opt.all_contacts && !lim.frozen && zero_q == plans.size() && k < 8; ++k) {
+    const bool scan_first = !decide && !opt.all_contacts && !lim.frozen && lim.delta_lo > 0 && zero_q == plans.size();
+    for (long k = 1; scan_first && k < 8; ++k) {
       const size_t s = scan.find(plans, 3, k, reach, lim.delta_lo, kScan_tests, scan_side, far, found);
       if (!found.found) continue;
       found_i = plans[s].i;
