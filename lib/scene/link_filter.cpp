@@ -132,8 +132,7 @@ bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t
     axis[i] = cb[i] - ca[i];
   }
   if (separates(axis)) return true;
-  double normal[2][3];
-  bool has_normal[2] = {false, false};
+  double normal[2][3];  // a triangle's (side s a mesh)
   for (int s = 0; s < 2; ++s) {
     const narrow::Body_data &d = s == 0 ? A : B;
     const bvh::Hierarchy &h = s == 0 ? ha : hb;
@@ -154,7 +153,6 @@ bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t
     const double u[3] = {y[0] - x[0], y[1] - x[1], y[2] - x[2]}, v[3] = {z[0] - x[0], z[1] - x[1], z[2] - x[2]};
     const double nb_[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
     for (int i = 0; i < 3; ++i) normal[s][i] = p.Rm[i][0] * nb_[0] + p.Rm[i][1] * nb_[1] + p.Rm[i][2] * nb_[2];
-    has_normal[s] = true;
     const double w[3] = {z[0] - y[0], z[1] - y[1], z[2] - y[2]};
     const double *e3[3] = {u, v, w};
     for (int k = 0; k < 3; ++k)
@@ -173,7 +171,7 @@ bool leaves_apart(const narrow::Body_data &A, const bvh::Hierarchy &ha, uint32_t
     if (separates(axis)) return true;
   }
   for (int s = 0; s < 2; ++s)
-    if (has_normal[s] && separates(normal[s])) return true;
+    if ((s == 0 ? A : B).mesh && separates(normal[s])) return true;
   if (A.mesh && B.mesh)  // edge-edge axes: the cross products of the two triangles' edges
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k) {

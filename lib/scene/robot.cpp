@@ -191,7 +191,7 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
       constexpr size_t kScan_tests_delta = 1024;
       const size_t tests = lim.delta_lo > 0 ? kScan_tests_delta : kScan_tests;
       Witness w;
-      for (const auto *m = scan_from; m != kScan + 4 && !w.found; ++m) {
+      for (const auto *m = scan_from; m != kScan + 4; ++m) {
         if (lim.frozen && m != scan_from) break;  // every instant holds the same poses
         const size_t q = scan.find(plans, static_cast<int>((*m)[0]), (*m)[1], reach, lim.delta_lo, tests,
                                    scan_side, far, w);
@@ -247,15 +247,16 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
     // UR5 segment first within delta after 0 (issue 33). Without a minimum distance
     // contacts are rarer and the scan's instants cost the free segments: the median
     // first-contact Panda segment of bench_plainmp.py went from 366 to 473 us (one run).
-    bool scanned = false;
     const bool scan_first = !decide && !opt.all_contacts && !lim.frozen && lim.delta_lo > 0 && zero_q == plans.size();
-    for (long k = 1; scan_first && k < 8; ++k) {
-      const size_t s = scan.find(plans, 3, k, reach, lim.delta_lo, kScan_tests, scan_side, far, found);
-      if (!found.found) continue;
+    size_t s = plans.size();  // the scan's pair
+    for (long k = 1; scan_first && k < 8 && s == plans.size(); ++k) {
+      s = scan.find(plans, 3, k, reach, lim.delta_lo, kScan_tests, scan_side, far, found);
+      if (s < plans.size()) horizon = lim.until = std::ldexp(static_cast<double>(k), -3);
+    }
+    const bool scanned = s < plans.size();
+    if (scanned) {
       found_i = plans[s].i;
       found_j = plans[s].j;
-      horizon = lim.until = std::ldexp(static_cast<double>(k), -3);
-      scanned = true;
       std::vector<double> lower(plans.size(), kNever);
       constexpr size_t kBound_tries = 8;  // witness tries in the pass (a pair each)
       size_t tries = 0;
@@ -286,7 +287,6 @@ Scene_report check_robot(const Robot_model &r, const double *q0, const double *q
         if (q != s) clear(q);
       for (size_t q = 0; q < plans.size(); ++q)
         if (lower[q] <= horizon) kept.push_back({plans[q].i, plans[q].j, lower[q]});
-      break;
     }
     for (size_t q = 0; q < plans.size() && !scanned; ++q) {
       Pair_plan p = plans[q];
